@@ -1,0 +1,39 @@
+// Typed errors of the library: every rejection of input says which class it belongs to and where.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace raster {
+
+/// What kind of problem the input has; the HTTP layer maps each kind to one status in one place.
+enum class ErrorKind {
+  syntax,   ///< not well-formed (bad JSON, truncated, too deeply nested): HTTP 400
+  invalid,  ///< well-formed but not a valid scene (wrong type, unknown field, bad colour): HTTP 400
+  limit,    ///< valid but over a configured limit (image size, primitive count): HTTP 422
+  model,    ///< an uploaded model is unusable (bad index, no faces): HTTP 422
+};
+
+/// Where a problem is. Fields that do not apply are empty / zero.
+struct ErrorLocation {
+  std::string pointer;      ///< RFC 6901 JSON pointer into the scene, e.g. "/primitives/3/points/1"
+  std::size_t byte = 0;     ///< 1-based byte offset into the input text, 0 when unknown
+  std::size_t line = 0;     ///< 1-based line number (OBJ models), 0 when unknown
+};
+
+/// The single exception type for bad input. what() is a human sentence without the location.
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(ErrorKind kind, std::string message, ErrorLocation where = {})
+      : std::runtime_error(std::move(message)), kind_(kind), where_(std::move(where)) {}
+
+  ErrorKind kind() const { return kind_; }
+  const ErrorLocation& where() const { return where_; }
+
+ private:
+  ErrorKind kind_;
+  ErrorLocation where_;
+};
+
+}  // namespace raster

@@ -1,0 +1,15 @@
+// Raster: DrawList -> pixels of one band of the colour buffer. Triangle coverage by fixed-point edge
+// functions with the top-left rule; 1-px lines by clipped, symmetric Bresenham.
+#pragma once
+
+#include "framebuffer.h"
+#include "geometry.h"
+#include "raster/image.h"
+
+namespace raster::detail {
+
+/// Draws every op of `list`, in order, into the pixels of `image` inside `clip`. Pixels outside `clip`
+/// are not read or written, so disjoint clips can run on different threads.
+void draw(const DrawList& list, Image& image, Rect clip);
+
+}  // namespace raster::detail

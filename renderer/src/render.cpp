@@ -1,0 +1,34 @@
+// Render: runs geometry once, then the raster stage over horizontal bands. Each band owns its rows and
+// applies every op in scene order, so the image is the same bytes for any number of bands.
+#include "raster/render.h"
+
+#include <thread>
+#include <vector>
+
+#include "framebuffer.h"
+#include "geometry.h"
+#include "raster.h"
+
+namespace raster {
+
+Image render(const Scene& scene, const RenderPlan& plan) {
+  const detail::DrawList list = detail::build_draw_list(scene, plan);
+  Image image = detail::make_color_buffer(plan, scene.background);
+  const int bands = plan.threads;
+  if (bands <= 1) {
+    detail::draw(list, image, detail::band(plan, 0, 1));  // small work: no hand-off at all
+    return image;
+  }
+  {
+    std::vector<std::jthread> workers;
+    workers.reserve(bands - 1);
+    for (int b = 1; b < bands; ++b)
+      workers.emplace_back([&, b] { detail::draw(list, image, detail::band(plan, b, bands)); });
+    detail::draw(list, image, detail::band(plan, 0, bands));
+  }  // jthreads join here
+  return image;
+}
+
+Image render(const Scene& scene, const Limits& limits) { return render(scene, plan(scene, limits)); }
+
+}  // namespace raster

@@ -1,0 +1,152 @@
+// rasterd: `rasterd render scene.json -o out.png` and `rasterd serve --port 8080`.
+#include <signal.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "raster/raster.h"
+#include "service.h"
+
+namespace {
+
+constexpr const char* kUsage = R"(usage:
+  rasterd render SCENE.json [-o OUT.png] [--explain]   render a scene file ('-' = stdin / stdout)
+  rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080)
+
+render:  writes the PNG to OUT.png (default: stdout); --explain prints the render plan as JSON instead.
+serve:   POST /render with a scene JSON body -> image/png; GET /healthz.
+         Limits: body 32 MiB, width/height 8192, 40 megapixels, 2,000,000 primitives, JSON depth 64.
+)";
+
+int usage_error(const std::string& message) {
+  std::cerr << "rasterd: " << message << "\n\n" << kUsage;
+  return 2;
+}
+
+bool read_all(const std::string& path, std::string& out) {
+  if (path == "-") {
+    out.assign(std::istreambuf_iterator<char>(std::cin), {});
+    return true;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  out.assign(std::istreambuf_iterator<char>(in), {});
+  return true;
+}
+
+std::string describe(const raster::SceneError& e) {
+  std::string where;
+  if (!e.where().pointer.empty()) where = " at " + e.where().pointer;
+  if (e.where().byte) where += " (byte " + std::to_string(e.where().byte) + ")";
+  if (e.where().line) where += " (line " + std::to_string(e.where().line) + ")";
+  return e.what() + where;
+}
+
+int run_render(const std::vector<std::string>& args) {
+  std::string input, output = "-";
+  bool explain = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "-o" && i + 1 < args.size()) output = args[++i];
+    else if (args[i] == "--explain") explain = true;
+    else if (input.empty()) input = args[i];
+    else return usage_error("unexpected argument '" + args[i] + "'");
+  }
+  if (input.empty()) return usage_error("render needs a scene file (or '-' for stdin)");
+  std::string text;
+  if (!read_all(input, text)) {
+    std::cerr << "rasterd: cannot read " << input << ": " << std::strerror(errno) << "\n";
+    return 1;
+  }
+  try {
+    const raster::Scene scene = raster::parse_scene(text);
+    const raster::RenderPlan plan = raster::plan(scene);
+    if (explain) {
+      std::cout << raster::explain_json(plan) << "\n";
+      return 0;
+    }
+    const std::vector<std::uint8_t> png = raster::encode_png(raster::render(scene, plan), plan.png);
+    if (output == "-") {
+      std::cout.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+      return std::cout ? 0 : 1;
+    }
+    std::ofstream out(output, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    if (!out.flush()) {
+      std::cerr << "rasterd: cannot write " << output << "\n";
+      return 1;
+    }
+    return 0;
+  } catch (const raster::SceneError& e) {
+    std::cerr << "rasterd: " << input << ": " << describe(e) << "\n";
+    return 1;
+  }
+}
+
+int run_serve(const std::vector<std::string>& args) {
+  std::string host = "0.0.0.0";
+  int port = 8080;
+  if (const char* env = std::getenv("PORT")) port = std::atoi(env);
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--port" && i + 1 < args.size()) port = std::atoi(args[++i].c_str());
+    else if (args[i] == "--host" && i + 1 < args.size()) host = args[++i];
+    else return usage_error("unexpected argument '" + args[i] + "'");
+  }
+  if (port <= 0 || port > 65535) return usage_error("port must be 1..65535");
+
+  // Signals are taken by a sigwait thread, not a handler: stopping the server is not async-signal-safe.
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every thread started below
+
+  httplib::Server server;
+  rasterd::register_routes(server, rasterd::ServiceConfig{});
+  if (!server.bind_to_port(host, port)) {
+    std::cerr << "rasterd: cannot listen on " << host << ":" << port << ": " << std::strerror(errno) << "\n";
+    return 1;
+  }
+  std::thread signal_thread([&] {
+    int sig = 0;
+    sigwait(&signals, &sig);
+    std::cerr << "rasterd: signal " << sig << ", stopping\n";
+    server.stop();
+  });
+  std::cerr << "rasterd: listening on " << host << ":" << port << "\n"
+            << "try:  curl --data-binary @examples/gradient.json localhost:" << port << "/render > out.png\n";
+  const bool ok = server.listen_after_bind();
+  // If listen ended for another reason, wake the signal thread so it can be joined.
+  pthread_kill(signal_thread.native_handle(), SIGTERM);
+  signal_thread.join();
+  return ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::cout << kUsage;
+    return args.empty() ? 2 : 0;
+  }
+  const std::string command = args[0];
+  args.erase(args.begin());
+  if (command == "render") return run_render(args);
+  if (command == "serve") {
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+      std::cout << kUsage;
+      return 0;
+    }
+    return run_serve(args);
+  }
+  return usage_error("unknown command '" + command + "'");
+}
