@@ -1,6 +1,7 @@
-// Geometry: Scene + RenderPlan -> DrawList, screen-space primitives in fixed point, ready for coverage.
-// Triangles are clipped to a guard band and snapped to 1/256 px; lines become integer pixel endpoints
-// in a canonical order. Nothing here touches pixels.
+// Geometry: Scene + RenderPlan -> DrawList, screen-space primitives ready for coverage. Triangle vertices
+// are snapped to 1/256 px; line endpoints become the pixels that contain them. Nothing here touches pixels
+// and nothing is approximated: geometry far outside the image takes an exact wide-integer path instead of
+// being clipped in floating point.
 #pragma once
 
 #include <cstdint>
@@ -11,21 +12,16 @@
 
 namespace raster::detail {
 
-inline constexpr int kSubpixelBits = 8;                    ///< GPU-style 8 sub-pixel bits
+inline constexpr int kSubpixelBits = 8;                              ///< GPU-style 8 sub-pixel bits
 inline constexpr std::int64_t kSubpixelScale = 1 << kSubpixelBits;  ///< fixed-point units per pixel
 
-/// Triangles are clipped to [-kGuardBandPx, kGuardBandPx]^2 before snapping, so every snapped coordinate
-/// fits in 24 bits and every edge-function product in 49 bits: int64 evaluation cannot overflow.
-/// The guard band is twice the largest image side, so its edges never touch a visible pixel.
-inline constexpr double kGuardBandPx = 2.0 * kMaxImageSide;
+/// Triangles whose vertices all lie within +-kFastRangePx take the int64 path: snapped coordinates fit in
+/// 24 bits, so every edge-function product fits in 49 bits. Others take the exact wide path (wide.h).
+inline constexpr double kFastRangePx = 32768.0;
 
-/// Lines keep their exact integer pixel endpoints while both lie within +-kLineRangePx; a longer line is
-/// first cut to that box along its real-valued segment (a change far below a pixel inside the image).
-inline constexpr double kLineRangePx = 1073741824.0;  // 2^30
-
-/// A triangle vertex ready for coverage.
+/// A vertex of a fast-path triangle.
 struct ScreenVertex {
-  std::int32_t x = 0, y = 0;  ///< 1/256 px, origin top-left, y down; |x|, |y| < 2^23
+  std::int32_t x = 0, y = 0;  ///< 1/256 px, origin top-left, y down; |x|, |y| <= 2^23
   Rgba8 color;
 };
 
@@ -33,21 +29,27 @@ struct ScreenTriangle {
   ScreenVertex v[3];  ///< either winding; coverage normalizes it
 };
 
-/// A 1-px line between the centres of two pixels, in canonical order: along its major axis (x when
-/// |dx| >= |dy|, else y) the first endpoint has the smaller coordinate, so a->b and b->a are the same
-/// record and therefore the same pixels.
-struct ScreenLine {
-  std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixel indices (column, row); |value| <= 2^30
-  Rgba8 c0, c1;            ///< colours at the first and last endpoint
-  bool draw_first = true;  ///< false: the first pixel belongs to the previous polyline segment
-  bool draw_last = true;   ///< false: the last pixel belongs to the next segment (closing segment)
+/// A triangle with a vertex beyond kFastRangePx. Snapped coordinates are integers in 1/256 px held
+/// exactly in doubles (|value| <= 2^136, see kMaxCoordinate).
+struct HugeTriangle {
+  double x[3] = {}, y[3] = {};  ///< 1/256 px, integral values
+  Rgba8 color[3];
 };
 
-/// One scene primitive after geometry: a run of triangles or of lines, drawn with one PrimitivePlan.
+/// A 1-px line between the pixels that contain its endpoints. Pixel indices are integers held exactly in
+/// doubles (|value| <= 2^128). Coverage orders the endpoints canonically, so a->b and b->a are the same.
+struct ScreenLine {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixel column and row of each endpoint, integral values
+  Rgba8 c0, c1;                           ///< colours at the two endpoints
+  bool draw_first = true;  ///< false: endpoint 0's pixel belongs to the previous polyline segment
+  bool draw_last = true;   ///< false: endpoint 1's pixel belongs to the next segment (closing segment)
+};
+
+/// One scene primitive after geometry: a run of records of one kind, drawn with one PrimitivePlan.
 struct DrawOp {
-  enum class Kind : std::uint8_t { triangles, lines } kind = Kind::triangles;
+  enum class Kind : std::uint8_t { triangles, huge_triangles, lines } kind = Kind::triangles;
   PrimitivePlan mode;
-  std::uint32_t first = 0;  ///< index into DrawList::triangles or DrawList::lines
+  std::uint32_t first = 0;  ///< index into the DrawList vector of that kind
   std::uint32_t count = 0;
 };
 
@@ -55,14 +57,15 @@ struct DrawOp {
 struct DrawList {
   std::vector<DrawOp> ops;
   std::vector<ScreenTriangle> triangles;
+  std::vector<HugeTriangle> huge_triangles;
   std::vector<ScreenLine> lines;
 };
 
 /// Builds the draw list of the plan's visible primitives.
 DrawList build_draw_list(const Scene& scene, const RenderPlan& plan);
 
-/// Snaps a guard-band coordinate (pixels) to 1/256 px, rounding half up so that translating by whole
-/// pixels translates the result exactly.
-std::int32_t snap(double px);
+/// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
+/// whole pixels translates the result exactly.
+double snap(double px);
 
 }  // namespace raster::detail

@@ -42,6 +42,12 @@ void check_references(const Scene& scene) {
       throw SceneError(ErrorKind::invalid, "primitive refers to points or colours the scene does not have",
                        {"/primitives/" + std::to_string(i), 0, 0});
   }
+  // Scenes built in code skip the parser's checks; coverage relies on these bounds.
+  for (std::size_t i = 0; i < scene.points.size(); ++i) {
+    const Point2& q = scene.points[i];
+    if (!(std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate))
+      throw SceneError(ErrorKind::invalid, "point " + std::to_string(i) + " is not finite or outside +-2^128");
+  }
 }
 
 void check_size(const Scene& scene, const Limits& limits) {

@@ -1,46 +1,61 @@
 #include "raster.h"
 
 #include <algorithm>
-#include <cstdlib>
+#include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include "shade.h"
+#include "wide.h"
 
 namespace raster::detail {
 namespace {
 
 // Integer division rounding toward -infinity / +infinity (C++ '/' rounds toward zero). d > 0.
-template <typename T>
-T floor_div(T n, T d) {
-  T q = n / d;
-  return (n % d != 0 && n < 0) ? q - 1 : q;
-}
-template <typename T>
-T ceil_div(T n, T d) {
-  T q = n / d;
-  return (n % d != 0 && n > 0) ? q + 1 : q;
-}
+std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n / d - ((n % d != 0) && (n < 0)); }
+std::int64_t ceil_div(std::int64_t n, std::int64_t d) { return n / d + ((n % d != 0) && (n > 0)); }
 
 constexpr std::int64_t kHalfPixel = kSubpixelScale / 2;
 
+// Writes `count` pixels from `p` on: one flat colour, or per pixel from `next_color()` (called in order).
+template <int C, typename NextColor>
+void shade_span(std::uint8_t* p, std::int64_t count, PrimitivePlan mode, Rgba8 flat, NextColor&& next_color) {
+  std::uint8_t* const end = p + count * C;
+  if (!mode.smooth) {
+    if (mode.blend) {
+      for (; p != end; p += C) blend<C>(p, flat);
+    } else {
+      for (; p != end; p += C) store<C>(p, flat);
+    }
+    return;
+  }
+  for (; p != end; p += C) {
+    const Rgba8 c = next_color();
+    if (mode.blend) blend<C>(p, c);
+    else store<C>(p, c);
+  }
+}
+
+// ---- Triangles, fast path: int64 edge functions on the 1/256 px grid ------------------------------------
+
 // One edge a->b of a triangle with positive area: E(p) = A (px - xa) + B (py - ya) is > 0 inside.
 struct Edge {
-  std::int64_t a = 0, b = 0;  // A = ya - yb, B = xb - xa (1/256 px units)
-  std::int64_t min_value = 0; // top-left rule: on-edge centres (E == 0) count only for top and left edges
-  std::int64_t at(std::int64_t px, std::int64_t py, const ScreenVertex& o) const {
-    return a * (px - o.x) + b * (py - o.y);
-  }
+  std::int64_t a = 0, b = 0;   // A = ya - yb, B = xb - xa (1/256 px units)
+  std::int64_t min_value = 0;  // top-left rule: centres on the edge (E == 0) count only for top/left edges
 };
+
+// y down, interior on the side E > 0: a "left" edge runs upward (dy < 0); a "top" edge is horizontal and
+// runs right (dy == 0, dx > 0), with the interior below it.
+template <typename T>
+bool is_top_left(const T& dx, const T& dy) {
+  return dy < T(0) || (dy == T(0) && dx > T(0));
+}
 
 Edge make_edge(const ScreenVertex& from, const ScreenVertex& to) {
   Edge e;
   e.a = std::int64_t{from.y} - to.y;
   e.b = std::int64_t{to.x} - from.x;
-  const std::int64_t dy = std::int64_t{to.y} - from.y;
-  // y down, interior on the side E > 0: a "left" edge runs upward (dy < 0), a "top" edge is horizontal
-  // running right (dy == 0, dx > 0) with the interior below it.
-  const bool top_left = dy < 0 || (dy == 0 && e.b > 0);
-  e.min_value = top_left ? 0 : 1;
+  e.min_value = is_top_left<std::int64_t>(e.b, -e.a) ? 0 : 1;
   return e;
 }
 
@@ -67,142 +82,226 @@ void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, 
   // Edge k is opposite vertex k, so its value is vertex k's barycentric weight times `area`.
   const Edge e[3] = {make_edge(v1, v2), make_edge(v2, v0), make_edge(v0, v1)};
   const ScreenVertex* origin[3] = {&v1, &v2, &v0};
-  const Rgba8 flat = v0.color;
-  const int stride = image.width * C;
+  const std::int64_t px = i_lo * kSubpixelScale + kHalfPixel;
+  std::int64_t row_value[3];
+  for (int k = 0; k < 3; ++k)
+    row_value[k] = e[k].a * (px - origin[k]->x) + e[k].b * (j_lo * kSubpixelScale + kHalfPixel - origin[k]->y);
 
   for (std::int64_t j = j_lo; j <= j_hi; ++j) {
-    const std::int64_t py = j * kSubpixelScale + kHalfPixel;
-    const std::int64_t px = i_lo * kSubpixelScale + kHalfPixel;
     // The covered span of this row, solved exactly per edge instead of testing every pixel of the box:
     // E(i) = E(i_lo) + A * 256 * (i - i_lo) >= min_value.
     std::int64_t lo = i_lo, hi = i_hi;
-    std::int64_t value[3];
     for (int k = 0; k < 3; ++k) {
-      value[k] = e[k].at(px, py, *origin[k]);
       const std::int64_t step = e[k].a * kSubpixelScale;
-      if (step > 0) {
-        lo = std::max(lo, i_lo + ceil_div(e[k].min_value - value[k], step));
-      } else if (step < 0) {
-        hi = std::min(hi, i_lo + floor_div(value[k] - e[k].min_value, -step));
-      } else if (value[k] < e[k].min_value) {
-        lo = hi + 1;
+      if (step > 0) lo = std::max(lo, i_lo + ceil_div(e[k].min_value - row_value[k], step));
+      else if (step < 0) hi = std::min(hi, i_lo + floor_div(row_value[k] - e[k].min_value, -step));
+      else if (row_value[k] < e[k].min_value) lo = hi + 1;
+    }
+    if (lo <= hi) {
+      std::int64_t w[3], step[3];
+      for (int k = 0; k < 3; ++k) {
+        step[k] = e[k].a * kSubpixelScale;
+        w[k] = row_value[k] + step[k] * (lo - i_lo);
       }
+      std::uint8_t* p = image.pixels.data() + (j * image.width + lo) * C;
+      shade_span<C>(p, hi - lo + 1, mode, v0.color, [&] {
+        const Rgba8 c = mix3(w[0], w[1], w[2], area, v0.color, v1.color, v2.color);
+        w[0] += step[0], w[1] += step[1], w[2] += step[2];
+        return c;
+      });
     }
-    if (lo > hi) continue;
-    std::uint8_t* p = image.pixels.data() + j * stride + lo * C;
-    std::uint8_t* const end = p + (hi - lo + 1) * C;
-    if (!mode.smooth) {
-      if (mode.blend) {
-        for (; p != end; p += C) blend<C>(p, flat);
-      } else {
-        for (; p != end; p += C) store<C>(p, flat);
-      }
-      continue;
-    }
-    std::int64_t w[3], step[3];
-    for (int k = 0; k < 3; ++k) {
-      step[k] = e[k].a * kSubpixelScale;
-      w[k] = value[k] + step[k] * (lo - i_lo);
-    }
-    for (; p != end; p += C) {
-      const Rgba8 c = mix3(w[0], w[1], w[2], area, v0.color, v1.color, v2.color);
-      if (mode.blend) blend<C>(p, c);
-      else store<C>(p, c);
-      w[0] += step[0], w[1] += step[1], w[2] += step[2];
-    }
+    for (int k = 0; k < 3; ++k) row_value[k] += e[k].b * kSubpixelScale;
   }
 }
 
-// Interpolates one channel along a line: c0 + round((c1 - c0) * t / n) in integers.
-std::uint8_t lerp_channel(std::uint8_t c0, std::uint8_t c1, std::int64_t t, std::int64_t n) {
-  if (n == 0) return c0;
-  return static_cast<std::uint8_t>(c0 + floor_div<std::int64_t>(2 * t * (int{c1} - int{c0}) + n, 2 * n));
-}
+// ---- Triangles, exact wide path: vertices beyond the fast range, up to 2^128 px --------------------------
 
 template <int C>
+void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& image, Rect clip) {
+  int order[3] = {0, 1, 2};
+  Wide x[3], y[3];
+  for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(tri.x[k]), y[k] = Wide::from_double(tri.y[k]);
+  Wide area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+  if (area == Wide(0)) return;
+  if (area.negative()) {
+    std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(order[1], order[2]);
+    area = -area;
+  }
+  // Bounding box in doubles (exact integral values), widened by a pixel: it only bounds the work, the
+  // per-row spans below decide coverage exactly.
+  auto pixel_range = [](double lo_units, double hi_units, int c0, int c1) {
+    const double lo = std::ceil((lo_units - kHalfPixel) / kSubpixelScale) - 1, hi = std::floor((hi_units - kHalfPixel) / kSubpixelScale) + 1;
+    return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::max<double>(c0, lo)),
+                                                 static_cast<std::int64_t>(std::min<double>(c1 - 1, hi))};
+  };
+  const auto [i_lo, i_hi] = pixel_range(std::min({tri.x[0], tri.x[1], tri.x[2]}), std::max({tri.x[0], tri.x[1], tri.x[2]}), clip.x0, clip.x1);
+  const auto [j_lo, j_hi] = pixel_range(std::min({tri.y[0], tri.y[1], tri.y[2]}), std::max({tri.y[0], tri.y[1], tri.y[2]}), clip.y0, clip.y1);
+  if (i_lo > i_hi || j_lo > j_hi) return;
+
+  Wide a[3], row_value[3], step_x[3], step_y[3], min_value[3];
+  const Wide px(i_lo * kSubpixelScale + kHalfPixel), py(j_lo * kSubpixelScale + kHalfPixel);
+  for (int k = 0; k < 3; ++k) {
+    const int from = (k + 1) % 3, to = (k + 2) % 3;  // edge opposite vertex k
+    a[k] = y[from] - y[to];
+    const Wide b = x[to] - x[from];
+    min_value[k] = is_top_left(b, -a[k]) ? Wide(0) : Wide(1);
+    row_value[k] = a[k] * (px - x[from]) + b * (py - y[from]);
+    step_x[k] = a[k] * Wide(kSubpixelScale);
+    step_y[k] = b * Wide(kSubpixelScale);
+  }
+  // Colour is affine across the triangle: weights in double suffice for 8-bit output; the result is
+  // clamped to the vertex range, which the exact value never leaves.
+  Rgba8 col[3];
+  for (int k = 0; k < 3; ++k) col[k] = tri.color[order[k]];
+  const double area_d = area.to_double();
+  const std::int64_t width = i_hi - i_lo + 1;
+
+  for (std::int64_t j = j_lo; j <= j_hi; ++j) {
+    std::int64_t lo = 0, hi = width - 1;  // offsets from i_lo
+    for (int k = 0; k < 3; ++k) {
+      const Wide slack = row_value[k] - min_value[k];  // E(i_lo) - min; need slack + step * n >= 0
+      if (step_x[k] > Wide(0)) lo = std::max(lo, -floor_div_clamped(slack, step_x[k], -(width + 1), 0));
+      else if (step_x[k] < Wide(0)) hi = std::min(hi, floor_div_clamped(slack, -step_x[k], -1, width));
+      else if (slack.negative()) lo = hi + 1;
+    }
+    if (lo <= hi) {
+      double w[3], dw[3];
+      for (int k = 0; k < 3; ++k) {
+        w[k] = (row_value[k] + step_x[k] * Wide(lo)).to_double() / area_d;
+        dw[k] = step_x[k].to_double() / area_d;
+      }
+      std::uint8_t* p = image.pixels.data() + (j * image.width + i_lo + lo) * C;
+      shade_span<C>(p, hi - lo + 1, mode, col[0], [&] {
+        auto channel = [&](std::uint8_t Rgba8::*m) {
+          const double v = w[0] * (col[0].*m) + w[1] * (col[1].*m) + w[2] * (col[2].*m);
+          const double lo_c = std::min({col[0].*m, col[1].*m, col[2].*m}), hi_c = std::max({col[0].*m, col[1].*m, col[2].*m});
+          return static_cast<std::uint8_t>(std::clamp(std::floor(v + 0.5), lo_c, hi_c));
+        };
+        const Rgba8 c{channel(&Rgba8::r), channel(&Rgba8::g), channel(&Rgba8::b), channel(&Rgba8::a)};
+        w[0] += dw[0], w[1] += dw[1], w[2] += dw[2];
+        return c;
+      });
+    }
+    for (int k = 0; k < 3; ++k) row_value[k] += step_y[k];
+  }
+}
+
+// ---- Lines: symmetric Bresenham, clipped before stepping ------------------------------------------------
+
+// T is __int128 for endpoints within 2^60 px (every product below fits), Wide beyond.
+template <int C, typename T>
 void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, Rect clip) {
-  // Work in (u, v) = (major, minor) axis coordinates; geometry already made u0 <= u1.
-  const bool x_major = line.x1 - line.x0 >= std::abs(line.y1 - line.y0);
-  const std::int64_t u0 = x_major ? line.x0 : line.y0, u1 = x_major ? line.x1 : line.y1;
-  const std::int64_t v0 = x_major ? line.y0 : line.x0, v1 = x_major ? line.y1 : line.x1;
-  const std::int64_t du = u1 - u0, dv = v1 - v0;  // du >= |dv| >= 0
+  auto to_t = [](double v) {
+    if constexpr (std::is_same_v<T, Wide>) return Wide::from_double(v);
+    else return static_cast<T>(v);
+  };
+  T x0 = to_t(line.x0), y0 = to_t(line.y0), x1 = to_t(line.x1), y1 = to_t(line.y1);
+  Rgba8 c0 = line.c0, c1 = line.c1;
+  bool draw_first = line.draw_first, draw_last = line.draw_last;
+  // Canonical order, decided exactly: along the major axis (x when |dx| >= |dy|) the first endpoint has
+  // the smaller coordinate. a->b and b->a become the same line, hence the same pixels.
+  auto abs_t = [](const T& v) { return v < T(0) ? -v : v; };
+  const bool x_major = !(abs_t(x1 - x0) < abs_t(y1 - y0));
+  if (!x_major) std::swap(x0, y0), std::swap(x1, y1);  // from here on: u = x0/x1 axis, v = y0/y1 axis
+  if (x1 < x0 || (x1 == x0 && y1 < y0)) {
+    std::swap(x0, x1), std::swap(y0, y1), std::swap(c0, c1), std::swap(draw_first, draw_last);
+  }
+  const T &u0 = x0, &u1 = x1, &v0 = y0, &v1 = y1;
+  const T du = u1 - u0, dv = v1 - v0;  // du >= |dv| >= 0
   const std::int64_t u_min = x_major ? clip.x0 : clip.y0, u_max = (x_major ? clip.x1 : clip.y1) - 1;
   const std::int64_t v_min = x_major ? clip.y0 : clip.x0, v_max = (x_major ? clip.y1 : clip.x1) - 1;
 
-  // The Bresenham pixel of column u is the nearest row to the exact line, ties rounding up:
-  // v(u) = v0 + floor((2 (u - u0) dv + du) / (2 du)). 128-bit: |u - u0|, |dv| reach 2^31.
-  auto v_at = [&](std::int64_t u) -> std::int64_t {
-    if (du == 0) return v0;
-    const __int128 n = static_cast<__int128>(2 * (u - u0)) * dv + du;
-    return v0 + static_cast<std::int64_t>(floor_div<__int128>(n, 2 * static_cast<__int128>(du)));
+  // Visible columns: [u0, u1] minus the joint pixels owned by neighbouring segments, within the clip.
+  auto to_i64 = [](const T& v) -> std::int64_t {
+    if constexpr (std::is_same_v<T, Wide>) return v.low64();
+    else return static_cast<std::int64_t>(v);
   };
+  const T first = draw_first ? u0 : u0 + T(1), last = draw_last ? u1 : u1 - T(1);
+  if (last < T(u_min) || T(u_max) < first || last < first) return;
+  std::int64_t lo = first < T(u_min) ? u_min : to_i64(first);
+  std::int64_t hi = T(u_max) < last ? u_max : to_i64(last);
 
-  std::int64_t lo = std::max(u0 + (line.draw_first ? 0 : 1), u_min);
-  std::int64_t hi = std::min(u1 - (line.draw_last ? 0 : 1), u_max);
-  if (lo > hi) return;
+  if (du == T(0)) {  // both endpoints in one pixel
+    if (!(v0 < T(v_min)) && !(T(v_max) < v0)) {
+      std::uint8_t* p = image.pixels.data() + (x_major ? to_i64(v0) * image.width + lo : lo * image.width + to_i64(v0)) * C;
+      shade_span<C>(p, 1, mode, c0, [&] { return c0; });
+    }
+    return;
+  }
+
+  // The Bresenham row of column u is the one nearest the exact line through the two pixel centres, ties
+  // toward larger v: v(u) = floor(N(u) / 2du) with N(u) = 2 (u - u0) dv + du + 2 du v0. Rows outside the
+  // clip are reported as v_min - 1 or v_max + 1: only whether they are inside matters there.
+  const T two_du = du + du, two_dv = dv + dv;
+  const T base = du + two_du * v0;
+  auto numerator = [&](std::int64_t u) { return two_dv * (T(u) - u0) + base; };
+  auto v_at = [&](std::int64_t u) { return floor_div_clamped(numerator(u), two_du, v_min - 1, v_max + 1); };
+
   // v(u) is monotone, so the columns whose row is inside the clip form one interval: find its ends by
   // bisection. The cost is then the visible length, however far the endpoints lie outside.
-  auto inside_v = [&](std::int64_t u) {
-    const std::int64_t v = v_at(u);
-    return v >= v_min && v <= v_max;
-  };
-  auto before_v = [&](std::int64_t u) {  // true while the line has not yet reached the clip rows
-    const std::int64_t v = v_at(u);
-    return dv >= 0 ? v < v_min : v > v_max;
-  };
-  {  // first u that is not before the clip rows
+  const bool rising = !(dv < T(0));
+  {  // first column that has reached the clip rows
     std::int64_t a = lo, b = hi + 1;
     while (a < b) {
       const std::int64_t m = a + (b - a) / 2;
-      if (before_v(m)) a = m + 1;
+      const std::int64_t v = v_at(m);
+      if (rising ? v < v_min : v > v_max) a = m + 1;
       else b = m;
     }
     lo = a;
   }
-  if (lo > hi || !inside_v(lo)) return;
-  {  // last u still inside the clip rows
+  auto inside = [&](std::int64_t u) {
+    const std::int64_t v = v_at(u);
+    return v >= v_min && v <= v_max;
+  };
+  if (lo > hi || !inside(lo)) return;
+  {  // last column still inside the clip rows
     std::int64_t a = lo, b = hi;
     while (a < b) {
       const std::int64_t m = a + (b - a + 1) / 2;
-      if (inside_v(m)) a = m;
+      if (inside(m)) a = m;
       else b = m - 1;
     }
     hi = a;
   }
 
-  // Incremental Bresenham from lo: v = v(lo), remainder r in [0, 2 du).
+  // Incremental Bresenham from lo: row v and remainder r = N(u) - 2du v in [0, 2du).
   std::int64_t v = v_at(lo);
-  std::int64_t r = 0;
-  if (du != 0) {
-    const __int128 n = static_cast<__int128>(2 * (lo - u0)) * dv + du;
-    r = static_cast<std::int64_t>(n - static_cast<__int128>(v - v0) * 2 * du);
-  }
+  T r = numerator(lo) - two_du * T(v);
+  auto lerp = [&](std::uint8_t a, std::uint8_t b, const T& t) {  // a + round((b - a) t / du), exact
+    return static_cast<std::uint8_t>(a + floor_div_clamped(T(2 * (int{b} - int{a})) * t + du, two_du, -255, 255));
+  };
   const std::size_t stride_u = x_major ? C : static_cast<std::size_t>(image.width) * C;
   const std::size_t stride_v = x_major ? static_cast<std::size_t>(image.width) * C : C;
   for (std::int64_t u = lo; u <= hi; ++u) {
-    Rgba8 c = line.c0;
-    if (mode.smooth) {
-      const std::int64_t t = u - u0;
-      c = {lerp_channel(line.c0.r, line.c1.r, t, du), lerp_channel(line.c0.g, line.c1.g, t, du),
-           lerp_channel(line.c0.b, line.c1.b, t, du), lerp_channel(line.c0.a, line.c1.a, t, du)};
-    }
     std::uint8_t* p = image.pixels.data() + static_cast<std::size_t>(u) * stride_u + static_cast<std::size_t>(v) * stride_v;
-    if (mode.blend) blend<C>(p, c);
-    else store<C>(p, c);
-    // step the minor axis when the remainder passes a half pixel
-    r += 2 * dv;
-    if (r >= 2 * du && du != 0) r -= 2 * du, ++v;
-    else if (r < 0) r += 2 * du, --v;
+    shade_span<C>(p, 1, mode, c0, [&] {
+      const T t = T(u) - u0;
+      return Rgba8{lerp(c0.r, c1.r, t), lerp(c0.g, c1.g, t), lerp(c0.b, c1.b, t), lerp(c0.a, c1.a, t)};
+    });
+    r += two_dv;  // step the minor axis when the remainder leaves [0, 2du)
+    if (!(r < two_du)) r -= two_du, ++v;
+    else if (r < T(0)) r += two_du, --v;
   }
+}
+
+bool line_fits_int128(const ScreenLine& l) {
+  constexpr double kLimit = 0x1p60;  // keeps 2 dv (u - u0) + 2 du v0 below 2^125
+  return std::fabs(l.x0) <= kLimit && std::fabs(l.y0) <= kLimit && std::fabs(l.x1) <= kLimit && std::fabs(l.y1) <= kLimit;
 }
 
 template <int C>
 void draw_all(const DrawList& list, Image& image, Rect clip) {
   for (const DrawOp& op : list.ops) {
-    if (op.kind == DrawOp::Kind::triangles) {
-      for (std::uint32_t k = 0; k < op.count; ++k) fill_triangle<C>(list.triangles[op.first + k], op.mode, image, clip);
-    } else {
-      for (std::uint32_t k = 0; k < op.count; ++k) draw_line<C>(list.lines[op.first + k], op.mode, image, clip);
+    for (std::uint32_t k = op.first; k < op.first + op.count; ++k) {
+      switch (op.kind) {
+        case DrawOp::Kind::triangles: fill_triangle<C>(list.triangles[k], op.mode, image, clip); break;
+        case DrawOp::Kind::huge_triangles: fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip); break;
+        case DrawOp::Kind::lines:
+          if (line_fits_int128(list.lines[k])) draw_line<C, __int128>(list.lines[k], op.mode, image, clip);
+          else draw_line<C, Wide>(list.lines[k], op.mode, image, clip);
+          break;
+      }
     }
   }
 }

@@ -166,10 +166,16 @@ Rgba8 read_color(const json& v, const std::string& pointer) {
   invalid(pointer, std::string("expected a colour (\"#rrggbb\" or [r, g, b]), got ") + type_name(v));
 }
 
+double read_coordinate(const json& v, const std::string& pointer) {
+  const double d = read_number(v, pointer);
+  if (std::fabs(d) > kMaxCoordinate) invalid(pointer, "coordinate " + v.dump() + " is outside +-3.4e38 (+-2^128)");
+  return d;
+}
+
 Point2 read_point(const json& v, const std::string& pointer) {
   if (!v.is_array()) invalid(pointer, std::string("expected a point [x, y], got ") + type_name(v));
   if (v.size() != 2) invalid(pointer, "expected a point [x, y], got " + std::to_string(v.size()) + " numbers");
-  return {read_number(v[0], pointer_index(pointer, 0)), read_number(v[1], pointer_index(pointer, 1))};
+  return {read_coordinate(v[0], pointer_index(pointer, 0)), read_coordinate(v[1], pointer_index(pointer, 1))};
 }
 
 const char* kind_name(PrimitiveKind k) {
@@ -242,25 +248,72 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene) {
   scene.primitives.push_back(p);
 }
 
-// Parses JSON with a nesting limit: nlohmann's parser is iterative, but dump, copy and compare of the
-// resulting document recurse, so depth is cut while parsing.
-json parse_document(std::string_view text, int max_depth) {
-  if (text.empty()) throw SceneError(ErrorKind::syntax, "the scene is empty (0 bytes); expected a JSON object");
-  auto depth_guard = [max_depth](int depth, json::parse_event_t event, json&) {
-    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
-        depth >= max_depth) {
-      throw SceneError(ErrorKind::syntax, "JSON nested deeper than " + std::to_string(max_depth) + " levels");
+// Byte offset (1-based) of the first bracket that opens level max_depth + 1, skipping strings.
+std::size_t depth_violation_offset(std::string_view text, int max_depth) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) return i + 1;
+    } else if (c == ']' || c == '}') {
+      --depth;
     }
-    return true;
-  };
-  try {
-    return json::parse(text.begin(), text.end(), depth_guard);
-  } catch (const json::parse_error& e) {
+  }
+  return 0;
+}
+
+// nlohmann's DOM builder behind a SAX front that (1) cuts nesting at the limit while parsing: the parser
+// is iterative, but dump, copy and compare of the resulting document recurse; and (2) turns every parse
+// error, number overflow included, into a SceneError with the byte offset the parser reports.
+class BoundedDomBuilder {
+ public:
+  BoundedDomBuilder(json& out, std::string_view text, int max_depth) : dom_(out, true), text_(text), max_depth_(max_depth) {}
+
+  bool null() { return dom_.null(); }
+  bool boolean(bool v) { return dom_.boolean(v); }
+  bool number_integer(json::number_integer_t v) { return dom_.number_integer(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return dom_.number_unsigned(v); }
+  bool number_float(json::number_float_t v, const json::string_t& s) { return dom_.number_float(v, s); }
+  bool string(json::string_t& v) { return dom_.string(v); }
+  bool binary(json::binary_t& v) { return dom_.binary(v); }
+  bool key(json::string_t& v) { return dom_.key(v); }
+  bool start_object(std::size_t n) { return enter() && dom_.start_object(n); }
+  bool end_object() { return --depth_, dom_.end_object(); }
+  bool start_array(std::size_t n) { return enter() && dom_.start_array(n); }
+  bool end_array() { return --depth_, dom_.end_array(); }
+
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
     // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 2: ..."; keep the sentence.
     std::string message = e.what();
     if (auto at = message.find("] "); at != std::string::npos) message.erase(0, at + 2);
-    throw SceneError(ErrorKind::syntax, "malformed JSON: " + message, ErrorLocation{"", e.byte, 0});
+    throw SceneError(ErrorKind::syntax, "malformed JSON: " + message, ErrorLocation{"", position, 0});
   }
+
+ private:
+  bool enter() {
+    if (++depth_ <= max_depth_) return true;
+    throw SceneError(ErrorKind::syntax, "JSON nested deeper than " + std::to_string(max_depth_) + " levels",
+                     ErrorLocation{"", depth_violation_offset(text_, max_depth_), 0});
+  }
+
+  nlohmann::detail::json_sax_dom_parser<json> dom_;
+  std::string_view text_;
+  int max_depth_;
+  int depth_ = 0;
+};
+
+json parse_document(std::string_view text, int max_depth) {
+  if (text.empty()) throw SceneError(ErrorKind::syntax, "the scene is empty (0 bytes); expected a JSON object");
+  json doc;
+  BoundedDomBuilder builder(doc, text, max_depth);
+  json::sax_parse(text.begin(), text.end(), &builder);
+  return doc;
 }
 
 }  // namespace

@@ -63,6 +63,10 @@ struct Limits {
   std::int64_t max_buffer_bytes = 512ll << 20;  ///< all pixel storage of one render (colour, depth, samples)
 };
 
+/// Largest accepted |coordinate| in pixels: 2^128, just above FLT_MAX. Coverage stays exact up to here
+/// (wide integers of 384 bits hold every product); beyond it a scene is rejected, not approximated.
+inline constexpr double kMaxCoordinate = 0x1p128;
+
 /// The hard ceiling of the fixed-point design (see geometry.h): no Limits can raise an image above it.
 inline constexpr int kMaxImageSide = 16384;
 

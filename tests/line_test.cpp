@@ -1,0 +1,130 @@
+// Lines: symmetric Bresenham between the pixels that contain the endpoints, both endpoints drawn,
+// clipped to the image before stepping; polylines draw their joints once.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <random>
+
+#include "reference.h"
+#include "support.h"
+
+namespace {
+
+using raster::Point2;
+using test::kBlack;
+using test::kWhite;
+using test::SceneBuilder;
+
+std::vector<std::uint8_t> line_mask(Point2 a, Point2 b, int w = 100, int h = 100) {
+  return test::mask_not(test::render(SceneBuilder(w, h).line(a, b, kWhite).scene), kBlack);
+}
+
+// tinyrenderer lesson 1: (13,20)-(80,40), (20,13)-(40,80), and (80,40)-(13,20) drawn over the first.
+TEST(Line, TinyrendererLessonOneLines) {
+  const auto a = line_mask({13, 20}, {80, 40});
+  const auto b = line_mask({20, 13}, {40, 80});
+  const auto back = line_mask({80, 40}, {13, 20});
+  EXPECT_EQ(a, back) << "a line and its reverse cover the same pixels";
+  int na = 0, nb = 0;
+  for (auto m : a) na += m;
+  for (auto m : b) nb += m;
+  EXPECT_EQ(na, 80 - 13 + 1) << "x-major: one pixel per column, both endpoints";
+  EXPECT_EQ(nb, 80 - 13 + 1) << "y-major: one pixel per row, both endpoints";
+  EXPECT_TRUE(a[20 * 100 + 13] && a[40 * 100 + 80]);
+  EXPECT_TRUE(b[13 * 100 + 20] && b[80 * 100 + 40]);
+  // Each column of the x-major line holds the row nearest the exact line (ties toward larger rows).
+  for (int x = 13; x <= 80; ++x) {
+    const double exact = 20 + (x - 13) * 20.0 / 67.0;
+    const int row = static_cast<int>(std::floor(exact + 0.5));
+    EXPECT_TRUE(a[row * 100 + x]) << "column " << x;
+  }
+  EXPECT_EQ(a, ref::line(13, 20, 80, 40, 100, 100));
+  EXPECT_EQ(b, ref::line(20, 13, 40, 80, 100, 100));
+}
+
+TEST(Line, EndpointsArePixelsContainingThePoints) {
+  const auto m = line_mask({3.99, 5.01}, {3.2, 5.7});  // both inside pixel (3, 5)
+  int n = 0;
+  for (auto v : m) n += v;
+  EXPECT_EQ(n, 1);
+  EXPECT_TRUE(m[5 * 100 + 3]);
+}
+
+// a->b equals b->a in every octant, including exact diagonals and ties, and matches the reference.
+TEST(Line, SymmetricInEveryOctantAndMatchesReference) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> coord(-20, 80);
+  for (int t = 0; t < 2000; ++t) {
+    Point2 a{coord(rng) + 0.5, coord(rng) + 0.5}, b{coord(rng) + 0.5, coord(rng) + 0.5};
+    if (t % 5 == 0) b = {a.x + (t % 3 - 1) * 17.0, a.y + 17.0};  // diagonals and axis lines
+    const auto fwd = line_mask(a, b, 64, 64), back = line_mask(b, a, 64, 64);
+    ASSERT_EQ(fwd, back) << a.x << "," << a.y << " -> " << b.x << "," << b.y;
+    ASSERT_EQ(fwd, ref::line(a.x, a.y, b.x, b.y, 64, 64)) << a.x << "," << a.y << " -> " << b.x << "," << b.y;
+  }
+}
+
+// Clipping happens before stepping: a line between +-1e9 costs its visible length, and its visible
+// pixels are exactly those of the unclipped line (same columns, same rows).
+TEST(Line, HugeLinesAreClippedExactly) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto diag = line_mask({-1e9, -1e9}, {1e9, 1e9});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 1.0) << "stepping 2e9 pixels would take seconds; clipping must skip them";
+  for (int i = 0; i < 100; ++i) EXPECT_TRUE(diag[i * 100 + i]);
+  // A shallow line whose endpoints are far outside: compare with the reference stepping every column.
+  const auto shallow = line_mask({-5000.5, 7.5}, {9000.5, 93.5});
+  EXPECT_EQ(shallow, ref::line(-5000.5, 7.5, 9000.5, 93.5, 100, 100));
+  for (double big : {1e30, 3.4e38}) {
+    const auto m = line_mask({-big, 50.5}, {big, 50.5});
+    for (int x = 0; x < 100; ++x) EXPECT_TRUE(m[50 * 100 + x]) << big;
+  }
+}
+
+TEST(Line, PerVertexColoursInterpolateAlongTheMajorAxis) {
+  auto img = test::render(SceneBuilder(11, 3).line({0.5, 1.5}, {10.5, 1.5}, raster::Rgba8{0, 0, 0, 255},
+                                                   raster::Rgba8{200, 100, 250, 255}).scene);
+  for (int x = 0; x <= 10; ++x) {
+    EXPECT_EQ(test::pixel(img, x, 1).r, 20 * x);
+    EXPECT_EQ(test::pixel(img, x, 1).b, 25 * x);
+  }
+  // reversed: same pixels and colours
+  auto rev = test::render(SceneBuilder(11, 3).line({10.5, 1.5}, {0.5, 1.5}, raster::Rgba8{200, 100, 250, 255},
+                                                   raster::Rgba8{0, 0, 0, 255}).scene);
+  EXPECT_EQ(img.pixels, rev.pixels);
+}
+
+// A translucent polyline blends each joint pixel once, like one stroke, not once per segment.
+TEST(Line, PolylineJointsBlendOnce) {
+  const raster::Rgba8 half{255, 255, 255, 128};
+  SceneBuilder open(20, 20);
+  open.polyline({{2.5, 2.5}, {15.5, 2.5}, {15.5, 15.5}, {2.5, 15.5}}, half, false);
+  SceneBuilder closed(20, 20);
+  closed.polyline({{2.5, 2.5}, {15.5, 2.5}, {15.5, 15.5}, {2.5, 15.5}}, half, true);
+  for (auto* s : {&open, &closed}) {
+    auto img = test::render(s->scene);
+    for (int y = 0; y < 20; ++y)
+      for (int x = 0; x < 20; ++x) {
+        const int v = test::pixel(img, x, y).r;
+        ASSERT_TRUE(v == 0 || v == 128) << x << "," << y << " = " << v;
+      }
+    EXPECT_EQ(test::pixel(img, 15, 2).r, 128);
+  }
+  EXPECT_EQ(test::count_not(test::render(open.scene), kBlack), 13 * 3 + 1);
+  EXPECT_EQ(test::count_not(test::render(closed.scene), kBlack), 13 * 4);
+}
+
+TEST(Line, TriangleOutlineUsesTheLineRule) {
+  SceneBuilder s(40, 40);
+  s.triangle({5.5, 5.5}, {30.5, 8.5}, {12.5, 33.5}, kWhite, /*fill=*/false);
+  const auto outline = test::mask_not(test::render(s.scene), kBlack);
+  std::vector<std::uint8_t> expect(40 * 40, 0);
+  for (auto [a, b] : {std::pair{Point2{5.5, 5.5}, Point2{30.5, 8.5}}, {Point2{30.5, 8.5}, Point2{12.5, 33.5}},
+                      {Point2{12.5, 33.5}, Point2{5.5, 5.5}}}) {
+    const auto m = ref::line(a.x, a.y, b.x, b.y, 40, 40);
+    for (std::size_t i = 0; i < m.size(); ++i) expect[i] |= m[i];
+  }
+  EXPECT_EQ(outline, expect);
+  EXPECT_FALSE(outline[15 * 40 + 14]) << "an outline leaves the inside empty";
+}
+
+}  // namespace

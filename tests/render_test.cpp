@@ -1,0 +1,103 @@
+// Whole renders: determinism across thread counts, PNG round trips, and the examples as golden images.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+#include "support.h"
+
+namespace {
+
+using test::SceneBuilder;
+
+raster::Scene random_scene(int w, int h, int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> x(-20, w + 20), y(-20, h + 20);
+  std::uniform_int_distribution<int> byte(0, 255);
+  SceneBuilder s(w, h, raster::Rgba8{20, 30, 40, 255});
+  auto color = [&] { return raster::Rgba8{static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)),
+                                          static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng) | 64)}; };
+  for (int i = 0; i < n; ++i) {
+    if (i % 3 == 0) s.line({x(rng), y(rng)}, {x(rng), y(rng)}, color(), color());
+    else s.triangle({x(rng), y(rng)}, {x(rng), y(rng)}, {x(rng), y(rng)}, color(), color(), color());
+  }
+  return s.scene;
+}
+
+// Bands split the image between threads; each applies every primitive in order, so the bytes match.
+TEST(Render, SameBytesForAnyThreadCount) {
+  const auto scene = random_scene(300, 257, 400, 5);
+  const auto one = test::render(scene, 1);
+  for (int threads : {2, 3, 7, 16}) {
+    raster::PlanOptions o;
+    o.max_threads = threads;
+    auto p = raster::plan(scene, raster::Limits{}, o);
+    p.threads = threads;  // force the split even where the plan would not
+    EXPECT_EQ(raster::render(scene, p).pixels, one.pixels) << threads << " threads";
+  }
+}
+
+TEST(Render, PngRoundTripsEveryFormat) {
+  for (raster::Rgba8 bg : {raster::Rgba8{0, 0, 0, 255}, raster::Rgba8{0, 0, 0, 0}}) {
+    const auto scene = random_scene(64, 48, 30, 9);
+    auto s2 = scene;
+    s2.background = bg;
+    const auto plan = raster::plan(s2);
+    const auto img = raster::render(s2, plan);
+    const auto d = test::decode_png(raster::encode_png(img, plan.png));
+    EXPECT_EQ(d.width, 64);
+    EXPECT_EQ(d.height, 48);
+    EXPECT_EQ(d.channels, img.channels());
+    EXPECT_EQ(d.pixels, img.pixels);
+  }
+}
+
+TEST(Render, AsymmetricImageSurvivesEncodingUnflipped) {
+  // Red top-left, green top-right, blue bottom-left: a flip or channel swap in the encoder fails.
+  SceneBuilder s(40, 30);
+  s.triangle({0, 0}, {10, 0}, {0, 10}, test::kRed).triangle({30, 0}, {40, 0}, {40, 10}, test::kGreen)
+      .triangle({0, 20}, {10, 30}, {0, 30}, test::kBlue);
+  const auto p = raster::plan(s.scene);
+  const auto d = test::decode_png(raster::encode_png(raster::render(s.scene, p), p.png));
+  auto px = [&](int x, int y) { return std::vector<int>(d.pixels.begin() + (y * 40 + x) * 3, d.pixels.begin() + (y * 40 + x) * 3 + 3); };
+  EXPECT_EQ(px(1, 1), (std::vector<int>{255, 0, 0}));
+  EXPECT_EQ(px(38, 1), (std::vector<int>{0, 255, 0}));
+  EXPECT_EQ(px(1, 28), (std::vector<int>{0, 0, 255}));
+  EXPECT_EQ(px(38, 28), (std::vector<int>{0, 0, 0}));
+}
+
+TEST(Render, BlendingIsSourceOverInDrawOrder) {
+  SceneBuilder s(4, 4, raster::Rgba8{0, 0, 255, 255});
+  s.triangle({0, 0}, {4, 0}, {0, 4}, raster::Rgba8{255, 0, 0, 128}).triangle({0, 0}, {4, 0}, {0, 4}, raster::Rgba8{0, 255, 0, 64});
+  const auto c = test::pixel(test::render(s.scene), 0, 0);
+  // red over blue: (128, 0, 127); then green a=64: r = 128*191/255, g = 255*64/255, b = 127*191/255
+  EXPECT_EQ(c.r, 96);
+  EXPECT_EQ(c.g, 64);
+  EXPECT_EQ(c.b, 95);
+}
+
+TEST(Render, BlendingOntoTransparentKeepsStraightAlpha) {
+  SceneBuilder s(2, 2, raster::Rgba8{0, 0, 0, 0});
+  s.triangle({0, 0}, {2, 0}, {0, 2}, raster::Rgba8{200, 100, 50, 128}).triangle({0, 0}, {2, 0}, {0, 2}, raster::Rgba8{0, 0, 250, 128});
+  const auto c = test::pixel(test::render(s.scene), 0, 0);
+  // first: exactly the source (nothing below); second over it: a = 128 + 128 * 127/255 = 192
+  EXPECT_EQ(c.a, 192);
+  EXPECT_EQ(c.r, 66);   // 200 * 128 * 127 / (128 * 255 + 128 * 127) = 66.49
+  EXPECT_EQ(c.b, 184);  // (250 * 128 * 255 + 50 * 128 * 127) / ...
+}
+
+// The examples are golden images: a change of any pixel changes the hash. Regenerate the hashes only
+// after looking at the new pictures (examples/README.md says how).
+TEST(Render, ExamplesMatchTheirGoldenHashes) {
+  const std::vector<std::pair<std::string, std::uint64_t>> golden = {
+#include "golden_hashes.inc"
+  };
+  ASSERT_FALSE(golden.empty());
+  for (const auto& [name, hash] : golden) {
+    const auto text = test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/" + name);
+    const auto img = raster::render(raster::parse_scene(text));
+    EXPECT_EQ(test::image_hash(img), hash) << name << " changed: 0x" << std::hex << test::image_hash(img);
+  }
+}
+
+}  // namespace

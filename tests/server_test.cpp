@@ -1,0 +1,173 @@
+// The HTTP service through real HTTP on an ephemeral loopback port, with the routes main() serves.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "service.h"
+#include "support.h"
+
+namespace {
+
+// Starts register_routes() on 127.0.0.1:<any free port>; stops and joins on destruction.
+class TestServer {
+ public:
+  explicit TestServer(rasterd::ServiceConfig config = {}) {
+    rasterd::register_routes(server_, config);
+    port_ = server_.bind_to_any_port("127.0.0.1");
+    if (port_ <= 0) throw std::runtime_error("bind_to_any_port failed");
+    thread_ = std::thread([this] { server_.listen_after_bind(); });
+    while (!server_.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ~TestServer() {
+    server_.stop();
+    thread_.join();
+  }
+  httplib::Client client() const {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_read_timeout(30);
+    return c;
+  }
+
+ private:
+  httplib::Server server_;
+  int port_ = 0;
+  std::thread thread_;
+};
+
+const char* kScene = R"({"width": 64, "height": 32, "background": "#102030",
+  "primitives": [{"type": "triangle", "points": [[2,2],[60,4],[10,30]], "colors": ["#f00","#0f0","#00f"]}]})";
+
+nlohmann::json problem_of(const httplib::Result& r) {
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
+  auto j = nlohmann::json::parse(r->body);
+  EXPECT_EQ(j["status"], r->status) << "problem status equals the HTTP status";
+  EXPECT_TRUE(j.contains("type") && j.contains("title") && j.contains("detail"));
+  return j;
+}
+
+TEST(Server, RendersAScene) {
+  TestServer server;
+  auto r = server.client().Post("/render", kScene, "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+  EXPECT_EQ(r->get_header_value("X-Render-Plan"), "rgb8 depth=none samples=1 flat=0 smooth=1 blend=0 culled=0 threads=1");
+  EXPECT_FALSE(r->get_header_value("X-Request-Id").empty());
+  const auto png = test::decode_png(r->body);
+  // The same bytes as the library gives: the server adds nothing of its own to the picture.
+  const auto scene = raster::parse_scene(kScene);
+  const auto plan = raster::plan(scene);
+  const auto expect = raster::encode_png(raster::render(scene, plan), plan.png);
+  EXPECT_EQ(std::string(expect.begin(), expect.end()), r->body);
+  EXPECT_EQ(png.width, 64);
+  EXPECT_GT(png.pixels[(3 * 64 + 4) * 3], 200) << "red corner";
+  EXPECT_LT(png.pixels[(3 * 64 + 4) * 3 + 1], 60);
+}
+
+TEST(Server, AnyContentTypeIsTakenAsJson) {
+  TestServer server;
+  for (const char* type : {"text/plain", "application/octet-stream", "application/x-www-form-urlencoded"}) {
+    auto r = server.client().Post("/render", kScene, type);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << type;
+  }
+}
+
+// `curl -d @scene.json` sends application/x-www-form-urlencoded, which cpp-httplib 0.11 would refuse over
+// 8 KiB unless the route reads through a ContentReader.
+TEST(Server, OneMebibyteFormEncodedBodyRenders) {
+  TestServer server;
+  std::string scene = R"({"width": 128, "height": 128, "primitives": [)";
+  int n = 0;
+  while (scene.size() < (1u << 20)) {
+    if (n++) scene += ",";
+    scene += R"({"type":"line","points":[[)" + std::to_string(n % 128) + ",0],[127," + std::to_string(n % 128) + "]],\"color\":\"#fff\"}";
+  }
+  scene += "]}";
+  ASSERT_GE(scene.size(), 1u << 20);
+  auto r = server.client().Post("/render", scene, "application/x-www-form-urlencoded");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200) << r->body.substr(0, 300);
+  EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+}
+
+TEST(Server, InvalidSceneIsA400ProblemWithAPointer) {
+  TestServer server;
+  auto r = server.client().Post("/render", R"({"width": 8, "height": 8, "primitives": [{"type": "line", "points": [[0,0],[1,"x"]]}]})", "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  const auto j = problem_of(r);
+  EXPECT_EQ(j["pointer"], "/primitives/0/points/1/1");
+  EXPECT_EQ(j["type"], "urn:rasterd:problem:invalid-scene");
+}
+
+TEST(Server, MalformedJsonIsA400WithAByteOffset) {
+  TestServer server;
+  auto r = server.client().Post("/render", R"({"width": 8, "height": )", "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  const auto j = problem_of(r);
+  EXPECT_GT(j["byte"].get<int>(), 0);
+  EXPECT_FALSE(j.contains("pointer"));
+  auto empty = server.client().Post("/render", "", "application/json");
+  ASSERT_TRUE(empty);
+  EXPECT_EQ(empty->status, 400);
+  problem_of(empty);
+}
+
+TEST(Server, OverTheSizeLimitIsA422) {
+  TestServer server;
+  auto r = server.client().Post("/render", R"({"width": 9000, "height": 8})", "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 422);
+  EXPECT_EQ(problem_of(r)["pointer"], "/width");
+}
+
+TEST(Server, BodyOverTheCapIsA413) {
+  rasterd::ServiceConfig config;
+  config.max_body_bytes = 1000;
+  TestServer server(config);
+  auto r = server.client().Post("/render", std::string(1001, ' '), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 413);
+  problem_of(r);
+  auto ok = server.client().Post("/render", R"({"width": 1, "height": 1})" + std::string(900, ' '), "application/json");
+  ASSERT_TRUE(ok);
+  EXPECT_EQ(ok->status, 200);
+}
+
+TEST(Server, CompressedBodiesAreRefused) {
+  TestServer server;
+  httplib::Headers headers = {{"Content-Encoding", "gzip"}};
+  auto r = server.client().Post("/render", headers, "not really gzip", "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 415);
+  problem_of(r);
+}
+
+TEST(Server, ExplainReturnsThePlan) {
+  TestServer server;
+  auto r = server.client().Post("/render?explain=1", kScene, "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+  const auto j = nlohmann::json::parse(r->body);
+  EXPECT_EQ(j["format"], "rgb8");
+  EXPECT_EQ(j["memory_bytes"]["color"], 64 * 32 * 3);
+}
+
+TEST(Server, HealthAndUnknownRoutes) {
+  TestServer server;
+  auto h = server.client().Get("/healthz");
+  ASSERT_TRUE(h);
+  EXPECT_EQ(h->status, 200);
+  auto nf = server.client().Get("/nope");
+  ASSERT_TRUE(nf);
+  EXPECT_EQ(nf->status, 404);
+  problem_of(nf);
+}
+
+}  // namespace
