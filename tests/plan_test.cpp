@@ -99,6 +99,11 @@ TEST(Plan, SmallScenesStayOnTheCallingThreadLargeOnesUseBands) {
   SceneBuilder tiny(256, 256);
   for (int i = 0; i < 100; ++i) tiny.line({0, double(i)}, {255, double(i)}, test::kRed);
   EXPECT_EQ(plan_of(tiny.scene, 8).threads, 1);
+  // Few large primitives on a small image: the work estimate is over the threshold, the scene is small.
+  SceneBuilder thumbnail(256, 256);
+  for (int i = 0; i < 4; ++i) thumbnail.triangle({0, 0}, {256, 0}, {0, 256}, test::kRed).triangle({256, 0}, {256, 256}, {0, 256}, test::kRed);
+  EXPECT_GT(plan_of(thumbnail.scene, 8).work, 100'000);
+  EXPECT_EQ(plan_of(thumbnail.scene, 8).threads, 1) << "256x256 with <= 100 primitives never hands off";
   SceneBuilder big(1024, 1024);
   big.triangle({0, 0}, {1024, 0}, {0, 1024}, test::kRed);
   EXPECT_EQ(plan_of(big.scene, 4).threads, 4);

@@ -10,10 +10,14 @@
 namespace raster {
 namespace {
 
-// Below this much estimated work (pixels cleared + bounding-box pixels touched) a render stays on the
-// calling thread: starting and joining a thread costs about as much as this many pixel writes.
-// Measured by bench/parallel_threshold (see docs/performance.md).
-constexpr std::int64_t kParallelWorkThreshold = 1 << 17;
+// Below this much estimated work (bounding-box pixels touched by visible primitives; clearing is not
+// split, so it does not count) a render stays on the calling thread. bench/parallel_threshold measured two
+// bands 1.30x slower at 5.6e4 and 0.82x at 1.1e5 for smooth triangles (crossover ~8.5e4; flat fills cost
+// less per pixel, so theirs is higher); see docs/performance.md.
+constexpr std::int64_t kParallelWorkThreshold = 100'000;
+// Small scenes never leave the calling thread, whatever their estimate: no hand-off for a thumbnail.
+constexpr std::int64_t kSmallScenePixels = 256 * 256;
+constexpr std::size_t kSmallScenePrimitives = 100;
 // A band shorter than this spends more on per-band triangle setup than it gains.
 constexpr int kMinBandRows = 16;
 
@@ -97,7 +101,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   const std::int64_t image_pixels = std::int64_t{scene.width} * scene.height;
   bool grey = scene.background.is_grey();
   const bool alpha = !scene.background.is_opaque();  // drawing over an opaque background stays opaque
-  std::int64_t work = image_pixels;
+  std::int64_t work = 0;
 
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& prim = scene.primitives[i];
@@ -134,7 +138,9 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
 
   const int cores = options.max_threads > 0 ? options.max_threads
                                             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  out.threads = work < kParallelWorkThreshold ? 1 : std::clamp(scene.height / kMinBandRows, 1, cores);
+  out.work = work;
+  const bool small = image_pixels <= kSmallScenePixels && scene.primitives.size() <= kSmallScenePrimitives;
+  out.threads = small || work < kParallelWorkThreshold ? 1 : std::clamp(scene.height / kMinBandRows, 1, cores);
   out.png.color_type = png_color_type(out.format);
   return out;
 }
@@ -148,6 +154,7 @@ std::string explain_json(const RenderPlan& p) {
   j["depth_buffer"] = p.depth_buffer;
   j["samples"] = p.samples;
   j["primitives"] = {{"flat", p.flat_count}, {"smooth", p.smooth_count}, {"blend", p.blend_count}, {"culled", p.culled_count}};
+  j["work"] = p.work;
   j["threads"] = p.threads;
   j["memory_bytes"] = {{"color", p.memory.color_bytes}, {"depth", p.memory.depth_bytes},
                        {"samples", p.memory.sample_bytes}, {"total", p.memory.total()}};

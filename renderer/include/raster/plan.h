@@ -46,7 +46,8 @@ struct RenderPlan {
   std::int64_t blend_count = 0;   ///< visible primitives that blend
   std::int64_t culled_count = 0;  ///< primitives skipped before setup
 
-  int threads = 1;  ///< 1: everything on the calling thread, no hand-off; >1: that many horizontal bands
+  std::int64_t work = 0;  ///< estimated pixel writes that bands split: each visible primitive's clipped box
+  int threads = 1;        ///< 1: everything on the calling thread, no hand-off; >1: that many horizontal bands
   MemoryPlan memory;
   PngPlan png;
 };
