@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan clean
+.PHONY: deps build serve test test-asan fuzz clean
 
 deps:
 	@scripts/install-deps
@@ -24,5 +24,21 @@ test: build
 test-asan:
 	@$(MAKE) --no-print-directory test BUILD=build-asan CMAKE_FLAGS="-DRASTERD_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
 
+# Each libFuzzer target for FUZZ_SECONDS (default 600), seeded from examples/ and fuzz/corpus/.
+# Findings land in fuzz-out/; each one becomes a regression test.
+FUZZ_SECONDS ?= 600
+FUZZ_TARGETS ?= scene_fuzzer
+fuzz:
+	@scripts/install-deps fuzz
+	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRASTERD_BUILD_FUZZ=ON \
+	  -DRASTERD_BUILD_TESTS=OFF -DRASTERD_BUILD_SERVER=OFF >/dev/null
+	@cmake --build build-fuzz -j$(JOBS) -- --no-print-directory
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p fuzz-out/$$t/corpus; \
+	  echo "== $$t for $(FUZZ_SECONDS) s"; \
+	  build-fuzz/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+	    -artifact_prefix=fuzz-out/$$t/ -print_final_stats=1 $$( [ -f fuzz/$${t%_fuzzer}.dict ] && echo -dict=fuzz/$${t%_fuzzer}.dict ) fuzz-out/$$t/corpus fuzz/corpus/$$t || exit 1; \
+	done
+
 clean:
-	rm -rf build build-asan
+	rm -rf build build-asan build-bench build-fuzz fuzz-out

@@ -65,7 +65,8 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 // Rejects any key not in `known`, suggesting the nearest known name when it is a plausible typo.
 void check_keys(const json& obj, const std::string& pointer, std::initializer_list<const char*> known) {
-  for (const auto& [key, value] : obj.items()) {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    const std::string& key = it.key();
     if (std::any_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) continue;
     std::string best;
     std::size_t best_distance = 3;  // more than two edits away is not a typo
