@@ -14,12 +14,16 @@
 #include <vector>
 
 #include "raster/raster.h"
+#include "request.h"
 #include "service.h"
 
 namespace {
 
 constexpr const char* kUsage = R"(usage:
   rasterd render SCENE.json [-o OUT.png] [--explain]   render a scene file ('-' = stdin / stdout)
+  rasterd render MODEL.obj [-o OUT.png] [--width N] [--height N] [--background C] [--projection P]
+                 [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--part NAME=FILE]
+                                                        a bare OBJ model with the default scene
   rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080)
 
 render:  writes the PNG to OUT.png (default: stdout); --explain prints the render plan as JSON instead.
@@ -54,11 +58,29 @@ std::string describe(const raster::SceneError& e) {
 int run_render(const std::vector<std::string>& args) {
   std::string input, output = "-";
   bool explain = false;
+  rasterd::Params params;
+  raster::Uploads uploads;
   for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "-o" && i + 1 < args.size()) output = args[++i];
-    else if (args[i] == "--explain") explain = true;
-    else if (input.empty()) input = args[i];
-    else return usage_error("unexpected argument '" + args[i] + "'");
+    const std::string& a = args[i];
+    if (a == "-o" && i + 1 < args.size()) {
+      output = args[++i];
+    } else if (a == "--explain") {
+      explain = true;
+    } else if (a == "--part" && i + 1 < args.size()) {  // NAME=FILE, as a multipart upload would carry it
+      const std::string spec = args[++i];
+      const std::size_t eq = spec.find('=');
+      if (eq == std::string::npos) return usage_error("--part takes NAME=FILE");
+      if (!read_all(spec.substr(eq + 1), uploads[spec.substr(0, eq)])) {
+        std::cerr << "rasterd: cannot read " << spec.substr(eq + 1) << ": " << std::strerror(errno) << "\n";
+        return 1;
+      }
+    } else if (a.rfind("--", 0) == 0 && a.size() > 2 && i + 1 < args.size()) {
+      params[a.substr(2)] = args[++i];  // --width 800 -> width=800 (validated with the scene)
+    } else if (input.empty()) {
+      input = a;
+    } else {
+      return usage_error("unexpected argument '" + a + "'");
+    }
   }
   if (input.empty()) return usage_error("render needs a scene file (or '-' for stdin)");
   std::string text;
@@ -67,7 +89,7 @@ int run_render(const std::vector<std::string>& args) {
     return 1;
   }
   try {
-    const raster::Scene scene = raster::parse_scene(text);
+    const raster::Scene scene = rasterd::scene_from_request(text, uploads, params, raster::Limits{});
     const raster::RenderPlan plan = raster::plan(scene);
     if (explain) {
       std::cout << raster::explain_json(plan) << "\n";

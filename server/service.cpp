@@ -7,6 +7,7 @@
 #include <string>
 
 #include "problem.h"
+#include "request.h"
 #include "raster/raster.h"
 
 namespace rasterd {
@@ -19,49 +20,64 @@ std::string next_request_id() {
   return buf;
 }
 
-// Reads the body through the ContentReader: cpp-httplib 0.11 caps a buffered form-urlencoded body (what
-// `curl -d` sends) at 8 KiB with a 413, but a ContentReader route receives any body. The cap is ours.
-// Returns false, with the problem written, when the body is refused.
-bool read_body(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
-               std::size_t cap, std::string& body) {
+// Refuses compressed bodies and bodies declared over the cap, before reading anything.
+bool admit_body(const httplib::Request& req, httplib::Response& res, std::size_t cap) {
   if (req.has_header("Content-Encoding") && req.get_header_value("Content-Encoding") != "identity") {
     write_problem(res, problem(415, "unsupported-encoding", "Compressed request bodies are not accepted",
-                               "send the scene uncompressed (Content-Encoding: " +
-                                   req.get_header_value("Content-Encoding") + ")"));
+                               "send the body uncompressed (got Content-Encoding: " + req.get_header_value("Content-Encoding") + ")"));
     return false;
   }
-  const auto declared = req.get_header_value<std::uint64_t>("Content-Length");
-  auto too_large = [&] {
-    write_problem(res, problem(413, "body-too-large", "The request body is too large",
-                               "the limit is " + std::to_string(cap) + " bytes"));
+  if (req.get_header_value<std::uint64_t>("Content-Length") > cap) {
+    write_problem(res, problem(413, "body-too-large", "The request body is too large", "the limit is " + std::to_string(cap) + " bytes"));
     return false;
-  };
-  if (declared > cap) return too_large();  // decided before reading a byte
-  if (declared > 0) body.reserve(declared);
+  }
+  return true;
+}
+
+// Reads the body through the ContentReader: cpp-httplib 0.11 caps a buffered form-urlencoded body (what
+// `curl -d` sends) at 8 KiB with a 413, but a ContentReader route receives any body. The cap is ours,
+// counted while streaming (chunked bodies have no Content-Length). Multipart parts go to `uploads`,
+// except a part named "scene", which becomes the body. Returns false with the problem written.
+bool read_body(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader, std::size_t cap,
+               std::string& body, raster::Uploads& uploads) {
+  if (!admit_body(req, res, cap)) return false;
+  std::size_t total = 0;
   bool over = false;
-  reader([&](const char* data, std::size_t n) {
-    if (body.size() + n > cap) {
+  auto take = [&](std::string& into, const char* data, std::size_t n) {
+    if ((total += n) > cap) {
       over = true;
       return false;
     }
-    body.append(data, n);
+    into.append(data, n);
     return true;
-  });
-  if (over) return too_large();
+  };
+  if (req.is_multipart_form_data()) {
+    std::string* current = nullptr;
+    reader(
+        [&](const httplib::MultipartFormData& part) {
+          current = part.name == "scene" ? &body : &uploads[part.name];
+          return true;
+        },
+        [&](const char* data, std::size_t n) { return take(*current, data, n); });
+  } else {
+    if (const auto declared = req.get_header_value<std::uint64_t>("Content-Length")) body.reserve(declared);
+    reader([&](const char* data, std::size_t n) { return take(body, data, n); });
+  }
+  if (over) {
+    write_problem(res, problem(413, "body-too-large", "The request body is too large", "the limit is " + std::to_string(cap) + " bytes"));
+    return false;
+  }
   return true;
 }
 
 void handle_render(const ServiceConfig& config, const httplib::Request& req, httplib::Response& res,
                    const httplib::ContentReader& reader) {
-  if (req.is_multipart_form_data()) {
-    write_problem(res, problem(415, "unsupported-media-type", "Multipart uploads are not supported yet",
-                               "send the scene JSON as the request body"));
-    return;
-  }
   std::string body;
-  if (!read_body(req, res, reader, config.max_body_bytes, body)) return;
+  raster::Uploads uploads;
+  if (!read_body(req, res, reader, config.max_body_bytes, body, uploads)) return;
   try {
-    const raster::Scene scene = raster::parse_scene(body, config.limits);
+    const Params params(req.params.begin(), req.params.end());
+    const raster::Scene scene = scene_from_request(body, uploads, params, config.limits);
     const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
     if (req.get_param_value("explain") == "1") {
       res.set_content(raster::explain_json(plan), "application/json");

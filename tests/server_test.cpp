@@ -171,3 +171,78 @@ TEST(Server, HealthAndUnknownRoutes) {
 }
 
 }  // namespace
+
+// --- 3D uploads: the three forms of issue 3, with the Stanford bunny -------------------------------------
+
+std::string bunny() { return test::read_file(RASTERD_MODELS_DIR "/bunny.obj"); }
+
+TEST(ServerObj, MultipartSceneAndModel) {
+  TestServer server;
+  httplib::MultipartFormDataItems items = {
+      {"scene", R"({"width": 200, "height": 150, "background": "#102030", "primitives": [{"type": "obj", "source": "model", "color": "#e0a060"}]})", "scene.json", "application/json"},
+      {"model", bunny(), "bunny.obj", "text/plain"},
+  };
+  auto r = server.client().Post("/render", items);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const auto png = test::decode_png(r->body);
+  EXPECT_EQ(png.width, 200);
+  EXPECT_EQ(png.height, 150);
+  EXPECT_EQ(png.channels, 3);
+  EXPECT_NE(r->get_header_value("X-Render-Plan").find("depth=f32"), std::string::npos);
+}
+
+TEST(ServerObj, MultipartModelAloneUsesTheDefaultScene) {
+  TestServer server;
+  httplib::MultipartFormDataItems items = {{"model", bunny(), "bunny.obj", "text/plain"}};
+  auto r = server.client().Post("/render?width=64&height=48", items);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(test::decode_png(r->body).width, 64);
+}
+
+TEST(ServerObj, RawObjBodyWithQueryParameters) {
+  TestServer server;
+  auto r = server.client().Post("/render?width=320&height=240&background=%23ffffff&projection=orthographic", bunny(), "application/octet-stream");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const auto png = test::decode_png(r->body);
+  EXPECT_EQ(png.width, 320);
+  EXPECT_EQ(png.height, 240);
+  EXPECT_EQ(png.pixels[0], 255) << "white background from the query";
+  auto bad = server.client().Post("/render?width=abc", bunny(), "application/octet-stream");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_NE(problem_of(bad)["detail"].get<std::string>().find("width"), std::string::npos);
+}
+
+TEST(ServerObj, InlineObjInAScene) {
+  TestServer server;
+  const nlohmann::json scene = {{"width", 96}, {"height", 96}, {"primitives", {{{"type", "obj"}, {"data", bunny()}, {"shading", "flat"}}}}};
+  auto r = server.client().Post("/render", scene.dump(), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200) << r->body;
+}
+
+TEST(ServerObj, CurlDashDFlattenedObjGetsAHint) {
+  TestServer server;
+  std::string flat = bunny();
+  std::erase(flat, '\n');  // what `curl -d @bunny.obj` sends
+  auto r = server.client().Post("/render", flat, "application/x-www-form-urlencoded");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(problem_of(r)["detail"].get<std::string>().find("--data-binary"), std::string::npos);
+}
+
+TEST(ServerObj, BadModelIsA422NamingTheLine) {
+  TestServer server;
+  auto r = server.client().Post("/render", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -7\n", "text/plain");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 422);
+  const auto j = problem_of(r);
+  EXPECT_EQ(j["line"], 4);
+  EXPECT_EQ(j["type"], "urn:rasterd:problem:invalid-model");
+  auto empty = server.client().Post("/render", "# just a comment\n", "text/plain");
+  ASSERT_TRUE(empty);
+  EXPECT_EQ(empty->status, 422);
+}

@@ -28,6 +28,10 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background) {
   return image;
 }
 
+std::vector<float> make_depth_buffer(const RenderPlan& plan) {
+  return std::vector<float>(static_cast<std::size_t>(plan.memory.depth_bytes) / sizeof(float), 0.0f);
+}
+
 Rect band(const RenderPlan& plan, int index, int count) {
   const int rows = plan.height / count;
   const int y0 = index * rows;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "raster/image.h"
 #include "raster/plan.h"
@@ -17,6 +18,9 @@ struct Rect {
 
 /// Allocates exactly plan.memory.color_bytes and fills it with the background.
 Image make_color_buffer(const RenderPlan& plan, Rgba8 background);
+
+/// Allocates exactly plan.memory.depth_bytes, cleared to 0 (reversed depth: infinitely far); none for 2D.
+std::vector<float> make_depth_buffer(const RenderPlan& plan);
 
 /// Row band `index` of `count` equal bands covering the image (the last takes the remainder).
 Rect band(const RenderPlan& plan, int index, int count);

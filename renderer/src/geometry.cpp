@@ -59,11 +59,19 @@ double snap(double px) {
 
 DrawList build_draw_list(const Scene& scene, const RenderPlan& plan) {
   DrawList list;
+  if (plan.depth_buffer) {
+    list.to_light[0] = plan.view.to_light.x, list.to_light[1] = plan.view.to_light.y, list.to_light[2] = plan.view.to_light.z;
+    list.ambient = plan.view.ambient;
+  }
   list.ops.reserve(scene.primitives.size() - static_cast<std::size_t>(plan.culled_count));
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const PrimitivePlan& mode = plan.primitives[i];
     if (!mode.visible) continue;
     const Primitive& prim = scene.primitives[i];
+    if (prim.kind == PrimitiveKind::mesh) {
+      add_mesh(scene.meshes[prim.mesh], mode, plan, list);
+      continue;
+    }
     DrawOp op;
     op.mode = mode;
     if (prim.kind == PrimitiveKind::triangle && prim.fill) add_triangle(scene, prim, list, op);

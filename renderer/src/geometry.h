@@ -43,12 +43,28 @@ struct ScreenLine {
   Rgba8 c0, c1;                           ///< colours at the two endpoints
   bool draw_first = true;  ///< false: endpoint 0's pixel belongs to the previous polyline segment
   bool draw_last = true;   ///< false: endpoint 1's pixel belongs to the next segment (closing segment)
+  float depth0 = 0, depth1 = 0;  ///< 3D lines (ops with mode.depth): z / w at each endpoint, reversed
+};
+
+/// A vertex of a depth-tested (3D) triangle: snapped like ScreenVertex, plus what shading interpolates.
+struct DepthVertex {
+  std::int32_t x = 0, y = 0;  ///< 1/256 px, origin top-left, y down; within the guard band
+  float depth = 0;            ///< z / w in [0, 1]: 1 at the near plane, toward 0 far away (reversed)
+  float inv_w = 1;            ///< 1 / w, for perspective-correct interpolation
+  float color[4] = {};        ///< straight RGBA, 0..255 (lighting already applied for flat shading)
+  float normal[3] = {};       ///< world space, unit; used only for per-pixel lighting
+};
+
+struct DepthTriangle {
+  DepthVertex v[3];
+  bool back_facing = false;  ///< seen from behind: per-pixel lighting flips the normal (two-sided light)
 };
 
 /// One scene primitive after geometry: a run of records of one kind, drawn with one PrimitivePlan.
 struct DrawOp {
-  enum class Kind : std::uint8_t { triangles, huge_triangles, lines } kind = Kind::triangles;
+  enum class Kind : std::uint8_t { triangles, huge_triangles, lines, depth_triangles } kind = Kind::triangles;
   PrimitivePlan mode;
+  bool light_per_pixel = false;  ///< depth_triangles: interpolate normals and light each pixel
   std::uint32_t first = 0;  ///< index into the DrawList vector of that kind
   std::uint32_t count = 0;
 };
@@ -59,10 +75,18 @@ struct DrawList {
   std::vector<ScreenTriangle> triangles;
   std::vector<HugeTriangle> huge_triangles;
   std::vector<ScreenLine> lines;
+  std::vector<DepthTriangle> depth_triangles;
+  double to_light[3] = {0, 0, 1};  ///< unit world vector toward the light (3D only)
+  double ambient = 0.2;            ///< in [0, 1]
 };
 
 /// Builds the draw list of the plan's visible primitives.
 DrawList build_draw_list(const Scene& scene, const RenderPlan& plan);
+
+/// The 3D part (geometry3d.cpp): a mesh through the plan's camera into depth triangles and 3D lines,
+/// clipped in homogeneous space (near, far and a guard band) so that w > 0 everywhere and every snapped
+/// coordinate stays in the fast range. Appends one op per kind it produces.
+void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& plan, DrawList& list);
 
 /// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
 /// whole pixels translates the result exactly.

@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <thread>
 
 #include <nlohmann/json.hpp>
+
+#include "vecmath.h"
 
 namespace raster {
 namespace {
@@ -38,6 +41,7 @@ Box bounds(const Scene& scene, const Primitive& p) {
 void check_references(const Scene& scene) {
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& p = scene.primitives[i];
+    if (p.kind == PrimitiveKind::mesh) continue;  // checked below
     const std::size_t colors = p.per_vertex_color ? p.point_count : 1;
     const bool ok = std::size_t{p.first_point} + p.point_count <= scene.points.size() &&
                     std::size_t{p.first_color} + colors <= scene.colors.size() &&
@@ -45,6 +49,22 @@ void check_references(const Scene& scene) {
     if (!ok)
       throw SceneError(ErrorKind::invalid, "primitive refers to points or colours the scene does not have",
                        {"/primitives/" + std::to_string(i), 0, 0});
+  }
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const Primitive& p = scene.primitives[i];
+    if (p.kind != PrimitiveKind::mesh) continue;
+    const std::string where = "/primitives/" + std::to_string(i);
+    if (p.mesh >= scene.meshes.size()) throw SceneError(ErrorKind::invalid, "mesh primitive refers to a missing mesh", {where, 0, 0});
+    const Mesh& m = scene.meshes[p.mesh];
+    const std::size_t n = m.positions.size();
+    bool ok = (m.colors.size() == 1 || m.colors.size() == n) &&
+              (m.face_colors.empty() || m.face_colors.size() == m.triangles.size()) &&
+              (m.normal_triangles.empty() || m.normal_triangles.size() == m.triangles.size());
+    for (const auto& t : m.triangles) ok = ok && t[0] < n && t[1] < n && t[2] < n;
+    for (const auto& s : m.segments) ok = ok && s[0] < n && s[1] < n;
+    for (const auto& t : m.normal_triangles) ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
+    for (const Vec3& q : m.positions) ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate && std::fabs(q.z) <= kMaxCoordinate;
+    if (!ok) throw SceneError(ErrorKind::invalid, "mesh has indices, colours or normals that do not match its positions", {where, 0, 0});
   }
   // Scenes built in code skip the parser's checks; coverage relies on these bounds.
   for (std::size_t i = 0; i < scene.points.size(); ++i) {
@@ -86,6 +106,92 @@ int png_color_type(PixelFormat f) {
   return 2;
 }
 
+[[noreturn]] void camera_error(const std::string& pointer, const std::string& message) {
+  throw SceneError(ErrorKind::invalid, message, {pointer, 0, 0});
+}
+
+// World-space bounding box of every mesh's positions after its transform.
+bool world_bounds(const Scene& scene, Vec3& lo, Vec3& hi) {
+  bool any = false;
+  lo = {INFINITY, INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY, -INFINITY};
+  for (const Mesh& mesh : scene.meshes)
+    for (const Vec3& p : mesh.positions) {
+      const Vec3 w = detail::transform_point(mesh.transform, p);
+      if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z)) continue;
+      lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
+      hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
+      any = true;
+    }
+  return any;
+}
+
+// Fits whatever the scene's camera leaves out to the content, validates the result, builds the matrices.
+ViewPlan resolve_view(const Scene& scene, double aspect) {
+  using namespace detail;
+  const Camera& cam = scene.camera;
+  Vec3 lo, hi;
+  if (!world_bounds(scene, lo, hi)) lo = {-1, -1, -1}, hi = {1, 1, 1};
+  const Vec3 centre = (lo + hi) * 0.5;
+  double radius = length(hi - lo) * 0.5;
+  if (!(radius > 0)) radius = std::max(1.0, length(centre)) * 1e-6;  // a single point: any small sphere
+
+  ViewPlan v;
+  v.projection = cam.projection;
+  v.fov_deg = cam.fov_deg;
+  v.up = cam.up;
+  v.target = cam.has_target ? cam.target : centre;
+  const double half = cam.fov_deg * std::numbers::pi / 360.0;
+  // Distance at which the bounding sphere fits the narrower of the two fields of view.
+  const double tan_fit = std::min(std::tan(half), std::tan(half) * aspect);
+  const double fit_distance = radius * std::sqrt(1 + tan_fit * tan_fit) / tan_fit;
+  v.eye = cam.has_eye ? cam.eye : v.target + Vec3{0, 0, fit_distance + length(v.target - centre)};
+  const Vec3 forward = normalize(v.target - v.eye);
+  if (length(forward) == 0) camera_error("/camera/eye", "\"eye\" and \"target\" coincide: the camera has no view direction");
+  const Vec3 side = normalize(cross(forward, v.up));
+  // sin of the angle between up and the view direction; below ~1e-9 the basis is not defined.
+  if (length(side) == 0 || length(cross(forward, normalize(v.up))) < 1e-9)
+    camera_error("/camera/up", "\"up\" is parallel to the view direction, so the image has no defined up");
+  const Vec3 up = cross(side, forward);
+
+  // Near and far: the content's extent along the view direction, unless given.
+  double d_min = INFINITY, d_max = -INFINITY;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner{k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
+    const double d = dot(corner - v.eye, forward);
+    d_min = std::min(d_min, d), d_max = std::max(d_max, d);
+  }
+  v.far = cam.has_far ? cam.far : std::max(d_max * 1.01, 1e-9);
+  v.near = cam.has_near ? cam.near : (d_min > 0 ? d_min * 0.99 : v.far * 1e-4);
+  if (!cam.has_far && v.near >= v.far) v.far = v.near * 2;
+  if (!(v.near < v.far)) camera_error("/camera/near", "\"near\" must be less than \"far\"");
+  v.height = cam.has_height ? cam.height : 2 * length(v.target - v.eye) * std::tan(half);
+
+  Mat4 view;
+  const Vec3 rows[3] = {side, up, forward * -1.0};
+  for (int r = 0; r < 3; ++r) {
+    view(r, 0) = rows[r].x, view(r, 1) = rows[r].y, view(r, 2) = rows[r].z;
+    view(r, 3) = -dot(rows[r], v.eye);
+  }
+  Mat4 proj;  // maps view space (looking down -z) to clip space with reversed depth
+  const double n = v.near, f = v.far;
+  if (v.projection == Projection::perspective) {
+    proj(0, 0) = 1 / (std::tan(half) * aspect);
+    proj(1, 1) = 1 / std::tan(half);
+    proj(2, 2) = n / (f - n), proj(2, 3) = n * f / (f - n);  // z = n (f - d) / (f - n) with d = -z_view
+    proj(3, 2) = -1, proj(3, 3) = 0;                          // w = d
+  } else {
+    proj(0, 0) = 2 / (v.height * aspect);
+    proj(1, 1) = 2 / v.height;
+    proj(2, 2) = 1 / (f - n), proj(2, 3) = f / (f - n);  // z = (f - d) / (f - n), w = 1
+  }
+  v.world_to_clip = proj * view;
+  // The headlight travels along the view direction; to_light points back at its source.
+  const Vec3 travel = scene.light.headlight ? forward : normalize(scene.light.direction);
+  v.to_light = travel * -1.0;
+  v.ambient = scene.light.ambient;
+  return v;
+}
+
 }  // namespace
 
 RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& options) {
@@ -103,9 +209,39 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   const bool alpha = !scene.background.is_opaque();  // drawing over an opaque background stays opaque
   std::int64_t work = 0;
 
+  bool any_3d = false;
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& prim = scene.primitives[i];
     PrimitivePlan& pp = out.primitives[i];
+    if (prim.kind == PrimitiveKind::mesh) {
+      const Mesh& mesh = scene.meshes[prim.mesh];
+      const bool draws_triangles = !mesh.triangles.empty() && !mesh.wireframe;
+      pp.visible = !mesh.triangles.empty() || !mesh.segments.empty();
+      if (!pp.visible) {
+        ++out.culled_count;
+        continue;
+      }
+      any_3d = true;
+      pp.depth = true;
+      pp.lit = draws_triangles && mesh.shading != Shading::unlit;
+      pp.compute_normals = pp.lit && mesh.shading == Shading::smooth && mesh.normals.empty();
+      const auto& colors = mesh.face_colors.empty() ? mesh.colors : mesh.face_colors;
+      bool varied = false;
+      for (const Rgba8& c : colors) {
+        varied |= !(c == colors[0]);
+        pp.blend |= !c.is_opaque();
+        grey &= c.is_grey();
+      }
+      // Per-pixel work when colours vary per vertex or normals are interpolated; per-face colours and flat
+      // lighting give one colour per triangle.
+      pp.smooth = (varied && mesh.face_colors.empty() && mesh.colors.size() > 1) || (pp.lit && mesh.shading == Shading::smooth);
+      (pp.smooth ? out.smooth_count : out.flat_count) += 1;
+      out.blend_count += pp.blend ? 1 : 0;
+      out.lit_count += pp.lit ? 1 : 0;
+      out.triangles_3d += draws_triangles ? static_cast<std::int64_t>(mesh.triangles.size()) : 0;
+      work += image_pixels;  // a mesh may cover the whole image
+      continue;
+    }
     const Box b = bounds(scene, prim);
     // Conservative: a primitive touching the image's closed rectangle is kept.
     pp.visible = b.x1 >= 0 && b.x0 <= w && b.y1 >= 0 && b.y0 <= h;
@@ -131,6 +267,11 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   out.format = grey ? (alpha ? PixelFormat::grey_alpha8 : PixelFormat::grey8)
                     : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
   out.memory.color_bytes = image_pixels * channel_count(out.format);
+  if (any_3d) {
+    out.depth_buffer = true;
+    out.memory.depth_bytes = image_pixels * static_cast<std::int64_t>(sizeof(float));
+    out.view = resolve_view(scene, static_cast<double>(scene.width) / scene.height);
+  }
   if (out.memory.total() > limits.max_buffer_bytes)
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +
@@ -153,7 +294,14 @@ std::string explain_json(const RenderPlan& p) {
   j["channels"] = channel_count(p.format);
   j["depth_buffer"] = p.depth_buffer;
   j["samples"] = p.samples;
-  j["primitives"] = {{"flat", p.flat_count}, {"smooth", p.smooth_count}, {"blend", p.blend_count}, {"culled", p.culled_count}};
+  j["primitives"] = {{"flat", p.flat_count}, {"smooth", p.smooth_count}, {"blend", p.blend_count},
+                     {"culled", p.culled_count}, {"lit", p.lit_count}, {"triangles_3d", p.triangles_3d}};
+  if (p.depth_buffer) {
+    const ViewPlan& v = p.view;
+    j["camera"] = {{"projection", v.projection == Projection::perspective ? "perspective" : "orthographic"},
+                   {"eye", {v.eye.x, v.eye.y, v.eye.z}}, {"target", {v.target.x, v.target.y, v.target.z}},
+                   {"up", {v.up.x, v.up.y, v.up.z}}, {"fov", v.fov_deg}, {"near", v.near}, {"far", v.far}, {"height", v.height}};
+  }
   j["work"] = p.work;
   j["threads"] = p.threads;
   j["memory_bytes"] = {{"color", p.memory.color_bytes}, {"depth", p.memory.depth_bytes},
@@ -166,7 +314,8 @@ std::string explain_line(const RenderPlan& p) {
   return std::string(format_name(p.format)) + " depth=" + (p.depth_buffer ? "f32" : "none") +
          " samples=" + std::to_string(p.samples) + " flat=" + std::to_string(p.flat_count) +
          " smooth=" + std::to_string(p.smooth_count) + " blend=" + std::to_string(p.blend_count) +
-         " culled=" + std::to_string(p.culled_count) + " threads=" + std::to_string(p.threads);
+         " culled=" + std::to_string(p.culled_count) + (p.lit_count ? " lit=" + std::to_string(p.lit_count) : "") +
+         " threads=" + std::to_string(p.threads);
 }
 
 }  // namespace raster

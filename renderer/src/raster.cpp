@@ -59,59 +59,130 @@ Edge make_edge(const ScreenVertex& from, const ScreenVertex& to) {
   return e;
 }
 
-template <int C>
-void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip) {
-  ScreenVertex v0 = tri.v[0], v1 = tri.v[1], v2 = tri.v[2];
-  std::int64_t area = (std::int64_t{v1.x} - v0.x) * (std::int64_t{v2.y} - v0.y) -
-                      (std::int64_t{v1.y} - v0.y) * (std::int64_t{v2.x} - v0.x);
-  if (area == 0) return;  // degenerate: covers nothing
-  if (area < 0) {         // both windings are drawn: normalize to positive area
-    std::swap(v1, v2);
+// Coverage of one fast-path triangle: calls span(j, lo, hi, w, step) for every row j with covered
+// pixels [lo, hi] inside `clip`. w[k] is vertex k's barycentric weight at pixel lo times the doubled
+// area (vertex order as given, whatever the winding), step[k] its change per pixel to the right.
+// Returns the doubled area (0: degenerate, nothing covered).
+template <typename Span>
+std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)[3], Rect clip, Span&& span) {
+  ScreenVertex v[3];
+  for (int k = 0; k < 3; ++k) v[k].x = xs[k], v[k].y = ys[k];
+  std::int64_t area = (std::int64_t{v[1].x} - v[0].x) * (std::int64_t{v[2].y} - v[0].y) -
+                      (std::int64_t{v[1].y} - v[0].y) * (std::int64_t{v[2].x} - v[0].x);
+  if (area == 0) return 0;  // degenerate: covers nothing
+  int slot[3] = {0, 1, 2};  // slot[k]: which given vertex normalized vertex k is
+  if (area < 0) {           // both windings are drawn: normalize to positive area
+    std::swap(v[1], v[2]);
+    std::swap(slot[1], slot[2]);
     area = -area;
   }
 
   // Pixels whose centre (256 i + 128) lies in the bounding box, clamped to the clip rectangle.
-  const std::int64_t min_x = std::min({v0.x, v1.x, v2.x}), max_x = std::max({v0.x, v1.x, v2.x});
-  const std::int64_t min_y = std::min({v0.y, v1.y, v2.y}), max_y = std::max({v0.y, v1.y, v2.y});
+  const std::int64_t min_x = std::min({v[0].x, v[1].x, v[2].x}), max_x = std::max({v[0].x, v[1].x, v[2].x});
+  const std::int64_t min_y = std::min({v[0].y, v[1].y, v[2].y}), max_y = std::max({v[0].y, v[1].y, v[2].y});
   const std::int64_t i_lo = std::max<std::int64_t>(clip.x0, ceil_div(min_x - kHalfPixel, kSubpixelScale));
   const std::int64_t i_hi = std::min<std::int64_t>(clip.x1 - 1, floor_div(max_x - kHalfPixel, kSubpixelScale));
   const std::int64_t j_lo = std::max<std::int64_t>(clip.y0, ceil_div(min_y - kHalfPixel, kSubpixelScale));
   const std::int64_t j_hi = std::min<std::int64_t>(clip.y1 - 1, floor_div(max_y - kHalfPixel, kSubpixelScale));
-  if (i_lo > i_hi || j_lo > j_hi) return;
+  if (i_lo > i_hi || j_lo > j_hi) return area;
 
-  // Edge k is opposite vertex k, so its value is vertex k's barycentric weight times `area`.
-  const Edge e[3] = {make_edge(v1, v2), make_edge(v2, v0), make_edge(v0, v1)};
-  const ScreenVertex* origin[3] = {&v1, &v2, &v0};
+  // Edge k is opposite normalized vertex k, so its value is that vertex's weight times `area`.
+  const Edge e[3] = {make_edge(v[1], v[2]), make_edge(v[2], v[0]), make_edge(v[0], v[1])};
+  const ScreenVertex* origin[3] = {&v[1], &v[2], &v[0]};
   const std::int64_t px = i_lo * kSubpixelScale + kHalfPixel;
-  std::int64_t row_value[3];
-  for (int k = 0; k < 3; ++k)
+  std::int64_t row_value[3], step[3];
+  for (int k = 0; k < 3; ++k) {
     row_value[k] = e[k].a * (px - origin[k]->x) + e[k].b * (j_lo * kSubpixelScale + kHalfPixel - origin[k]->y);
+    step[slot[k]] = e[k].a * kSubpixelScale;
+  }
 
   for (std::int64_t j = j_lo; j <= j_hi; ++j) {
     // The covered span of this row, solved exactly per edge instead of testing every pixel of the box:
     // E(i) = E(i_lo) + A * 256 * (i - i_lo) >= min_value.
     std::int64_t lo = i_lo, hi = i_hi;
     for (int k = 0; k < 3; ++k) {
-      const std::int64_t step = e[k].a * kSubpixelScale;
-      if (step > 0) lo = std::max(lo, i_lo + ceil_div(e[k].min_value - row_value[k], step));
-      else if (step < 0) hi = std::min(hi, i_lo + floor_div(row_value[k] - e[k].min_value, -step));
+      const std::int64_t s = e[k].a * kSubpixelScale;
+      if (s > 0) lo = std::max(lo, i_lo + ceil_div(e[k].min_value - row_value[k], s));
+      else if (s < 0) hi = std::min(hi, i_lo + floor_div(row_value[k] - e[k].min_value, -s));
       else if (row_value[k] < e[k].min_value) lo = hi + 1;
     }
     if (lo <= hi) {
-      std::int64_t w[3], step[3];
-      for (int k = 0; k < 3; ++k) {
-        step[k] = e[k].a * kSubpixelScale;
-        w[k] = row_value[k] + step[k] * (lo - i_lo);
-      }
-      std::uint8_t* p = image.pixels.data() + (j * image.width + lo) * C;
-      shade_span<C>(p, hi - lo + 1, mode, v0.color, [&] {
-        const Rgba8 c = mix3(w[0], w[1], w[2], area, v0.color, v1.color, v2.color);
-        w[0] += step[0], w[1] += step[1], w[2] += step[2];
-        return c;
-      });
+      std::int64_t w[3];
+      for (int k = 0; k < 3; ++k) w[slot[k]] = row_value[k] + e[k].a * kSubpixelScale * (lo - i_lo);
+      span(j, lo, hi, w, step, area);
     }
     for (int k = 0; k < 3; ++k) row_value[k] += e[k].b * kSubpixelScale;
   }
+  return area;
+}
+
+template <int C>
+void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip) {
+  const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x}, ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
+  for_each_span(xs, ys, clip, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w0)[3],
+                                  const std::int64_t (&step)[3], std::int64_t area) {
+    std::int64_t w[3] = {w0[0], w0[1], w0[2]};
+    std::uint8_t* p = image.pixels.data() + (j * image.width + lo) * C;
+    shade_span<C>(p, hi - lo + 1, mode, tri.v[0].color, [&] {
+      const Rgba8 c = mix3(w[0], w[1], w[2], area, tri.v[0].color, tri.v[1].color, tri.v[2].color);
+      w[0] += step[0], w[1] += step[1], w[2] += step[2];
+      return c;
+    });
+  });
+}
+
+// ---- Triangles with depth (3D): the same coverage, then depth test and perspective-correct shading ----
+
+template <int C>
+void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawList& list, Image& image, float* depth,
+                         Rect clip) {
+  const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x}, ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
+  const DepthVertex* v = tri.v;
+  const PrimitivePlan mode = op.mode;
+  const Rgba8 flat{static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[0]), 0l, 255l)),
+                   static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[1]), 0l, 255l)),
+                   static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[2]), 0l, 255l)),
+                   static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[3]), 0l, 255l))};
+  const double flip = tri.back_facing ? -1.0 : 1.0;  // two-sided lighting
+  for_each_span(xs, ys, clip, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
+                                  const std::int64_t (&step)[3], std::int64_t area) {
+    const double inv_area = 1.0 / static_cast<double>(area);
+    const std::size_t row = static_cast<std::size_t>(j) * image.width;
+    for (std::int64_t i = lo; i <= hi; ++i) {
+      const std::int64_t n = i - lo;
+      // screen-space barycentrics; depth (z / w) is affine in screen space
+      const double l[3] = {static_cast<double>(w[0] + step[0] * n) * inv_area, static_cast<double>(w[1] + step[1] * n) * inv_area,
+                           static_cast<double>(w[2] + step[2] * n) * inv_area};
+      const float z = static_cast<float>(l[0] * v[0].depth + l[1] * v[1].depth + l[2] * v[2].depth);
+      float& stored = depth[row + i];
+      if (!(z > stored)) continue;  // reversed depth: larger is nearer; ties keep what was drawn first
+      stored = z;
+      std::uint8_t* p = image.pixels.data() + (row + i) * C;
+      if (!mode.smooth) {
+        if (mode.blend) blend<C>(p, flat);
+        else store<C>(p, flat);
+        continue;
+      }
+      // perspective-correct weights: interpolate attribute / w and 1 / w, then divide
+      double q[3], sum = 0;
+      for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * v[k].inv_w;
+      for (double& qk : q) qk /= sum;
+      double rgba[4];
+      for (int c = 0; c < 4; ++c) rgba[c] = q[0] * v[0].color[c] + q[1] * v[1].color[c] + q[2] * v[2].color[c];
+      if (op.light_per_pixel) {
+        double nrm[3];
+        for (int c = 0; c < 3; ++c) nrm[c] = q[0] * v[0].normal[c] + q[1] * v[1].normal[c] + q[2] * v[2].normal[c];
+        const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+        const double lambert = len > 0 ? flip * (nrm[0] * list.to_light[0] + nrm[1] * list.to_light[1] + nrm[2] * list.to_light[2]) / len : 0;
+        const double shade = list.ambient + (1 - list.ambient) * std::max(0.0, lambert);
+        for (int c = 0; c < 3; ++c) rgba[c] *= shade;
+      }
+      auto byte = [](double x) { return static_cast<std::uint8_t>(std::clamp(std::floor(x + 0.5), 0.0, 255.0)); };
+      const Rgba8 c{byte(rgba[0]), byte(rgba[1]), byte(rgba[2]), byte(rgba[3])};
+      if (mode.blend) blend<C>(p, c);
+      else store<C>(p, c);
+    }
+  });
 }
 
 // ---- Triangles, exact wide path: vertices beyond the fast range, up to 2^128 px --------------------------
@@ -190,13 +261,14 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
 
 // T is __int128 for endpoints within 2^60 px (every product below fits), Wide beyond.
 template <int C, typename T>
-void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, Rect clip) {
+void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, float* depth, Rect clip) {
   auto to_t = [](double v) {
     if constexpr (std::is_same_v<T, Wide>) return Wide::from_double(v);
     else return static_cast<T>(v);
   };
   T x0 = to_t(line.x0), y0 = to_t(line.y0), x1 = to_t(line.x1), y1 = to_t(line.y1);
   Rgba8 c0 = line.c0, c1 = line.c1;
+  float z0 = line.depth0, z1 = line.depth1;
   bool draw_first = line.draw_first, draw_last = line.draw_last;
   // Canonical order, decided exactly: along the major axis (x when |dx| >= |dy|) the first endpoint has
   // the smaller coordinate. a->b and b->a become the same line, hence the same pixels.
@@ -205,6 +277,7 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, Rect cl
   if (!x_major) std::swap(x0, y0), std::swap(x1, y1);  // from here on: u = x0/x1 axis, v = y0/y1 axis
   if (x1 < x0 || (x1 == x0 && y1 < y0)) {
     std::swap(x0, x1), std::swap(y0, y1), std::swap(c0, c1), std::swap(draw_first, draw_last);
+    std::swap(z0, z1);
   }
   const T &u0 = x0, &u1 = x1, &v0 = y0, &v1 = y1;
   const T du = u1 - u0, dv = v1 - v0;  // du >= |dv| >= 0
@@ -221,11 +294,21 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, Rect cl
   std::int64_t lo = first < T(u_min) ? u_min : to_i64(first);
   std::int64_t hi = T(u_max) < last ? u_max : to_i64(last);
 
-  if (du == T(0)) {  // both endpoints in one pixel
-    if (!(v0 < T(v_min)) && !(T(v_max) < v0)) {
-      std::uint8_t* p = image.pixels.data() + (x_major ? to_i64(v0) * image.width + lo : lo * image.width + to_i64(v0)) * C;
-      shade_span<C>(p, 1, mode, c0, [&] { return c0; });
+  // Pixel index steps along the major and minor axes (colour bytes are C per pixel, depth one float).
+  const std::size_t stride_u = x_major ? 1 : static_cast<std::size_t>(image.width);
+  const std::size_t stride_v = x_major ? static_cast<std::size_t>(image.width) : 1;
+  // Writes one pixel; 3D lines first pass the depth test (reversed: larger is nearer).
+  auto plot = [&](std::int64_t u, std::int64_t v, float z, auto&& color) {
+    const std::size_t index = static_cast<std::size_t>(u) * stride_u + static_cast<std::size_t>(v) * stride_v;
+    if (mode.depth) {
+      if (!(z > depth[index])) return;
+      depth[index] = z;
     }
+    shade_span<C>(image.pixels.data() + index * C, 1, mode, c0, color);
+  };
+
+  if (du == T(0)) {  // both endpoints in one pixel
+    if (!(v0 < T(v_min)) && !(T(v_max) < v0)) plot(lo, to_i64(v0), std::max(z0, z1), [&] { return c0; });
     return;
   }
 
@@ -268,14 +351,17 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, Rect cl
   // Incremental Bresenham from lo: row v and remainder r = N(u) - 2du v in [0, 2du).
   std::int64_t v = v_at(lo);
   T r = numerator(lo) - two_du * T(v);
+  auto lerp_t = [&](std::int64_t u) {  // (u - u0) / du as a double, for depth only
+    if constexpr (std::is_same_v<T, Wide>) return (T(u) - u0).to_double() / du.to_double();
+    else return static_cast<double>(T(u) - u0) / static_cast<double>(du);
+  };
   auto lerp = [&](std::uint8_t a, std::uint8_t b, const T& t) {  // a + round((b - a) t / du), exact
     return static_cast<std::uint8_t>(a + floor_div_clamped(T(2 * (int{b} - int{a})) * t + du, two_du, -255, 255));
   };
-  const std::size_t stride_u = x_major ? C : static_cast<std::size_t>(image.width) * C;
-  const std::size_t stride_v = x_major ? static_cast<std::size_t>(image.width) * C : C;
   for (std::int64_t u = lo; u <= hi; ++u) {
-    std::uint8_t* p = image.pixels.data() + static_cast<std::size_t>(u) * stride_u + static_cast<std::size_t>(v) * stride_v;
-    shade_span<C>(p, 1, mode, c0, [&] {
+    // 3D lines: z / w is affine along the screen-space line
+    const float z = mode.depth ? static_cast<float>(z0 + (z1 - z0) * lerp_t(u)) : 0.0f;
+    plot(u, v, z, [&] {
       const T t = T(u) - u0;
       return Rgba8{lerp(c0.r, c1.r, t), lerp(c0.g, c1.g, t), lerp(c0.b, c1.b, t), lerp(c0.a, c1.a, t)};
     });
@@ -291,15 +377,16 @@ bool line_fits_int128(const ScreenLine& l) {
 }
 
 template <int C>
-void draw_all(const DrawList& list, Image& image, Rect clip) {
+void draw_all(const DrawList& list, Image& image, float* depth, Rect clip) {
   for (const DrawOp& op : list.ops) {
     for (std::uint32_t k = op.first; k < op.first + op.count; ++k) {
       switch (op.kind) {
         case DrawOp::Kind::triangles: fill_triangle<C>(list.triangles[k], op.mode, image, clip); break;
         case DrawOp::Kind::huge_triangles: fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip); break;
+        case DrawOp::Kind::depth_triangles: fill_depth_triangle<C>(list.depth_triangles[k], op, list, image, depth, clip); break;
         case DrawOp::Kind::lines:
-          if (line_fits_int128(list.lines[k])) draw_line<C, __int128>(list.lines[k], op.mode, image, clip);
-          else draw_line<C, Wide>(list.lines[k], op.mode, image, clip);
+          if (line_fits_int128(list.lines[k])) draw_line<C, __int128>(list.lines[k], op.mode, image, depth, clip);
+          else draw_line<C, Wide>(list.lines[k], op.mode, image, depth, clip);
           break;
       }
     }
@@ -308,12 +395,12 @@ void draw_all(const DrawList& list, Image& image, Rect clip) {
 
 }  // namespace
 
-void draw(const DrawList& list, Image& image, Rect clip) {
+void draw(const DrawList& list, Image& image, float* depth, Rect clip) {
   switch (image.format) {
-    case PixelFormat::grey8: return draw_all<1>(list, image, clip);
-    case PixelFormat::grey_alpha8: return draw_all<2>(list, image, clip);
-    case PixelFormat::rgb8: return draw_all<3>(list, image, clip);
-    case PixelFormat::rgba8: return draw_all<4>(list, image, clip);
+    case PixelFormat::grey8: return draw_all<1>(list, image, depth, clip);
+    case PixelFormat::grey_alpha8: return draw_all<2>(list, image, depth, clip);
+    case PixelFormat::rgb8: return draw_all<3>(list, image, depth, clip);
+    case PixelFormat::rgba8: return draw_all<4>(list, image, depth, clip);
   }
 }
 

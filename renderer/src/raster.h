@@ -8,8 +8,9 @@
 
 namespace raster::detail {
 
-/// Draws every op of `list`, in order, into the pixels of `image` inside `clip`. Pixels outside `clip`
+/// Draws every op of `list`, in order, into the pixels of `image` inside `clip`; 3D ops also test and write
+/// `depth` (row-major like the image; nullptr when the plan has no depth buffer). Pixels outside `clip`
 /// are not read or written, so disjoint clips can run on different threads.
-void draw(const DrawList& list, Image& image, Rect clip);
+void draw(const DrawList& list, Image& image, float* depth, Rect clip);
 
 }  // namespace raster::detail

@@ -14,17 +14,19 @@ namespace raster {
 Image render(const Scene& scene, const RenderPlan& plan) {
   const detail::DrawList list = detail::build_draw_list(scene, plan);
   Image image = detail::make_color_buffer(plan, scene.background);
+  std::vector<float> depth = detail::make_depth_buffer(plan);  // empty unless the plan has 3D content
+  float* const z = depth.empty() ? nullptr : depth.data();
   const int bands = plan.threads;
   if (bands <= 1) {
-    detail::draw(list, image, detail::band(plan, 0, 1));  // small work: no hand-off at all
+    detail::draw(list, image, z, detail::band(plan, 0, 1));  // small work: no hand-off at all
     return image;
   }
   {
     std::vector<std::jthread> workers;
     workers.reserve(bands - 1);
     for (int b = 1; b < bands; ++b)
-      workers.emplace_back([&, b] { detail::draw(list, image, detail::band(plan, b, bands)); });
-    detail::draw(list, image, detail::band(plan, 0, bands));
+      workers.emplace_back([&, b] { detail::draw(list, image, z, detail::band(plan, b, bands)); });
+    detail::draw(list, image, z, detail::band(plan, 0, bands));
   }  // jthreads join here
   return image;
 }

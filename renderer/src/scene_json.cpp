@@ -1,5 +1,6 @@
 // Scene parsing: JSON text -> Scene. Every rejection names the JSON pointer (or byte offset) it concerns.
 #include <algorithm>
+#include <numbers>
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "raster/scene.h"
+#include "vecmath.h"
 
 namespace raster {
 namespace {
@@ -173,10 +175,20 @@ double read_coordinate(const json& v, const std::string& pointer) {
   return d;
 }
 
-Point2 read_point(const json& v, const std::string& pointer) {
-  if (!v.is_array()) invalid(pointer, std::string("expected a point [x, y], got ") + type_name(v));
-  if (v.size() != 2) invalid(pointer, "expected a point [x, y], got " + std::to_string(v.size()) + " numbers");
-  return {read_coordinate(v[0], pointer_index(pointer, 0)), read_coordinate(v[1], pointer_index(pointer, 1))};
+// A point of `dims` (2 or 3) coordinates.
+std::array<double, 3> read_point(const json& v, const std::string& pointer, std::size_t dims) {
+  const char* shape = dims == 2 ? "[x, y]" : "[x, y, z]";
+  if (!v.is_array()) invalid(pointer, std::string("expected a point ") + shape + ", got " + type_name(v));
+  if (v.size() != dims)
+    invalid(pointer, std::string("expected a point ") + shape + " like the first point, got " + std::to_string(v.size()) + " numbers");
+  std::array<double, 3> p{};
+  for (std::size_t k = 0; k < dims; ++k) p[k] = read_coordinate(v[k], pointer_index(pointer, k));
+  return p;
+}
+
+Vec3 read_vec3(const json& v, const std::string& pointer) {
+  const auto p = read_point(v, pointer, 3);
+  return {p[0], p[1], p[2]};
 }
 
 const char* kind_name(PrimitiveKind k) {
@@ -184,19 +196,242 @@ const char* kind_name(PrimitiveKind k) {
     case PrimitiveKind::triangle: return "triangle";
     case PrimitiveKind::line: return "line";
     case PrimitiveKind::polyline: return "polyline";
+    case PrimitiveKind::mesh: return "mesh";
   }
   return "?";
 }
 
-void read_primitive(const json& v, const std::string& pointer, Scene& scene) {
+// Colours of a primitive: "color" (flat), "colors" (one per point), or `fallback`; appended to `out`.
+// Returns true when per point.
+bool read_colors(const json& v, const std::string& pointer, std::size_t n, Rgba8 fallback, std::vector<Rgba8>& out) {
+  auto color_it = v.find("color");
+  auto colors_it = v.find("colors");
+  if (color_it != v.end() && colors_it != v.end())
+    invalid(pointer, "give either \"color\" (flat) or \"colors\" (one per point), not both");
+  if (colors_it != v.end()) {
+    const std::string colors_pointer = pointer + "/colors";
+    if (!colors_it->is_array() || colors_it->size() != n)
+      invalid(colors_pointer, "\"colors\" needs one colour per point (" + std::to_string(n) + ")");
+    for (std::size_t k = 0; k < n; ++k) out.push_back(read_color((*colors_it)[k], pointer_index(colors_pointer, k)));
+    return true;
+  }
+  out.push_back(color_it != v.end() ? read_color(*color_it, pointer + "/color") : fallback);
+  return false;
+}
+
+// {"translate": [x,y,z], "rotate": [deg x, deg y, deg z], "scale": s | [sx,sy,sz]} -> T * Rz * Ry * Rx * S
+// (scale first, then rotate about x, y, z, then translate), or {"matrix": [16 numbers, row-major]}.
+Mat4 read_transform(const json& v, const std::string& pointer) {
+  if (!v.is_object()) invalid(pointer, std::string("expected a transform object, got ") + type_name(v));
+  check_keys(v, pointer, {"translate", "rotate", "scale", "matrix"});
+  Mat4 m;
+  if (auto it = v.find("matrix"); it != v.end()) {
+    if (v.size() != 1) invalid(pointer, "\"matrix\" replaces translate/rotate/scale; give one or the other");
+    if (!it->is_array() || it->size() != 16) invalid(pointer + "/matrix", "expected 16 numbers (a row-major 4x4 matrix)");
+    for (std::size_t k = 0; k < 16; ++k) m.m[k] = read_number((*it)[k], pointer_index(pointer + "/matrix", k));
+    return m;
+  }
+  if (auto it = v.find("scale"); it != v.end()) {
+    Vec3 s3;
+    if (it->is_number()) {
+      const double k = read_number(*it, pointer + "/scale");
+      s3 = {k, k, k};
+    } else {
+      s3 = read_vec3(*it, pointer + "/scale");
+    }
+    Mat4 sm;
+    sm(0, 0) = s3.x, sm(1, 1) = s3.y, sm(2, 2) = s3.z;
+    m = sm;
+  }
+  if (auto it = v.find("rotate"); it != v.end()) {
+    const Vec3 deg = read_vec3(*it, pointer + "/rotate");
+    const double angles[3] = {deg.x, deg.y, deg.z};
+    for (int axis = 0; axis < 3; ++axis) {  // x first, then y, then z
+      const double rad = angles[axis] * std::numbers::pi / 180.0, c = std::cos(rad), sn = std::sin(rad);
+      Mat4 r;
+      const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+      r(a, a) = c, r(a, b) = -sn, r(b, a) = sn, r(b, b) = c;
+      m = detail::operator*(r, m);
+    }
+  }
+  if (auto it = v.find("translate"); it != v.end()) {
+    const Vec3 t = read_vec3(*it, pointer + "/translate");
+    Mat4 tm;
+    tm(0, 3) = t.x, tm(1, 3) = t.y, tm(2, 3) = t.z;
+    m = detail::operator*(tm, m);
+  }
+  return m;
+}
+
+constexpr Rgba8 kMeshGrey{204, 204, 204, 255};  // the default colour of meshes and models: light grey
+
+// Options shared by "mesh" and "obj": shading, wireframe, cull, transform.
+void read_mesh_options(const json& v, const std::string& pointer, Mesh& mesh) {
+  if (auto it = v.find("shading"); it != v.end()) {
+    const std::string sp = pointer + "/shading";
+    if (!it->is_string()) invalid(sp, std::string("expected \"flat\", \"smooth\" or \"unlit\", got ") + type_name(*it));
+    const std::string& s = it->get_ref<const std::string&>();
+    if (s == "flat") mesh.shading = Shading::flat;
+    else if (s == "smooth") mesh.shading = Shading::smooth;
+    else if (s == "unlit") mesh.shading = Shading::unlit;
+    else invalid(sp, "expected \"flat\", \"smooth\" or \"unlit\", got \"" + s + "\"");
+  }
+  if (auto it = v.find("cull"); it != v.end()) {
+    const std::string cp = pointer + "/cull";
+    if (!it->is_string() || (*it != "none" && *it != "back")) invalid(cp, "expected \"none\" or \"back\", got " + it->dump());
+    mesh.cull = *it == "back" ? Cull::back : Cull::none;
+  }
+  if (auto it = v.find("wireframe"); it != v.end()) mesh.wireframe = read_bool(*it, pointer + "/wireframe");
+  if (auto it = v.find("transform"); it != v.end()) mesh.transform = read_transform(*it, pointer + "/transform");
+}
+
+// positions: [[x,y,z], ...] or [x,y,z, x,y,z, ...]; likewise normals.
+std::vector<Vec3> read_vec3_list(const json& v, const std::string& pointer) {
+  if (!v.is_array()) invalid(pointer, std::string("expected an array of [x, y, z] or of numbers, got ") + type_name(v));
+  std::vector<Vec3> out;
+  if (!v.empty() && v[0].is_number()) {
+    if (v.size() % 3 != 0) invalid(pointer, "a flat list holds x, y, z triples; its length " + std::to_string(v.size()) + " is not a multiple of 3");
+    out.reserve(v.size() / 3);
+    for (std::size_t k = 0; k < v.size(); k += 3)
+      out.push_back({read_coordinate(v[k], pointer_index(pointer, k)), read_coordinate(v[k + 1], pointer_index(pointer, k + 1)),
+                     read_coordinate(v[k + 2], pointer_index(pointer, k + 2))});
+    return out;
+  }
+  out.reserve(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) out.push_back(read_vec3(v[k], pointer_index(pointer, k)));
+  return out;
+}
+
+// indices: [[a,b,c], ...] or [a,b,c, a,b,c, ...], 0-based into positions.
+std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const std::string& pointer, std::size_t positions,
+                                                       const Limits& limits) {
+  if (!v.is_array()) invalid(pointer, std::string("expected an array of [a, b, c] or of integers, got ") + type_name(v));
+  auto index = [&](const json& e, const std::string& p) {
+    const std::int64_t i = read_integer(e, p);
+    if (i < 0 || static_cast<std::size_t>(i) >= positions)
+      invalid(p, "index " + e.dump() + " is outside the " + std::to_string(positions) + " positions (0-based)");
+    return static_cast<std::uint32_t>(i);
+  };
+  const bool flat = !v.empty() && v[0].is_number();
+  const std::size_t count = flat ? v.size() / 3 : v.size();
+  if (static_cast<std::int64_t>(count) > limits.max_primitives)
+    fail(ErrorKind::limit, pointer, std::to_string(count) + " triangles exceed the limit of " + std::to_string(limits.max_primitives));
+  std::vector<std::array<std::uint32_t, 3>> out;
+  out.reserve(count);
+  if (flat) {
+    if (v.size() % 3 != 0) invalid(pointer, "a flat list holds a, b, c triples; its length " + std::to_string(v.size()) + " is not a multiple of 3");
+    for (std::size_t k = 0; k < v.size(); k += 3)
+      out.push_back({index(v[k], pointer_index(pointer, k)), index(v[k + 1], pointer_index(pointer, k + 1)), index(v[k + 2], pointer_index(pointer, k + 2))});
+    return out;
+  }
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const std::string p = pointer_index(pointer, k);
+    if (!v[k].is_array() || v[k].size() != 3) invalid(p, "expected a triangle [a, b, c]");
+    out.push_back({index(v[k][0], pointer_index(p, 0)), index(v[k][1], pointer_index(p, 1)), index(v[k][2], pointer_index(p, 2))});
+  }
+  return out;
+}
+
+Mesh read_mesh(const json& v, const std::string& pointer, const Limits& limits) {
+  check_keys(v, pointer, {"type", "positions", "indices", "colors", "color", "normals", "shading", "wireframe", "cull", "transform"});
+  Mesh mesh;
+  auto pos = v.find("positions");
+  if (pos == v.end()) invalid(pointer, "a mesh needs \"positions\"");
+  mesh.positions = read_vec3_list(*pos, pointer + "/positions");
+  auto idx = v.find("indices");
+  if (idx == v.end()) invalid(pointer, "a mesh needs \"indices\" (triangles as [a, b, c], 0-based)");
+  mesh.triangles = read_indices(*idx, pointer + "/indices", mesh.positions.size(), limits);
+  read_colors(v, pointer, mesh.positions.size(), kMeshGrey, mesh.colors);
+  if (auto it = v.find("normals"); it != v.end()) {
+    mesh.normals = read_vec3_list(*it, pointer + "/normals");
+    if (mesh.normals.size() != mesh.positions.size())
+      invalid(pointer + "/normals", "\"normals\" needs one normal per position (" + std::to_string(mesh.positions.size()) + ")");
+    mesh.normal_triangles = mesh.triangles;
+  }
+  read_mesh_options(v, pointer, mesh);
+  return mesh;
+}
+
+std::string located(const SceneError& e) {
+  return e.where().line ? std::string(e.what()) + " (line " + std::to_string(e.where().line) + ")" : e.what();
+}
+
+Mesh read_obj(const json& v, const std::string& pointer, const Limits& limits, const Uploads& uploads) {
+  check_keys(v, pointer, {"type", "data", "source", "mtl", "mtl_source", "color", "shading", "wireframe", "cull", "transform"});
+  auto text_of = [&](const char* inline_key, const char* source_key, bool required) -> std::string_view {
+    auto data = v.find(inline_key);
+    auto source = v.find(source_key);
+    if (data != v.end() && source != v.end())
+      invalid(pointer, std::string("give either \"") + inline_key + "\" or \"" + source_key + "\", not both");
+    if (data != v.end()) {
+      if (!data->is_string()) invalid(pointer + "/" + inline_key, std::string("expected text, got ") + type_name(*data));
+      return data->get_ref<const std::string&>();
+    }
+    if (source != v.end()) {
+      if (!source->is_string()) invalid(pointer + "/" + source_key, std::string("expected the name of an uploaded part, got ") + type_name(*source));
+      auto part = uploads.find(source->get_ref<const std::string&>());
+      if (part == uploads.end())
+        invalid(pointer + "/" + source_key, "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
+      return part->second;
+    }
+    if (required) invalid(pointer, "an obj needs \"data\" (OBJ text) or \"source\" (the name of an uploaded part)");
+    return {};
+  };
+  const std::string_view obj_text = text_of("data", "source", true);
+  std::string_view mtl_text = text_of("mtl", "mtl_source", false);
+  // An MTL uploaded as part "mtl" goes with a model taken from the uploads.
+  if (mtl_text.empty() && v.contains("source") && !v.contains("mtl_source"))
+    if (auto part = uploads.find("mtl"); part != uploads.end()) mtl_text = part->second;
+
+  Mesh mesh;
+  try {
+    mesh = parse_obj(obj_text, mtl_text, limits);
+  } catch (const SceneError& e) {
+    throw SceneError(e.kind(), located(e), ErrorLocation{pointer, 0, e.where().line});
+  }
+  if (auto it = v.find("color"); it != v.end()) {  // an explicit colour wins over the model's own
+    mesh.colors = {read_color(*it, pointer + "/color")};
+    mesh.face_colors.clear();
+  } else if (mesh.colors.empty()) {
+    mesh.colors = {kMeshGrey};
+  }
+  read_mesh_options(v, pointer, mesh);
+  return mesh;
+}
+
+// A triangle, line or polyline whose points are [x, y, z]: world space, through the camera, unlit.
+Mesh mesh_of_3d_primitive(PrimitiveKind kind, const std::vector<Vec3>& points, std::vector<Rgba8> colors, bool fill,
+                          bool closed) {
+  Mesh mesh;
+  mesh.positions = points;
+  mesh.colors = std::move(colors);
+  mesh.shading = Shading::unlit;
+  const auto n = static_cast<std::uint32_t>(points.size());
+  if (kind == PrimitiveKind::triangle && fill) {
+    mesh.triangles.push_back({0, 1, 2});
+  } else {
+    for (std::uint32_t i = 0; i + 1 < n; ++i) mesh.segments.push_back({i, i + 1});
+    if ((closed || kind == PrimitiveKind::triangle) && n >= 3) mesh.segments.push_back({n - 1, 0});
+  }
+  return mesh;
+}
+
+void read_primitive(const json& v, const std::string& pointer, Scene& scene, const Limits& limits, const Uploads& uploads) {
   if (!v.is_object()) invalid(pointer, std::string("expected a primitive object, got ") + type_name(v));
   auto type_it = v.find("type");
-  if (type_it == v.end()) invalid(pointer, "missing \"type\" (\"triangle\", \"line\" or \"polyline\")");
+  if (type_it == v.end()) invalid(pointer, "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\")");
   const std::string type_pointer = pointer + "/type";
   if (!type_it->is_string()) invalid(type_pointer, std::string("expected a string, got ") + type_name(*type_it));
   const std::string& type = type_it->get_ref<const std::string&>();
 
   Primitive p;
+  if (type == "mesh" || type == "obj") {
+    p.kind = PrimitiveKind::mesh;
+    p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
+    scene.meshes.push_back(type == "mesh" ? read_mesh(v, pointer, limits) : read_obj(v, pointer, limits, uploads));
+    scene.primitives.push_back(p);
+    return;
+  }
   if (type == "triangle") {
     p.kind = PrimitiveKind::triangle;
     check_keys(v, pointer, {"type", "points", "color", "colors", "fill"});
@@ -207,7 +442,7 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene) {
     p.kind = PrimitiveKind::polyline;
     check_keys(v, pointer, {"type", "points", "color", "colors", "closed"});
   } else {
-    invalid(type_pointer, "unknown primitive type \"" + type + "\"; expected \"triangle\", \"line\" or \"polyline\"");
+    invalid(type_pointer, "unknown primitive type \"" + type + "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\"");
   }
 
   auto points_it = v.find("points");
@@ -222,31 +457,92 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene) {
   if (p.kind == PrimitiveKind::polyline && n < 2)
     invalid(points_pointer, "a polyline has at least 2 points, got " + std::to_string(n));
   if (scene.points.size() + n > UINT32_MAX) fail(ErrorKind::limit, points_pointer, "too many points in the scene");
-
-  p.first_point = static_cast<std::uint32_t>(scene.points.size());
-  p.point_count = static_cast<std::uint32_t>(n);
-  for (std::size_t k = 0; k < n; ++k) scene.points.push_back(read_point((*points_it)[k], pointer_index(points_pointer, k)));
-
-  auto color_it = v.find("color");
-  auto colors_it = v.find("colors");
-  p.first_color = static_cast<std::uint32_t>(scene.colors.size());
-  if (color_it != v.end() && colors_it != v.end())
-    invalid(pointer, "give either \"color\" (flat) or \"colors\" (one per point), not both");
-  if (colors_it != v.end()) {
-    const std::string colors_pointer = pointer + "/colors";
-    if (!colors_it->is_array() || colors_it->size() != n)
-      invalid(colors_pointer, "\"colors\" needs one colour per point (" + std::to_string(n) + ")");
-    for (std::size_t k = 0; k < n; ++k) scene.colors.push_back(read_color((*colors_it)[k], pointer_index(colors_pointer, k)));
-    p.per_vertex_color = true;
-  } else if (color_it != v.end()) {
-    scene.colors.push_back(read_color(*color_it, pointer + "/color"));
-  } else {
-    scene.colors.push_back(Rgba8{255, 255, 255, 255});  // default: opaque white
-  }
-
   if (auto it = v.find("fill"); it != v.end()) p.fill = read_bool(*it, pointer + "/fill");
   if (auto it = v.find("closed"); it != v.end()) p.closed = read_bool(*it, pointer + "/closed");
+
+  // The first point decides: [x, y] is image space, [x, y, z] world space; all points must agree.
+  const json& first = (*points_it)[0];
+  const std::size_t dims = first.is_array() && first.size() == 3 ? 3 : 2;
+  if (dims == 3) {
+    std::vector<Vec3> pts;
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto q = read_point((*points_it)[k], pointer_index(points_pointer, k), 3);
+      pts.push_back({q[0], q[1], q[2]});
+    }
+    std::vector<Rgba8> colors;
+    read_colors(v, pointer, n, Rgba8{255, 255, 255, 255}, colors);
+    p.kind = PrimitiveKind::mesh;
+    p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
+    scene.meshes.push_back(mesh_of_3d_primitive(
+        type == "triangle" ? PrimitiveKind::triangle : type == "line" ? PrimitiveKind::line : PrimitiveKind::polyline, pts,
+        std::move(colors), p.fill, p.closed));
+    scene.primitives.push_back(p);
+    return;
+  }
+  p.first_point = static_cast<std::uint32_t>(scene.points.size());
+  p.point_count = static_cast<std::uint32_t>(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto q = read_point((*points_it)[k], pointer_index(points_pointer, k), 2);
+    scene.points.push_back({q[0], q[1]});
+  }
+  p.first_color = static_cast<std::uint32_t>(scene.colors.size());
+  p.per_vertex_color = read_colors(v, pointer, n, Rgba8{255, 255, 255, 255}, scene.colors);
   scene.primitives.push_back(p);
+}
+
+Camera read_camera(const json& v) {
+  const std::string pointer = "/camera";
+  if (!v.is_object()) invalid(pointer, std::string("expected a camera object, got ") + type_name(v));
+  check_keys(v, pointer, {"projection", "eye", "target", "up", "fov", "near", "far", "height"});
+  Camera c;
+  if (auto it = v.find("projection"); it != v.end()) {
+    if (!it->is_string() || (*it != "perspective" && *it != "orthographic"))
+      invalid(pointer + "/projection", "expected \"perspective\" or \"orthographic\", got " + it->dump());
+    c.projection = *it == "orthographic" ? Projection::orthographic : Projection::perspective;
+  }
+  if (auto it = v.find("eye"); it != v.end()) c.eye = read_vec3(*it, pointer + "/eye"), c.has_eye = true;
+  if (auto it = v.find("target"); it != v.end()) c.target = read_vec3(*it, pointer + "/target"), c.has_target = true;
+  if (auto it = v.find("up"); it != v.end()) {
+    c.up = read_vec3(*it, pointer + "/up");
+    if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0) invalid(pointer + "/up", "\"up\" must not be the zero vector");
+  }
+  if (auto it = v.find("fov"); it != v.end()) {
+    c.fov_deg = read_number(*it, pointer + "/fov");
+    if (!(c.fov_deg > 0 && c.fov_deg < 180)) invalid(pointer + "/fov", "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180; got " + it->dump());
+  }
+  if (auto it = v.find("near"); it != v.end()) {
+    c.near = read_number(*it, pointer + "/near"), c.has_near = true;
+    if (!(c.near > 0)) invalid(pointer + "/near", "\"near\" is a distance in front of the eye and must be > 0; got " + it->dump());
+  }
+  if (auto it = v.find("far"); it != v.end()) {
+    c.far = read_number(*it, pointer + "/far"), c.has_far = true;
+    if (!(c.far > 0)) invalid(pointer + "/far", "\"far\" must be > 0; got " + it->dump());
+  }
+  if (c.has_near && c.has_far && !(c.near < c.far)) invalid(pointer + "/far", "\"far\" must be greater than \"near\"");
+  if (auto it = v.find("height"); it != v.end()) {
+    c.height = read_number(*it, pointer + "/height"), c.has_height = true;
+    if (!(c.height > 0)) invalid(pointer + "/height", "\"height\" (orthographic view height) must be > 0");
+  }
+  if (c.has_eye && c.has_target && c.eye.x == c.target.x && c.eye.y == c.target.y && c.eye.z == c.target.z)
+    invalid(pointer + "/target", "\"eye\" and \"target\" are the same point: the camera has no view direction");
+  return c;
+}
+
+Light read_light(const json& v) {
+  const std::string pointer = "/light";
+  if (!v.is_object()) invalid(pointer, std::string("expected a light object, got ") + type_name(v));
+  check_keys(v, pointer, {"direction", "ambient"});
+  Light l;
+  if (auto it = v.find("direction"); it != v.end()) {
+    l.direction = read_vec3(*it, pointer + "/direction");
+    l.headlight = false;
+    if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0) invalid(pointer + "/direction", "the light direction must not be the zero vector");
+  }
+  if (auto it = v.find("ambient"); it != v.end()) {
+    l.ambient = read_number(*it, pointer + "/ambient");
+    if (!(l.ambient >= 0 && l.ambient <= 1)) invalid(pointer + "/ambient", "\"ambient\" is in 0..1; got " + it->dump());
+  }
+  return l;
 }
 
 // Byte offset (1-based) of the first bracket that opens level max_depth + 1, skipping strings.
@@ -319,10 +615,10 @@ json parse_document(std::string_view text, int max_depth) {
 
 }  // namespace
 
-Scene parse_scene(std::string_view json_text, const Limits& limits) {
+Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
   const json doc = parse_document(json_text, limits.max_json_depth);
   if (!doc.is_object()) invalid("", std::string("a scene is a JSON object, got ") + type_name(doc));
-  check_keys(doc, "", {"width", "height", "background", "primitives"});
+  check_keys(doc, "", {"width", "height", "background", "primitives", "camera", "light"});
 
   Scene scene;
   auto read_side = [&](const char* key, int max_side) {
@@ -349,8 +645,10 @@ Scene parse_scene(std::string_view json_text, const Limits& limits) {
     if (static_cast<std::int64_t>(it->size()) > limits.max_primitives)
       fail(ErrorKind::limit, "/primitives", std::to_string(it->size()) + " primitives exceed the limit of " + std::to_string(limits.max_primitives));
     scene.primitives.reserve(it->size());
-    for (std::size_t i = 0; i < it->size(); ++i) read_primitive((*it)[i], pointer_index("/primitives", i), scene);
+    for (std::size_t i = 0; i < it->size(); ++i) read_primitive((*it)[i], pointer_index("/primitives", i), scene, limits, uploads);
   }
+  if (auto it = doc.find("camera"); it != doc.end()) scene.camera = read_camera(*it);
+  if (auto it = doc.find("light"); it != doc.end()) scene.light = read_light(*it);
   return scene;
 }
 

@@ -14,8 +14,25 @@ namespace raster {
 /// How one primitive is drawn. A culled primitive is skipped before setup.
 struct PrimitivePlan {
   bool visible = true;  ///< false: its bounding box misses the image (culled before setup)
-  bool smooth = false;  ///< interpolate per-vertex colours; false: all its colours are equal (flat fill)
+  bool smooth = false;  ///< interpolate per-vertex values (colours; normals when lit); false: one colour per face
   bool blend = false;   ///< some colour has alpha < 255: source-over blending; false: plain stores
+  bool depth = false;   ///< 3D: depth-tested and depth-written; 2D overlays are not
+  bool lit = false;     ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
+  bool compute_normals = false;  ///< smooth lighting on a mesh without normals: computed, angle-weighted
+};
+
+/// The camera after fitting, and the light: everything geometry needs to go from world to clip space.
+/// Clip space: x, y in [-w, w] (y up), and reversed depth z in [0, w]: z / w is 1 at the near plane and
+/// falls toward 0 at the far plane, which spreads float precision evenly over distance.
+struct ViewPlan {
+  Projection projection = Projection::perspective;
+  Vec3 eye, target, up;    ///< world
+  double fov_deg = 45;     ///< vertical, degrees
+  double near = 1, far = 2;  ///< distances from the eye along the view direction
+  double height = 0;       ///< orthographic: world units visible vertically
+  Mat4 world_to_clip;      ///< projection * view
+  Vec3 to_light;           ///< unit world vector pointing toward the light
+  double ambient = 0.2;    ///< in [0, 1]
 };
 
 /// Bytes of pixel storage each buffer will take; checked against the limits before allocation.
@@ -45,6 +62,10 @@ struct RenderPlan {
   std::int64_t smooth_count = 0;  ///< visible primitives with interpolated colours
   std::int64_t blend_count = 0;   ///< visible primitives that blend
   std::int64_t culled_count = 0;  ///< primitives skipped before setup
+  std::int64_t lit_count = 0;     ///< meshes lit by the light
+  std::int64_t triangles_3d = 0;  ///< triangles of all visible meshes (before clipping)
+
+  ViewPlan view;  ///< meaningful only when depth_buffer is true (the scene has 3D content)
 
   std::int64_t work = 0;  ///< estimated pixel writes that bands split: each visible primitive's clipped box
   int threads = 1;        ///< 1: everything on the calling thread, no hand-off; >1: that many horizontal bands

@@ -1,0 +1,237 @@
+// Geometry for 3D content: model -> world -> clip space, lighting of flat faces, homogeneous clipping,
+// perspective divide, viewport and snapping. Produces the same fixed-point triangles the 2D path draws.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <tuple>
+
+#include "geometry.h"
+#include "vecmath.h"
+
+namespace raster::detail {
+namespace {
+
+/// The one vertex record of the 3D path: clip-space position plus every attribute, so clipping
+/// interpolates them all with one routine.
+struct ClipVertex {
+  double x = 0, y = 0, z = 0, w = 0;  ///< clip space (see ViewPlan)
+  float attr[7] = {};                 ///< r, g, b, a (0..255), normal x, y, z (world)
+};
+
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
+  ClipVertex r;
+  r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t, r.w = a.w + (b.w - a.w) * t;
+  for (int k = 0; k < 7; ++k) r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
+  return r;
+}
+
+/// Six planes, each a linear function of (x, y, z, w) that is >= 0 inside: near (z <= w), far (z >= 0) and
+/// the guard band |x|, |y| <= g w, which keeps snapped coordinates within +-(image + 8192 px).
+struct Planes {
+  double gx = 1, gy = 1;
+  double distance(const ClipVertex& v, int plane) const {
+    switch (plane) {
+      case 0: return v.w - v.z;
+      case 1: return v.z;
+      case 2: return gx * v.w + v.x;
+      case 3: return gx * v.w - v.x;
+      case 4: return gy * v.w + v.y;
+      default: return gy * v.w - v.y;
+    }
+  }
+};
+constexpr int kPlaneCount = 6;
+constexpr double kGuardPx = 8192;
+
+// The crossing of segment a-b with a plane, computed from the endpoints in a canonical order so that two
+// triangles sharing the edge get bit-identical vertices and the edge stays watertight.
+ClipVertex intersect(const ClipVertex& a, const ClipVertex& b, int plane, const Planes& planes) {
+  const bool swap = std::tie(b.x, b.y, b.z, b.w) < std::tie(a.x, a.y, a.z, a.w);
+  const ClipVertex& p = swap ? b : a;
+  const ClipVertex& q = swap ? a : b;
+  const double dp = planes.distance(p, plane), dq = planes.distance(q, plane);
+  return lerp(p, q, dp / (dp - dq));
+}
+
+// Sutherland-Hodgman in homogeneous space; returns the vertex count of the clipped polygon (0 if gone).
+int clip_polygon(std::array<ClipVertex, 9>& poly, int n, const Planes& planes) {
+  std::array<ClipVertex, 9> out;
+  for (int plane = 0; plane < kPlaneCount && n >= 3; ++plane) {
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      const ClipVertex& a = poly[i];
+      const ClipVertex& b = poly[(i + 1) % n];
+      const bool a_in = planes.distance(a, plane) >= 0, b_in = planes.distance(b, plane) >= 0;
+      if (a_in) out[m++] = a;
+      if (a_in != b_in) out[m++] = intersect(a, b, plane, planes);
+    }
+    poly = out;
+    n = m;
+  }
+  return n >= 3 ? n : 0;
+}
+
+// The same for a segment (parametric): false when nothing is left.
+bool clip_segment(ClipVertex& a, ClipVertex& b, const Planes& planes) {
+  for (int plane = 0; plane < kPlaneCount; ++plane) {
+    const double da = planes.distance(a, plane), db = planes.distance(b, plane);
+    if (da < 0 && db < 0) return false;
+    if (da < 0) a = intersect(a, b, plane, planes);
+    else if (db < 0) b = intersect(a, b, plane, planes);
+  }
+  return true;
+}
+
+struct Viewport {
+  double width, height;
+  // Perspective divide and viewport: NDC x right, y up -> pixels x right, y down.
+  void project(const ClipVertex& v, double& sx, double& sy, double& depth, double& inv_w) const {
+    inv_w = 1.0 / v.w;  // clipping guarantees w > 0
+    sx = (v.x * inv_w + 1) * 0.5 * width;
+    sy = (1 - v.y * inv_w) * 0.5 * height;
+    depth = std::clamp(v.z * inv_w, 0.0, 1.0);
+  }
+};
+
+Rgba8 to_rgba8(const float* c) {
+  auto b = [](float v) { return static_cast<std::uint8_t>(std::clamp(std::floor(v + 0.5f), 0.0f, 255.0f)); };
+  return {b(c[0]), b(c[1]), b(c[2]), b(c[3])};
+}
+
+// Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
+// the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
+std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& world) {
+  std::vector<Vec3> normals(world.size());
+  for (const auto& t : mesh.triangles) {
+    const Vec3 p[3] = {world[t[0]], world[t[1]], world[t[2]]};
+    const Vec3 face = normalize(cross(p[1] - p[0], p[2] - p[0]));
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 e1 = normalize(p[(k + 1) % 3] - p[k]), e2 = normalize(p[(k + 2) % 3] - p[k]);
+      const double angle = std::acos(std::clamp(dot(e1, e2), -1.0, 1.0));
+      normals[t[k]] = normals[t[k]] + face * angle;
+    }
+  }
+  for (Vec3& n : normals) n = normalize(n);
+  return normals;
+}
+
+}  // namespace
+
+void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& plan, DrawList& list) {
+  const ViewPlan& view = plan.view;
+  const Mat4 model_to_clip = view.world_to_clip * mesh.transform;
+  const Planes planes{1 + 2 * kGuardPx / plan.width, 1 + 2 * kGuardPx / plan.height};
+  const Viewport viewport{static_cast<double>(plan.width), static_cast<double>(plan.height)};
+
+  std::vector<Vec4> clip(mesh.positions.size());
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) clip[i] = transform(model_to_clip, mesh.positions[i]);
+  auto vertex_color = [&](std::uint32_t vertex) { return mesh.colors.size() == 1 ? mesh.colors[0] : mesh.colors[vertex]; };
+  auto color_at = [&](std::size_t triangle, std::uint32_t vertex) {
+    return mesh.face_colors.empty() ? vertex_color(vertex) : mesh.face_colors[triangle];
+  };
+  auto clip_vertex = [&](std::uint32_t i, Rgba8 c) {
+    ClipVertex v{clip[i].x, clip[i].y, clip[i].z, clip[i].w, {}};
+    v.attr[0] = c.r, v.attr[1] = c.g, v.attr[2] = c.b, v.attr[3] = c.a;
+    return v;
+  };
+
+  if (!mesh.wireframe && !mesh.triangles.empty()) {
+    const bool light_per_pixel = mode.lit && mesh.shading == Shading::smooth;
+    std::vector<Vec3> world(mesh.positions.size());
+    for (std::size_t i = 0; i < world.size(); ++i) world[i] = transform_point(mesh.transform, mesh.positions[i]);
+    std::vector<Vec3> normals;  // world space, per position (computed) or per OBJ normal index (given)
+    const Mat4 to_world_normal = normal_matrix(mesh.transform);
+    if (light_per_pixel) {
+      if (mode.compute_normals) normals = vertex_normals(mesh, world);
+      else
+        for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
+    }
+    const Vec3 to_light{list.to_light[0], list.to_light[1], list.to_light[2]};
+    const Vec3 forward = normalize(view.target - view.eye);
+
+    DrawOp op;
+    op.kind = DrawOp::Kind::depth_triangles;
+    op.mode = mode;
+    op.light_per_pixel = light_per_pixel;
+    op.first = static_cast<std::uint32_t>(list.depth_triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
+      // front when the counter-clockwise normal points toward the eye.
+      const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
+      const Vec3 toward_eye = view.projection == Projection::perspective ? view.eye - world[tri[0]] : forward * -1.0;
+      const bool back = dot(face, toward_eye) < 0;
+      if (back && mesh.cull == Cull::back) continue;
+
+      std::array<ClipVertex, 9> poly;
+      float shade = 1;
+      if (mode.lit && !light_per_pixel) {  // flat: one Lambert term per face, lit from the side seen
+        const Vec3 n = normalize(back ? face * -1.0 : face);
+        shade = static_cast<float>(view.ambient + (1 - view.ambient) * std::max(0.0, dot(n, to_light)));
+      }
+      for (int k = 0; k < 3; ++k) {
+        poly[k] = clip_vertex(tri[k], color_at(t, tri[k]));
+        for (int c = 0; c < 3; ++c) poly[k].attr[c] *= shade;
+        if (light_per_pixel) {
+          const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
+          poly[k].attr[4] = static_cast<float>(n.x), poly[k].attr[5] = static_cast<float>(n.y), poly[k].attr[6] = static_cast<float>(n.z);
+        }
+      }
+      const int n = clip_polygon(poly, 3, planes);
+      DepthVertex dv[9];
+      for (int k = 0; k < n; ++k) {
+        double sx, sy, depth, inv_w;
+        viewport.project(poly[k], sx, sy, depth, inv_w);
+        dv[k].x = static_cast<std::int32_t>(snap(sx));
+        dv[k].y = static_cast<std::int32_t>(snap(sy));
+        dv[k].depth = static_cast<float>(depth);
+        dv[k].inv_w = static_cast<float>(inv_w);
+        std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
+        std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
+      }
+      for (int k = 1; k + 1 < n; ++k) list.depth_triangles.push_back({{dv[0], dv[k], dv[k + 1]}, back});
+    }
+    op.count = static_cast<std::uint32_t>(list.depth_triangles.size()) - op.first;
+    if (op.count > 0) list.ops.push_back(op);
+  }
+
+  // Lines: the mesh's own segments, and for wireframes every triangle edge once.
+  std::vector<std::array<std::uint32_t, 2>> segments = mesh.segments;
+  std::vector<std::array<Rgba8, 2>> segment_colors;
+  for (const auto& s : mesh.segments) segment_colors.push_back({vertex_color(s[0]), vertex_color(s[1])});
+  if (mesh.wireframe) {
+    std::vector<std::tuple<std::uint32_t, std::uint32_t, std::size_t>> edges;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+        edges.emplace_back(std::min(a, b), std::max(a, b), t);
+      }
+    std::sort(edges.begin(), edges.end());
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const auto [a, b, t] = edges[i];
+      if (i > 0 && std::get<0>(edges[i - 1]) == a && std::get<1>(edges[i - 1]) == b) continue;
+      segments.push_back({a, b});
+      segment_colors.push_back({color_at(t, a), color_at(t, b)});
+    }
+  }
+  if (segments.empty()) return;
+  DrawOp op;
+  op.kind = DrawOp::Kind::lines;
+  op.mode = mode;
+  op.mode.smooth = true;  // endpoint colours may differ after per-face colouring
+  op.first = static_cast<std::uint32_t>(list.lines.size());
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    ClipVertex a = clip_vertex(segments[s][0], segment_colors[s][0]), b = clip_vertex(segments[s][1], segment_colors[s][1]);
+    if (!clip_segment(a, b, planes)) continue;
+    double ax, ay, ad, aw, bx, by, bd, bw;
+    viewport.project(a, ax, ay, ad, aw);
+    viewport.project(b, bx, by, bd, bw);
+    ScreenLine line{std::floor(ax), std::floor(ay), std::floor(bx), std::floor(by), to_rgba8(a.attr), to_rgba8(b.attr), true, true};
+    line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
+    list.lines.push_back(line);
+  }
+  op.count = static_cast<std::uint32_t>(list.lines.size()) - op.first;
+  if (op.count > 0) list.ops.push_back(op);
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,23 @@
+// What a render request means: a scene JSON, or a bare OBJ model with query parameters, plus uploads.
+// Shared by the HTTP routes and the CLI so both accept exactly the same inputs.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "raster/scene.h"
+
+namespace rasterd {
+
+/// Query parameters (HTTP) or --key=value options (CLI) that shape the default scene of a bare model:
+/// width, height, background, projection, fov, eye, target, up (vectors as "x,y,z").
+using Params = std::map<std::string, std::string, std::less<>>;
+
+/// `body` starting with '{' (after whitespace) is a scene; anything else is an OBJ model drawn with the
+/// default scene (512x512, camera framing the model) adjusted by `params`. A body that looks like an OBJ
+/// whose line breaks were stripped (curl -d) is refused with a hint. Throws raster::SceneError.
+raster::Scene scene_from_request(std::string_view body, const raster::Uploads& uploads, const Params& params,
+                                 const raster::Limits& limits);
+
+}  // namespace rasterd
