@@ -27,7 +27,7 @@ test-asan:
 # Each libFuzzer target for FUZZ_SECONDS (default 600), seeded from examples/ and fuzz/corpus/.
 # Findings land in fuzz-out/; each one becomes a regression test.
 FUZZ_SECONDS ?= 600
-FUZZ_TARGETS ?= scene_fuzzer
+FUZZ_TARGETS ?= scene_fuzzer obj_fuzzer
 fuzz:
 	@scripts/install-deps fuzz
 	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRASTERD_BUILD_FUZZ=ON \

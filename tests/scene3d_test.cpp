@@ -426,3 +426,25 @@ TEST(Obj, SourceNamesAnUploadedPart) {
 }
 
 }  // namespace
+
+namespace {
+
+// w = 0 (a vertex exactly at the eye), w < 0 (behind it) and coordinates a user matrix pushes past the
+// double range: clipped or dropped, never divided by zero, never a NaN cast to an integer (the sanitizer
+// build checks float-cast-overflow).
+TEST(Scene3D, DegenerateAndOverflowingGeometryIsClippedOrDropped) {
+  const json at_eye = {{"type", "triangle"}, {"points", {{0, 0, 0}, {1, -1, -3}, {-1, -1, -3}}}, {"color", "#ffffff"}};
+  const json behind = {{"type", "triangle"}, {"points", {{0, 1, 5}, {1, -1, -3}, {-1, -1, -3}}}, {"color", "#ffffff"}};
+  // With a vertex at the eye, the eye lies in the triangle's plane: it is seen edge-on and covers nothing.
+  EXPECT_EQ(test::count_not(render_json({{"width", 32}, {"height", 32}, {"camera", kPinhole}, {"primitives", {at_eye}}}), kBlack), 0);
+  const auto img_behind = render_json({{"width", 32}, {"height", 32}, {"camera", kPinhole}, {"primitives", {behind}}});
+  EXPECT_GT(test::count_not(img_behind, kBlack), 50);
+  EXPECT_EQ(test::pixel(img_behind, 16, 0), kBlack) << "nothing from behind the eye wraps around to the top";
+  const json overflow = {{"type", "mesh"}, {"positions", {{-1e30, 0, 0}, {1e30, 0, 0}, {0, 1e30, 0}, {0, 0, 1}}},
+                         {"indices", {{0, 1, 2}, {0, 1, 3}}}, {"transform", {{"matrix", {1e300, 0, 0, 0, 0, 1e300, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}}}};
+  const json fine = {{"type", "triangle"}, {"points", {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}, {"color", "#ff0000"}};
+  const auto img = render_json({{"width", 32}, {"height", 32}, {"camera", {{"eye", {0, 0, 3}}, {"target", {0, 0, 0}}}}, {"primitives", {overflow, fine}}});
+  EXPECT_EQ(test::pixel(img, 16, 16), test::kRed) << "the finite triangle still renders";
+}
+
+}  // namespace

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "geometry.h"
+#include "shade.h"
 #include "vecmath.h"
 
 namespace raster::detail {
@@ -93,10 +94,7 @@ struct Viewport {
   }
 };
 
-Rgba8 to_rgba8(const float* c) {
-  auto b = [](float v) { return static_cast<std::uint8_t>(std::clamp(std::floor(v + 0.5f), 0.0f, 255.0f)); };
-  return {b(c[0]), b(c[1]), b(c[2]), b(c[3])};
-}
+Rgba8 to_rgba8(const float* c) { return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])}; }
 
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
 // the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
@@ -124,7 +122,11 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   const Viewport viewport{static_cast<double>(plan.width), static_cast<double>(plan.height)};
 
   std::vector<Vec4> clip(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) clip[i] = transform(model_to_clip, mesh.positions[i]);
+  std::vector<bool> finite(mesh.positions.size());
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    clip[i] = transform(model_to_clip, mesh.positions[i]);
+    finite[i] = std::isfinite(clip[i].x) && std::isfinite(clip[i].y) && std::isfinite(clip[i].z) && std::isfinite(clip[i].w);
+  }
   auto vertex_color = [&](std::uint32_t vertex) { return mesh.colors.size() == 1 ? mesh.colors[0] : mesh.colors[vertex]; };
   auto color_at = [&](std::size_t triangle, std::uint32_t vertex) {
     return mesh.face_colors.empty() ? vertex_color(vertex) : mesh.face_colors[triangle];
@@ -163,6 +165,9 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
       const bool back = dot(face, toward_eye) < 0;
       if (back && mesh.cull == Cull::back) continue;
 
+      // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
+      // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
+      if (!finite[tri[0]] || !finite[tri[1]] || !finite[tri[2]]) continue;
       std::array<ClipVertex, 9> poly;
       float shade = 1;
       if (mode.lit && !light_per_pixel) {  // flat: one Lambert term per face, lit from the side seen
@@ -221,6 +226,7 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   op.mode.smooth = true;  // endpoint colours may differ after per-face colouring
   op.first = static_cast<std::uint32_t>(list.lines.size());
   for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (!finite[segments[s][0]] || !finite[segments[s][1]]) continue;
     ClipVertex a = clip_vertex(segments[s][0], segment_colors[s][0]), b = clip_vertex(segments[s][1], segment_colors[s][1]);
     if (!clip_segment(a, b, planes)) continue;
     double ax, ay, ad, aw, bx, by, bd, bw;

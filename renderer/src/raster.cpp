@@ -139,10 +139,7 @@ void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawL
   const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x}, ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
   const DepthVertex* v = tri.v;
   const PrimitivePlan mode = op.mode;
-  const Rgba8 flat{static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[0]), 0l, 255l)),
-                   static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[1]), 0l, 255l)),
-                   static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[2]), 0l, 255l)),
-                   static_cast<std::uint8_t>(std::clamp(std::lround(v[0].color[3]), 0l, 255l))};
+  const Rgba8 flat{to_byte(v[0].color[0]), to_byte(v[0].color[1]), to_byte(v[0].color[2]), to_byte(v[0].color[3])};
   const double flip = tri.back_facing ? -1.0 : 1.0;  // two-sided lighting
   for_each_span(xs, ys, clip, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
                                   const std::int64_t (&step)[3], std::int64_t area) {
@@ -177,8 +174,7 @@ void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawL
         const double shade = list.ambient + (1 - list.ambient) * std::max(0.0, lambert);
         for (int c = 0; c < 3; ++c) rgba[c] *= shade;
       }
-      auto byte = [](double x) { return static_cast<std::uint8_t>(std::clamp(std::floor(x + 0.5), 0.0, 255.0)); };
-      const Rgba8 c{byte(rgba[0]), byte(rgba[1]), byte(rgba[2]), byte(rgba[3])};
+      const Rgba8 c{to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]), to_byte(rgba[3])};
       if (mode.blend) blend<C>(p, c);
       else store<C>(p, c);
     }
@@ -246,7 +242,7 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
         auto channel = [&](std::uint8_t Rgba8::*m) {
           const double v = w[0] * (col[0].*m) + w[1] * (col[1].*m) + w[2] * (col[2].*m);
           const double lo_c = std::min({col[0].*m, col[1].*m, col[2].*m}), hi_c = std::max({col[0].*m, col[1].*m, col[2].*m});
-          return static_cast<std::uint8_t>(std::clamp(std::floor(v + 0.5), lo_c, hi_c));
+          return to_byte(std::clamp(v, lo_c, hi_c));
         };
         const Rgba8 c{channel(&Rgba8::r), channel(&Rgba8::g), channel(&Rgba8::b), channel(&Rgba8::a)};
         w[0] += dw[0], w[1] += dw[1], w[2] += dw[2];

@@ -8,6 +8,13 @@
 
 namespace raster::detail {
 
+/// A channel value (0..255 scale) rounded to a byte; out-of-range values clamp and NaN becomes 0, so a
+/// float never reaches an integer conversion it cannot survive.
+inline std::uint8_t to_byte(double x) {
+  if (!(x > 0)) return 0;  // also NaN
+  return x >= 254.5 ? 255 : static_cast<std::uint8_t>(x + 0.5);
+}
+
 /// round(x / 255) for 0 <= x <= 255 * 255 * 2, exact.
 inline std::uint32_t div255(std::uint32_t x) { return (x + 127) / 255; }
 

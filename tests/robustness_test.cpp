@@ -1,0 +1,86 @@
+// Extreme sizes and inputs at the edges of the limits: rendered within the limits or refused up front,
+// never an allocation the limits did not allow. (Coordinates, JSON and 3D extremes live beside the
+// features they stress: triangle_test, line_test, scene_parse_test, scene3d_test.)
+#include <gtest/gtest.h>
+
+#include "support.h"
+
+namespace {
+
+raster::ErrorKind kind_of(const std::string& scene) {
+  try {
+    raster::plan(raster::parse_scene(scene));
+  } catch (const raster::SceneError& e) {
+    return e.kind();
+  }
+  ADD_FAILURE() << "accepted: " << scene;
+  return raster::ErrorKind::syntax;
+}
+
+TEST(Robustness, ImageSizes) {
+  EXPECT_EQ(kind_of(R"({"width": 0, "height": 5})"), raster::ErrorKind::invalid);
+  EXPECT_EQ(kind_of(R"({"width": -3, "height": 5})"), raster::ErrorKind::invalid);
+  EXPECT_EQ(kind_of(R"({"width": 1, "height": 100000})"), raster::ErrorKind::limit);
+  EXPECT_EQ(kind_of(R"({"width": 8193, "height": 1})"), raster::ErrorKind::limit);
+  EXPECT_EQ(kind_of(R"({"width": 8000, "height": 8000})"), raster::ErrorKind::limit) << "64 MP > 40 MP";
+  const auto one = test::render(raster::parse_scene(R"({"width": 1, "height": 1, "background": "#123456",
+      "primitives": [{"type": "triangle", "points": [[0,0],[2,0],[0,2]], "color": "#fedcba"}]})"));
+  EXPECT_EQ(test::pixel(one, 0, 0), (raster::Rgba8{0xfe, 0xdc, 0xba, 255}));
+  const auto strip = test::render(raster::parse_scene(R"({"width": 8192, "height": 1,
+      "primitives": [{"type": "line", "points": [[-5, 0.5], [9000, 0.5]], "color": "#fff"}]})"));
+  EXPECT_EQ(test::count_not(strip, test::kBlack), 8192);
+}
+
+// The largest square the default limits allow whole (6324^2 < 40 MP) fully covered by one triangle pair:
+// rendered, with exactly the planned bytes (1 grey channel).
+TEST(Robustness, LargestImageRendersWithPlannedMemory) {
+  const auto scene = raster::parse_scene(R"({"width": 6324, "height": 6324, "primitives": [
+      {"type": "triangle", "points": [[0,0],[6324,0],[0,6324]], "color": "#808080"},
+      {"type": "triangle", "points": [[6324,0],[6324,6324],[0,6324]], "color": "#808080"}]})");
+  const auto plan = raster::plan(scene);
+  EXPECT_EQ(plan.memory.total(), 6324ll * 6324);
+  const auto img = raster::render(scene, plan);
+  EXPECT_EQ(static_cast<std::int64_t>(img.pixels.size()), plan.memory.color_bytes);
+  EXPECT_EQ(test::pixel(img, 0, 0).r, 128);
+  EXPECT_EQ(test::pixel(img, 6323, 6323).r, 128);
+}
+
+TEST(Robustness, ManyPrimitivesAreBoundedByTheLimit) {
+  raster::Limits limits;
+  limits.max_primitives = 1000;
+  std::string scene = R"({"width": 16, "height": 16, "primitives": [)";
+  for (int i = 0; i < 1001; ++i) scene += std::string(i ? "," : "") + R"({"type":"line","points":[[0,0],[1,1]]})";
+  scene += "]}";
+  try {
+    raster::parse_scene(scene, limits);
+    FAIL();
+  } catch (const raster::SceneError& e) {
+    EXPECT_EQ(e.kind(), raster::ErrorKind::limit);
+    EXPECT_EQ(e.where().pointer, "/primitives");
+  }
+  // Mesh triangles count against the same limit, before any index is read.
+  limits.max_primitives = 2;
+  try {
+    raster::parse_scene(R"({"width": 8, "height": 8, "primitives": [{"type": "mesh", "positions": [0,0,0, 1,0,0, 0,1,0],
+                           "indices": [0,1,2, 0,1,2, 0,1,2]}]})", limits);
+    FAIL();
+  } catch (const raster::SceneError& e) {
+    EXPECT_EQ(e.kind(), raster::ErrorKind::limit);
+    EXPECT_EQ(e.where().pointer, "/primitives/0/indices");
+  }
+}
+
+TEST(Robustness, CoordinatesBeyondTheFloatRangeAreRefused) {
+  const auto e = [] {
+    try {
+      raster::parse_scene(R"({"width": 8, "height": 8, "primitives": [{"type": "line", "points": [[0,0],[1e39, 1]]}]})");
+    } catch (const raster::SceneError& e) {
+      return e;
+    }
+    return raster::SceneError(raster::ErrorKind::syntax, "accepted");
+  }();
+  EXPECT_EQ(e.kind(), raster::ErrorKind::invalid);
+  EXPECT_EQ(e.where().pointer, "/primitives/0/points/1/0");
+}
+
+}  // namespace
