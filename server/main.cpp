@@ -2,6 +2,8 @@
 #include <signal.h>
 
 #include <cerrno>
+#include <condition_variable>
+#include <mutex>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -27,8 +29,8 @@ constexpr const char* kUsage = R"(usage:
   rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080)
 
 render:  writes the PNG to OUT.png (default: stdout); --explain prints the render plan as JSON instead.
-serve:   POST /render with a scene JSON body -> image/png; GET /healthz.
-         Limits: body 32 MiB, width/height 8192, 40 megapixels, 2,000,000 primitives, JSON depth 64.
+serve:   POST /render (scene JSON, OBJ, or multipart) -> image/png; GET /healthz; GET /metrics.
+         `rasterd serve --help` lists the limits and their flags.
 )";
 
 int usage_error(const std::string& message) {
@@ -116,13 +118,14 @@ int run_render(const std::vector<std::string>& args) {
 int run_serve(const std::vector<std::string>& args) {
   std::string host = "0.0.0.0";
   int port = 8080;
-  if (const char* env = std::getenv("PORT")) port = std::atoi(env);
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--port" && i + 1 < args.size()) port = std::atoi(args[++i].c_str());
-    else if (args[i] == "--host" && i + 1 < args.size()) host = args[++i];
-    else return usage_error("unexpected argument '" + args[i] + "'");
+  rasterd::ServiceConfig config;
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  if (const std::string error = rasterd::parse_service_flags(static_cast<int>(argv.size()), argv.data(), config, host, port);
+      !error.empty()) {
+    std::cerr << "rasterd: " << error << "\n\n" << rasterd::service_help();
+    return 2;
   }
-  if (port <= 0 || port > 65535) return usage_error("port must be 1..65535");
 
   // Signals are taken by a sigwait thread, not a handler: stopping the server is not async-signal-safe.
   sigset_t signals;
@@ -132,23 +135,43 @@ int run_serve(const std::vector<std::string>& args) {
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every thread started below
 
   httplib::Server server;
-  rasterd::register_routes(server, rasterd::ServiceConfig{});
+  rasterd::Service service(config);
+  service.install(server);
   if (!server.bind_to_port(host, port)) {
     std::cerr << "rasterd: cannot listen on " << host << ":" << port << ": " << std::strerror(errno) << "\n";
     return 1;
   }
+  service.widen_backlog();
+
+  std::mutex mutex;
+  std::condition_variable done_cv;
+  bool done = false;
   std::thread signal_thread([&] {
     int sig = 0;
     sigwait(&signals, &sig);
-    std::cerr << "rasterd: signal " << sig << ", stopping\n";
-    server.stop();
+    std::unique_lock lock(mutex);
+    if (done) return;  // listen ended by itself; this was the wake-up below
+    std::cerr << "rasterd: signal " << sig << ": no new connections; finishing accepted requests (grace "
+              << service.config().shutdown_grace.count() << " ms)\n";
+    lock.unlock();
+    server.stop();  // closes the listening socket; listen_after_bind returns once accepted work is done
+    lock.lock();
+    if (!done_cv.wait_for(lock, service.config().shutdown_grace, [&] { return done; })) {
+      std::cerr << "rasterd: grace period over: stopping the renders still running\n";
+      service.cancel_renders();
+    }
   });
   std::cerr << "rasterd: listening on " << host << ":" << port << "\n"
             << "try:  curl --data-binary @examples/gradient.json localhost:" << port << "/render > out.png\n";
   const bool ok = server.listen_after_bind();
-  // If listen ended for another reason, wake the signal thread so it can be joined.
-  pthread_kill(signal_thread.native_handle(), SIGTERM);
+  {
+    std::lock_guard lock(mutex);
+    done = true;
+  }
+  done_cv.notify_all();
+  pthread_kill(signal_thread.native_handle(), SIGTERM);  // wakes sigwait if no signal came
   signal_thread.join();
+  std::cerr << "rasterd: stopped\n";
   return ok ? 0 : 1;
 }
 
@@ -165,7 +188,7 @@ int main(int argc, char** argv) {
   if (command == "render") return run_render(args);
   if (command == "serve") {
     if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-      std::cout << kUsage;
+      std::cout << rasterd::service_help();
       return 0;
     }
     return run_serve(args);

@@ -1,17 +1,135 @@
 #include "service.h"
 
-#include <atomic>
-#include <chrono>
+#include <sys/socket.h>
+
+#include <algorithm>
+#include <array>
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
-#include <string>
+#include <map>
+#include <mutex>
+#include <thread>
 
 #include "problem.h"
-#include "request.h"
 #include "raster/raster.h"
+#include "request.h"
 
 namespace rasterd {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+// Renders at once (`workers`) and renders waiting (`max_queue`); beyond both, a request is refused at
+// once instead of piling up. Health and metrics never pass through here.
+class Admission {
+ public:
+  Admission(int workers, int max_queue) : workers_(workers), max_queue_(max_queue) {}
+
+  bool enter() {
+    std::unique_lock lock(mutex_);
+    if (running_ < workers_) return ++running_, true;
+    if (waiting_ >= max_queue_) return false;
+    ++waiting_;
+    freed_.wait(lock, [&] { return running_ < workers_; });
+    --waiting_;
+    ++running_;
+    return true;
+  }
+  void leave() {
+    {
+      std::lock_guard lock(mutex_);
+      --running_;
+    }
+    freed_.notify_one();
+  }
+  std::pair<int, int> load() {
+    std::lock_guard lock(mutex_);
+    return {running_, waiting_};
+  }
+
+ private:
+  const int workers_, max_queue_;
+  std::mutex mutex_;
+  std::condition_variable freed_;
+  int running_ = 0, waiting_ = 0;
+};
+
+// Prometheus counters; one mutex, touched once or twice per request.
+class Metrics {
+ public:
+  static constexpr std::array<double, 10> kBucketsMs{1, 2.5, 5, 10, 25, 50, 100, 250, 1000, 10000};
+
+  void request(const std::string& route, int status, std::size_t in, std::size_t out) {
+    std::lock_guard lock(mutex_);
+    ++requests_[{route, status}];
+    bytes_in_ += in, bytes_out_ += out;
+  }
+  void render(double ms) {
+    std::lock_guard lock(mutex_);
+    for (std::size_t i = 0; i < kBucketsMs.size(); ++i) buckets_[i] += ms <= kBucketsMs[i];
+    ++render_count_, render_sum_ms_ += ms;
+  }
+  void rejected(const std::string& reason) {
+    std::lock_guard lock(mutex_);
+    ++rejected_[reason];
+  }
+  std::string text(int in_flight, int queued) {
+    std::lock_guard lock(mutex_);
+    std::string t;
+    auto line = [&](const std::string& s) { t += s + "\n"; };
+    line("# HELP rasterd_requests_total HTTP requests by route and status.");
+    line("# TYPE rasterd_requests_total counter");
+    for (const auto& [key, n] : requests_)
+      line("rasterd_requests_total{route=\"" + key.first + "\",status=\"" + std::to_string(key.second) + "\"} " + std::to_string(n));
+    line("# HELP rasterd_render_duration_seconds Parse + render + encode time of admitted renders.");
+    line("# TYPE rasterd_render_duration_seconds histogram");
+    for (std::size_t i = 0; i < kBucketsMs.size(); ++i)
+      line("rasterd_render_duration_seconds_bucket{le=\"" + format(kBucketsMs[i] / 1000) + "\"} " + std::to_string(buckets_[i]));
+    line("rasterd_render_duration_seconds_bucket{le=\"+Inf\"} " + std::to_string(render_count_));
+    line("rasterd_render_duration_seconds_sum " + format(render_sum_ms_ / 1000));
+    line("rasterd_render_duration_seconds_count " + std::to_string(render_count_));
+    line("# HELP rasterd_renders_in_flight Renders running now.");
+    line("# TYPE rasterd_renders_in_flight gauge");
+    line("rasterd_renders_in_flight " + std::to_string(in_flight));
+    line("# HELP rasterd_render_queue_length Renders waiting for a worker.");
+    line("# TYPE rasterd_render_queue_length gauge");
+    line("rasterd_render_queue_length " + std::to_string(queued));
+    line("# HELP rasterd_rejected_total Requests refused before rendering, by reason.");
+    line("# TYPE rasterd_rejected_total counter");
+    for (const auto& [reason, n] : rejected_) line("rasterd_rejected_total{reason=\"" + reason + "\"} " + std::to_string(n));
+    line("# HELP rasterd_bytes_total Request and response body bytes.");
+    line("# TYPE rasterd_bytes_total counter");
+    line("rasterd_bytes_total{direction=\"in\"} " + std::to_string(bytes_in_));
+    line("rasterd_bytes_total{direction=\"out\"} " + std::to_string(bytes_out_));
+    return t;
+  }
+
+ private:
+  static std::string format(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+  }
+  std::mutex mutex_;
+  std::map<std::pair<std::string, int>, std::uint64_t> requests_;
+  std::array<std::uint64_t, kBucketsMs.size()> buckets_{};
+  std::uint64_t render_count_ = 0;
+  double render_sum_ms_ = 0;
+  std::map<std::string, std::uint64_t> rejected_;
+  std::uint64_t bytes_in_ = 0, bytes_out_ = 0;
+};
+
+// cpp-httplib runs a request's pre-routing handler, route handler and logger on one thread, one request
+// at a time, and offers no per-request user data: this thread-local is that request's context.
+struct RequestContext {
+  Clock::time_point start;
+  std::size_t bytes_in = 0;
+};
+thread_local RequestContext t_request;
 
 std::string next_request_id() {
   static std::atomic<std::uint64_t> counter{0};  // process-wide by nature: ids must be unique
@@ -20,95 +138,174 @@ std::string next_request_id() {
   return buf;
 }
 
-// Refuses compressed bodies and bodies declared over the cap, before reading anything.
-bool admit_body(const httplib::Request& req, httplib::Response& res, std::size_t cap) {
-  if (req.has_header("Content-Encoding") && req.get_header_value("Content-Encoding") != "identity") {
-    write_problem(res, problem(415, "unsupported-encoding", "Compressed request bodies are not accepted",
-                               "send the body uncompressed (got Content-Encoding: " + req.get_header_value("Content-Encoding") + ")"));
-    return false;
-  }
-  if (req.get_header_value<std::uint64_t>("Content-Length") > cap) {
-    write_problem(res, problem(413, "body-too-large", "The request body is too large", "the limit is " + std::to_string(cap) + " bytes"));
-    return false;
-  }
-  return true;
-}
-
-// Reads the body through the ContentReader: cpp-httplib 0.11 caps a buffered form-urlencoded body (what
-// `curl -d` sends) at 8 KiB with a 413, but a ContentReader route receives any body. The cap is ours,
-// counted while streaming (chunked bodies have no Content-Length). Multipart parts go to `uploads`,
-// except a part named "scene", which becomes the body. Returns false with the problem written.
-bool read_body(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader, std::size_t cap,
-               std::string& body, raster::Uploads& uploads) {
-  if (!admit_body(req, res, cap)) return false;
-  std::size_t total = 0;
-  bool over = false;
-  auto take = [&](std::string& into, const char* data, std::size_t n) {
-    if ((total += n) > cap) {
-      over = true;
-      return false;
-    }
-    into.append(data, n);
-    return true;
-  };
-  if (req.is_multipart_form_data()) {
-    std::string* current = nullptr;
-    reader(
-        [&](const httplib::MultipartFormData& part) {
-          current = part.name == "scene" ? &body : &uploads[part.name];
-          return true;
-        },
-        [&](const char* data, std::size_t n) { return take(*current, data, n); });
-  } else {
-    if (const auto declared = req.get_header_value<std::uint64_t>("Content-Length")) body.reserve(declared);
-    reader([&](const char* data, std::size_t n) { return take(body, data, n); });
-  }
-  if (over) {
-    write_problem(res, problem(413, "body-too-large", "The request body is too large", "the limit is " + std::to_string(cap) + " bytes"));
-    return false;
-  }
-  return true;
-}
-
-void handle_render(const ServiceConfig& config, const httplib::Request& req, httplib::Response& res,
-                   const httplib::ContentReader& reader) {
-  std::string body;
-  raster::Uploads uploads;
-  if (!read_body(req, res, reader, config.max_body_bytes, body, uploads)) return;
-  try {
-    const Params params(req.params.begin(), req.params.end());
-    const raster::Scene scene = scene_from_request(body, uploads, params, config.limits);
-    const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
-    if (req.get_param_value("explain") == "1") {
-      res.set_content(raster::explain_json(plan), "application/json");
-      return;
-    }
-    const raster::Image image = raster::render(scene, plan);
-    const std::vector<std::uint8_t> png = raster::encode_png(image, plan.png);
-    res.set_header("X-Render-Plan", raster::explain_line(plan));
-    res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
-  } catch (const raster::SceneError& e) {
-    write_problem(res, problem_from(e));
-  }
+std::string route_label(const std::string& path) {
+  return path == "/render" || path == "/healthz" || path == "/metrics" ? path : "other";
 }
 
 }  // namespace
 
-void register_routes(httplib::Server& server, const ServiceConfig& config) {
+struct Service::State {
+  ServiceConfig config;
+  Admission admission;
+  Metrics metrics;
+  std::atomic<bool> cancel{false};
+  int listen_socket = -1;  // remembered from the socket-options hook, for widen_backlog()
+
+  explicit State(ServiceConfig c)
+      : config(c), admission(c.workers, c.max_queue) {}
+
+  bool refuse(httplib::Response& res, const Problem& p, const std::string& reason) {
+    metrics.rejected(reason);
+    write_problem(res, p);
+    return false;
+  }
+
+  // Refuses compressed bodies and bodies declared over the cap before reading anything; then reads the
+  // body through the ContentReader. cpp-httplib 0.11 caps a buffered form-urlencoded body (what
+  // `curl -d` sends) at 8 KiB with a 413, but a ContentReader route receives any body. The cap is counted
+  // while streaming (chunked bodies declare no length) and the deadline holds whatever the pace of the
+  // bytes. Multipart parts go to `uploads`, except "scene", which becomes the body.
+  bool read_body(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
+                 std::string& body, raster::Uploads& uploads) {
+    const std::size_t cap = config.max_body_bytes;
+    if (req.has_header("Content-Encoding") && req.get_header_value("Content-Encoding") != "identity")
+      return refuse(res, problem(415, "unsupported-encoding", "Compressed request bodies are not accepted",
+                                 "send the body uncompressed (got Content-Encoding: " + req.get_header_value("Content-Encoding") + ")"),
+                    "encoding");
+    auto too_large = [&] {
+      return refuse(res, problem(413, "body-too-large", "The request body is too large", "the limit is " + std::to_string(cap) + " bytes"), "body_size");
+    };
+    if (req.get_header_value<std::uint64_t>("Content-Length") > cap) return too_large();
+
+    const Clock::time_point deadline = t_request.start + config.body_deadline;
+    bool over = false, late = false;
+    auto take = [&](std::string& into, const char* data, std::size_t n) {
+      t_request.bytes_in += n;
+      if (t_request.bytes_in > cap) return !(over = true);
+      if (Clock::now() > deadline) return !(late = true);
+      into.append(data, n);
+      return true;
+    };
+    bool complete;
+    if (req.is_multipart_form_data()) {
+      std::string* current = nullptr;
+      complete = reader(
+          [&](const httplib::MultipartFormData& part) {
+            current = part.name == "scene" ? &body : &uploads[part.name];
+            return true;
+          },
+          [&](const char* data, std::size_t n) { return take(*current, data, n); });
+    } else {
+      if (const auto declared = req.get_header_value<std::uint64_t>("Content-Length")) body.reserve(declared);
+      complete = reader([&](const char* data, std::size_t n) { return take(body, data, n); });
+    }
+    if (over) return too_large();
+    if (late || !complete)
+      return refuse(res, problem(408, "body-timeout", "The request body did not arrive in time",
+                                 "the whole body must arrive within " + std::to_string(config.body_deadline.count()) + " ms"),
+                    "body_timeout");
+    return true;
+  }
+
+  void render(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader) {
+    std::string body;
+    raster::Uploads uploads;
+    if (!read_body(req, res, reader, body, uploads)) return;
+
+    if (!admission.enter()) {
+      res.set_header("Retry-After", "1");
+      refuse(res, problem(503, "overloaded", "All render workers are busy", "try again shortly"), "queue_full");
+      return;
+    }
+    struct Leave {
+      Admission& a;
+      ~Leave() { a.leave(); }
+    } leave{admission};
+
+    const Clock::time_point t0 = Clock::now();
+    try {
+      const Params params(req.params.begin(), req.params.end());
+      const raster::Scene scene = scene_from_request(body, uploads, params, config.limits);
+      const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
+      if (req.get_param_value("explain") == "1") {
+        res.set_content(raster::explain_json(plan), "application/json");
+        return;
+      }
+      const Clock::time_point t1 = Clock::now();
+      const raster::Image image = raster::render(scene, plan, {t0 + config.render_deadline, &cancel});
+      const Clock::time_point t2 = Clock::now();
+      const std::vector<std::uint8_t> png = raster::encode_png(image, plan.png);
+      const Clock::time_point t3 = Clock::now();
+      metrics.render(ms_between(t0, t3));
+      char timing[160];
+      std::snprintf(timing, sizeof timing, "parse;dur=%.3f, raster;dur=%.3f, encode;dur=%.3f", ms_between(t0, t1),
+                    ms_between(t1, t2), ms_between(t2, t3));
+      res.set_header("Server-Timing", timing);
+      res.set_header("X-Render-Plan", raster::explain_line(plan));
+      res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
+    } catch (const raster::SceneError& e) {
+      write_problem(res, problem_from(e));
+    } catch (const raster::RenderCancelled&) {
+      const bool shutting_down = cancel.load();
+      metrics.rejected(shutting_down ? "shutdown" : "render_timeout");
+      write_problem(res, shutting_down ? problem(503, "shutting-down", "The server is shutting down", "the render was stopped; retry elsewhere")
+                                       : problem(503, "render-timeout", "The render took too long",
+                                                 "the limit is " + std::to_string(config.render_deadline.count()) + " ms"));
+    }
+  }
+};
+
+Service::Service(ServiceConfig config) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (config.workers <= 0) config.workers = cores;
+  if (config.max_queue <= 0) config.max_queue = 2 * config.workers;
+  state_ = std::make_unique<State>(config);
+}
+
+Service::~Service() = default;
+
+const ServiceConfig& Service::config() const { return state_->config; }
+
+void Service::cancel_renders() { state_->cancel = true; }
+
+void Service::widen_backlog() const {
+  if (state_->listen_socket >= 0) ::listen(state_->listen_socket, 1024);  // Linux: re-listen updates the backlog
+}
+
+void Service::install(httplib::Server& server) {
+  State& s = *state_;
+  // Connection threads: every admitted or queued render holds one, slow bodies hold one while they
+  // arrive, and health and metrics must still find one free.
+  const std::size_t threads = static_cast<std::size_t>(s.config.workers + s.config.max_queue) + 16;
+  server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
+  server.set_keep_alive_timeout(2);  // idle keep-alive connections give their thread back quickly
+  const auto read_timeout = std::min<std::chrono::milliseconds>(s.config.body_deadline, std::chrono::milliseconds(5000));
+  server.set_read_timeout(read_timeout);
+  server.set_socket_options([&s](socket_t sock) {
+    httplib::default_socket_options(sock);
+    if (s.listen_socket < 0) s.listen_socket = sock;  // the first socket this server creates is the listening one
+  });
+
   server.set_pre_routing_handler([](const httplib::Request&, httplib::Response& res) {
+    t_request = RequestContext{Clock::now(), 0};
     res.set_header("X-Request-Id", next_request_id());
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
-  server.Post("/render", [config](const httplib::Request& req, httplib::Response& res,
-                                  const httplib::ContentReader& reader) { handle_render(config, req, res, reader); });
+  server.Post("/render", [&s](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader) {
+    s.render(req, res, reader);
+  });
   server.Get("/healthz", [](const httplib::Request&, httplib::Response& res) { res.set_content("ok\n", "text/plain"); });
+  server.Get("/metrics", [&s](const httplib::Request&, httplib::Response& res) {
+    const auto [running, waiting] = s.admission.load();
+    res.set_content(s.metrics.text(running, waiting), "text/plain; version=0.0.4");
+  });
 
   // Any error response without a body of ours (404, 405, ...) still gets a problem body.
   server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
     const std::string detail = req.method + " " + req.path;
-    if (res.status == 404) write_problem(res, problem(404, "not-found", "No such route", detail + " (routes: POST /render, GET /healthz)"));
+    if (res.status == 404) write_problem(res, problem(404, "not-found", "No such route", detail + " (routes: POST /render, GET /healthz, GET /metrics)"));
     else if (res.status == 405) write_problem(res, problem(405, "method-not-allowed", "Method not allowed", detail));
     else write_problem(res, problem(res.status, "http-error", "HTTP error " + std::to_string(res.status), detail));
     return httplib::Server::HandlerResponse::Handled;
@@ -123,18 +320,107 @@ void register_routes(httplib::Server& server, const ServiceConfig& config) {
       what = e.what();
     } catch (...) {
     }
-    std::fprintf(stderr, "error %s %s %s: %s\n", res.get_header_value("X-Request-Id").c_str(), req.method.c_str(),
+    std::fprintf(stderr, "error id=%s %s %s: %s\n", res.get_header_value("X-Request-Id").c_str(), req.method.c_str(),
                  req.path.c_str(), what.c_str());
     write_problem(res, problem(500, "internal", "Internal server error",
-                               "the render failed unexpectedly; quote request id " + res.get_header_value("X-Request-Id")));
+                               "the request failed unexpectedly; quote request id " + res.get_header_value("X-Request-Id")));
   });
 
-  server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-    // Bodies are streamed through ContentReaders, so bytes in are what the client declared.
-    std::fprintf(stderr, "%s %s %d in=%llu out=%zu id=%s\n", req.method.c_str(), req.path.c_str(), res.status,
-                 static_cast<unsigned long long>(req.get_header_value<std::uint64_t>("Content-Length")),
-                 res.body.size(), res.get_header_value("X-Request-Id").c_str());
+  server.set_logger([&s](const httplib::Request& req, const httplib::Response& res) {
+    const std::size_t in = t_request.bytes_in ? t_request.bytes_in : req.body.size();
+    s.metrics.request(route_label(req.path), res.status, in, res.body.size());
+    std::fprintf(stderr, "%s %s %d in=%zu out=%zu ms=%.1f id=%s\n", req.method.c_str(), req.path.c_str(), res.status, in,
+                 res.body.size(), ms_between(t_request.start, Clock::now()), res.get_header_value("X-Request-Id").c_str());
   });
+}
+
+namespace {
+
+struct Flag {
+  const char* name;  // --name, and RASTERD_NAME (upper case, '-' as '_') in the environment
+  const char* help;
+};
+constexpr Flag kFlags[] = {
+    {"host", "address to listen on (default 0.0.0.0)"},
+    {"port", "port (default 8080; also PORT)"},
+    {"max-body-bytes", "request body limit, 413 above (default 33554432 = 32 MiB)"},
+    {"max-width", "image width limit, 422 above (default 8192)"},
+    {"max-height", "image height limit, 422 above (default 8192)"},
+    {"max-pixels", "width x height limit, 422 above (default 40000000)"},
+    {"max-primitives", "primitives (and mesh triangles) limit, 422 above (default 2000000)"},
+    {"max-obj-faces", "faces of one OBJ model, 422 above (default 5000000)"},
+    {"max-json-depth", "JSON nesting limit, 400 above (default 64)"},
+    {"render-deadline-ms", "parse + render + encode deadline, 503 past it (default 10000)"},
+    {"body-deadline-ms", "time for the whole request body to arrive, 408 past it (default 10000)"},
+    {"workers", "renders at once (default: core count)"},
+    {"max-queue", "renders waiting for a worker, 503 + Retry-After beyond (default: 2 x workers)"},
+    {"render-threads", "band threads per render (default: core count)"},
+    {"shutdown-grace-ms", "after SIGTERM/SIGINT, time for running and queued renders (default 20000)"},
+};
+
+std::string env_name(const char* flag) {
+  std::string e = "RASTERD_";
+  for (const char* c = flag; *c; ++c) e += *c == '-' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+  return e;
+}
+
+}  // namespace
+
+std::string service_help() {
+  std::string h = "rasterd serve [--flag value ...]\n\nEach flag can also be set in the environment as RASTERD_<FLAG> (e.g. RASTERD_MAX_BODY_BYTES);\nflags win over the environment.\n\n";
+  for (const Flag& f : kFlags) {
+    char line[200];
+    std::snprintf(line, sizeof line, "  --%-20s %s\n", f.name, f.help);
+    h += line;
+  }
+  return h;
+}
+
+std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig& config, std::string& host, int& port) {
+  std::map<std::string, std::string> values;
+  for (const Flag& f : kFlags)
+    if (const char* v = std::getenv(env_name(f.name).c_str())) values[f.name] = v;
+  if (const char* p = std::getenv("PORT"); p && !values.count("port")) values["port"] = p;
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.rfind("--", 0) != 0) return "unexpected argument '" + a + "'";
+    a = a.substr(2);
+    std::string value;
+    if (const auto eq = a.find('='); eq != std::string::npos) value = a.substr(eq + 1), a = a.substr(0, eq);
+    else if (i + 1 < argc) value = argv[++i];
+    else return "--" + a + " needs a value";
+    if (std::none_of(std::begin(kFlags), std::end(kFlags), [&](const Flag& f) { return a == f.name; })) return "unknown flag --" + a;
+    values[a] = value;
+  }
+  std::string error;
+  auto number = [&](const std::string& name, long long lo, long long hi) -> long long {
+    const std::string& v = values[name];
+    char* end = nullptr;
+    const long long n = std::strtoll(v.c_str(), &end, 10);
+    if (v.empty() || *end || n < lo || n > hi) {
+      if (error.empty()) error = "--" + name + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" + v + "'";
+      return lo;
+    }
+    return n;
+  };
+  for (const auto& [name, v] : values) {
+    if (name == "host") host = v;
+    else if (name == "port") port = static_cast<int>(number(name, 1, 65535));
+    else if (name == "max-body-bytes") config.max_body_bytes = static_cast<std::size_t>(number(name, 1, 1ll << 32));
+    else if (name == "max-width") config.limits.max_width = static_cast<int>(number(name, 1, raster::kMaxImageSide));
+    else if (name == "max-height") config.limits.max_height = static_cast<int>(number(name, 1, raster::kMaxImageSide));
+    else if (name == "max-pixels") config.limits.max_pixels = number(name, 1, 1ll << 28);
+    else if (name == "max-primitives") config.limits.max_primitives = number(name, 1, 1ll << 31);
+    else if (name == "max-obj-faces") config.limits.max_obj_faces = number(name, 1, 1ll << 31);
+    else if (name == "max-json-depth") config.limits.max_json_depth = static_cast<int>(number(name, 2, 1000));
+    else if (name == "render-deadline-ms") config.render_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
+    else if (name == "body-deadline-ms") config.body_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
+    else if (name == "workers") config.workers = static_cast<int>(number(name, 1, 1024));
+    else if (name == "max-queue") config.max_queue = static_cast<int>(number(name, 1, 100000));
+    else if (name == "render-threads") config.render_threads = static_cast<int>(number(name, 1, 1024));
+    else if (name == "shutdown-grace-ms") config.shutdown_grace = std::chrono::milliseconds(number(name, 0, 3'600'000));
+  }
+  return error;
 }
 
 }  // namespace rasterd

@@ -1,41 +1,15 @@
 // The HTTP service through real HTTP on an ephemeral loopback port, with the routes main() serves.
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
-#include "service.h"
 #include "support.h"
+#include "test_server.h"
 
 namespace {
 
-// Starts register_routes() on 127.0.0.1:<any free port>; stops and joins on destruction.
-class TestServer {
- public:
-  explicit TestServer(rasterd::ServiceConfig config = {}) {
-    rasterd::register_routes(server_, config);
-    port_ = server_.bind_to_any_port("127.0.0.1");
-    if (port_ <= 0) throw std::runtime_error("bind_to_any_port failed");
-    thread_ = std::thread([this] { server_.listen_after_bind(); });
-    while (!server_.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  ~TestServer() {
-    server_.stop();
-    thread_.join();
-  }
-  httplib::Client client() const {
-    httplib::Client c("127.0.0.1", port_);
-    c.set_read_timeout(30);
-    return c;
-  }
-
- private:
-  httplib::Server server_;
-  int port_ = 0;
-  std::thread thread_;
-};
+using test::TestServer;
 
 const char* kScene = R"({"width": 64, "height": 32, "background": "#102030",
   "primitives": [{"type": "triangle", "points": [[2,2],[60,4],[10,30]], "colors": ["#f00","#0f0","#00f"]}]})";

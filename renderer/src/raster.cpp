@@ -372,10 +372,40 @@ bool line_fits_int128(const ScreenLine& l) {
   return std::fabs(l.x0) <= kLimit && std::fabs(l.y0) <= kLimit && std::fabs(l.x1) <= kLimit && std::fabs(l.y1) <= kLimit;
 }
 
+// How often the deadline is checked, in rough work units: a record costs 1 plus the pixel rows its
+// bounding box spans, so a check (~20 ns) comes every few big triangles or every few thousand small ones,
+// i.e. within milliseconds either way.
+constexpr std::int64_t kWorkPerStopCheck = 4096;
+
+std::int64_t rows_spanned(std::int64_t y0, std::int64_t y1, std::int64_t y2) {
+  return (std::max({y0, y1, y2}) - std::min({y0, y1, y2})) >> kSubpixelBits;
+}
+
+std::int64_t rough_work(const DrawList& list, const DrawOp& op, std::uint32_t k) {
+  switch (op.kind) {
+    case DrawOp::Kind::triangles: {
+      const auto& v = list.triangles[k].v;
+      return 1 + rows_spanned(v[0].y, v[1].y, v[2].y);
+    }
+    case DrawOp::Kind::depth_triangles: {
+      const auto& v = list.depth_triangles[k].v;
+      return 1 + rows_spanned(v[0].y, v[1].y, v[2].y);
+    }
+    case DrawOp::Kind::huge_triangles: return kWorkPerStopCheck;  // rare and possibly image-sized
+    case DrawOp::Kind::lines: return 1;
+  }
+  return 1;
+}
+
 template <int C>
-void draw_all(const DrawList& list, Image& image, float* depth, Rect clip) {
+void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop) {
+  std::int64_t work = 0;
   for (const DrawOp& op : list.ops) {
     for (std::uint32_t k = op.first; k < op.first + op.count; ++k) {
+      if ((work += rough_work(list, op, k)) >= kWorkPerStopCheck) {
+        work = 0;
+        if (stop.now()) return;
+      }
       switch (op.kind) {
         case DrawOp::Kind::triangles: fill_triangle<C>(list.triangles[k], op.mode, image, clip); break;
         case DrawOp::Kind::huge_triangles: fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip); break;
@@ -391,12 +421,19 @@ void draw_all(const DrawList& list, Image& image, float* depth, Rect clip) {
 
 }  // namespace
 
-void draw(const DrawList& list, Image& image, float* depth, Rect clip) {
+bool Stop::now() const {
+  if (stopped->load(std::memory_order_relaxed)) return true;
+  const bool stop = (cancel && cancel->load(std::memory_order_relaxed)) || std::chrono::steady_clock::now() >= deadline;
+  if (stop) stopped->store(true, std::memory_order_relaxed);
+  return stop;
+}
+
+void draw(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop) {
   switch (image.format) {
-    case PixelFormat::grey8: return draw_all<1>(list, image, depth, clip);
-    case PixelFormat::grey_alpha8: return draw_all<2>(list, image, depth, clip);
-    case PixelFormat::rgb8: return draw_all<3>(list, image, depth, clip);
-    case PixelFormat::rgba8: return draw_all<4>(list, image, depth, clip);
+    case PixelFormat::grey8: return draw_all<1>(list, image, depth, clip, stop);
+    case PixelFormat::grey_alpha8: return draw_all<2>(list, image, depth, clip, stop);
+    case PixelFormat::rgb8: return draw_all<3>(list, image, depth, clip, stop);
+    case PixelFormat::rgba8: return draw_all<4>(list, image, depth, clip, stop);
   }
 }
 
