@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz clean
+.PHONY: deps build serve test test-asan fuzz bench-build loadtest test-proxy clean
 
 deps:
 	@scripts/install-deps
@@ -39,6 +39,19 @@ fuzz:
 	  build-fuzz/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
 	    -artifact_prefix=fuzz-out/$$t/ -print_final_stats=1 $$( [ -f fuzz/$${t%_fuzzer}.dict ] && echo -dict=fuzz/$${t%_fuzzer}.dict ) fuzz-out/$$t/corpus fuzz/corpus/$$t || exit 1; \
 	done
+
+bench-build: build
+	@scripts/install-deps bench
+	@cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DRASTERD_BUILD_BENCH=ON -DRASTERD_BUILD_TESTS=OFF >/dev/null
+	@cmake --build build-bench -j$(JOBS) -- --no-print-directory
+
+# wrk against a local server on the mid-size scene; LOADTEST_SECONDS=30 by default.
+loadtest: bench-build
+	@scripts/loadtest
+
+# examples/nginx.conf in front of rasterd, checked (installs nginx).
+test-proxy: build
+	@scripts/test-proxy
 
 clean:
 	rm -rf build build-asan build-bench build-fuzz fuzz-out

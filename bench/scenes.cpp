@@ -1,0 +1,96 @@
+#include "scenes.h"
+
+#include <cstdio>
+#include <random>
+#include <stdexcept>
+
+namespace bench {
+namespace {
+
+raster::Rgba8 random_color(std::mt19937& rng) {
+  return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 255};
+}
+
+void add_triangle(raster::Scene& s, const raster::Point2 (&p)[3], const raster::Rgba8* colors, int ncolors) {
+  raster::Primitive prim;
+  prim.kind = raster::PrimitiveKind::triangle;
+  prim.first_point = static_cast<std::uint32_t>(s.points.size());
+  prim.point_count = 3;
+  prim.first_color = static_cast<std::uint32_t>(s.colors.size());
+  prim.per_vertex_color = ncolors == 3;
+  s.points.insert(s.points.end(), p, p + 3);
+  s.colors.insert(s.colors.end(), colors, colors + ncolors);
+  s.primitives.push_back(prim);
+}
+
+void random_triangles(raster::Scene& s, int count, double radius, std::mt19937& rng) {
+  std::uniform_real_distribution<double> x(0, s.width), y(0, s.height), d(-radius, radius);
+  for (int i = 0; i < count; ++i) {
+    const double cx = x(rng), cy = y(rng);
+    const raster::Point2 p[3] = {{cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}};
+    const raster::Rgba8 c[3] = {random_color(rng), random_color(rng), random_color(rng)};
+    add_triangle(s, p, c, 3);
+  }
+}
+
+}  // namespace
+
+raster::Scene make_scene(const std::string& kind, unsigned seed) {
+  std::mt19937 rng(seed);
+  raster::Scene s;
+  s.width = s.height = 1024;
+  if (kind == "small") {
+    random_triangles(s, 100'000, 12, rng);
+  } else if (kind == "large") {
+    random_triangles(s, 200, 340, rng);
+  } else if (kind == "mid") {
+    s.width = s.height = 512;
+    random_triangles(s, 2'000, 30, rng);
+  } else if (kind == "grid") {
+    constexpr int n = 64;
+    const double cell = 1024.0 / n;
+    std::uniform_real_distribution<double> jitter(-cell * 0.25, cell * 0.25);
+    std::vector<raster::Point2> v((n + 1) * (n + 1));
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const bool border = i == 0 || j == 0 || i == n || j == n;
+        v[j * (n + 1) + i] = {i * cell + (border ? 0 : jitter(rng)), j * cell + (border ? 0 : jitter(rng))};
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const raster::Point2 a = v[j * (n + 1) + i], b = v[j * (n + 1) + i + 1], c = v[(j + 1) * (n + 1) + i], d = v[(j + 1) * (n + 1) + i + 1];
+        const raster::Rgba8 c1 = random_color(rng), c2 = random_color(rng);
+        add_triangle(s, {a, b, d}, &c1, 1);
+        add_triangle(s, {a, d, c}, &c2, 1);
+      }
+  } else {
+    throw std::invalid_argument("unknown scene kind '" + kind + "' (small, large, grid, mid)");
+  }
+  return s;
+}
+
+std::string scene_json(const raster::Scene& s) {
+  std::string out = "{\"width\":" + std::to_string(s.width) + ",\"height\":" + std::to_string(s.height) + ",\"primitives\":[";
+  char buf[64];
+  auto color = [&](raster::Rgba8 c) {
+    std::snprintf(buf, sizeof buf, "\"#%02x%02x%02x\"", c.r, c.g, c.b);
+    return std::string(buf);
+  };
+  for (std::size_t i = 0; i < s.primitives.size(); ++i) {
+    const raster::Primitive& p = s.primitives[i];
+    out += i ? ",{\"type\":\"triangle\",\"points\":[" : "{\"type\":\"triangle\",\"points\":[";
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const raster::Point2& q = s.points[p.first_point + k];
+      std::snprintf(buf, sizeof buf, "%s[%.3f,%.3f]", k ? "," : "", q.x, q.y);
+      out += buf;
+    }
+    if (p.per_vertex_color) {
+      out += "],\"colors\":[" + color(s.colors[p.first_color]) + "," + color(s.colors[p.first_color + 1]) + "," + color(s.colors[p.first_color + 2]) + "]}";
+    } else {
+      out += "],\"color\":" + color(s.colors[p.first_color]) + "}";
+    }
+  }
+  return out + "]}";
+}
+
+}  // namespace bench

@@ -1,0 +1,18 @@
+// Seeded benchmark scenes, shared by the benchmarks, the load test and the accuracy report.
+#pragma once
+
+#include <string>
+
+#include "raster/scene.h"
+
+namespace bench {
+
+/// Kinds: "small" (100,000 triangles of about +-12 px, 1024x1024, per-vertex colours), "large" (200
+/// triangles of about +-340 px), "grid" (64x64 jittered grid, 8,192 triangles, flat colours), "mid"
+/// (2,000 triangles of about +-30 px on 512x512, the load-test scene). Same seed, same scene.
+raster::Scene make_scene(const std::string& kind, unsigned seed = 1);
+
+/// The same scene as JSON text (format v1), for end-to-end measurements.
+std::string scene_json(const raster::Scene& scene);
+
+}  // namespace bench
