@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build loadtest test-proxy clean
+.PHONY: deps build serve test test-asan fuzz bench-build bench loadtest test-proxy clean
 
 deps:
 	@scripts/install-deps
@@ -44,6 +44,10 @@ bench-build: build
 	@scripts/install-deps bench
 	@cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DRASTERD_BUILD_BENCH=ON -DRASTERD_BUILD_TESTS=OFF >/dev/null
 	@cmake --build build-bench -j$(JOBS) -- --no-print-directory
+
+# Measures and rewrites docs/performance.md (BENCH_RUNS=11 by default).
+bench: bench-build
+	@scripts/bench
 
 # wrk against a local server on the mid-size scene; LOADTEST_SECONDS=30 by default.
 loadtest: bench-build

@@ -16,26 +16,42 @@ namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void fail(ErrorKind kind, const std::string& pointer, const std::string& message) {
-  throw SceneError(kind, message, ErrorLocation{pointer, 0, 0});
-}
+// A JSON pointer that is spelled out only when an error needs it: a chain of parent links on the stack,
+// so reading a million points builds no strings. Keys must outlive the Path (they always do: literals,
+// or a key of the document being read).
+class Path {
+ public:
+  Path() = default;  // the document root, pointer ""
+  Path(const Path& parent, const char* key) : parent_(&parent), key_(key) {}
+  Path(const Path& parent, const std::string& key) : parent_(&parent), key_(key.c_str()) {}
+  Path(const Path& parent, std::size_t index) : parent_(&parent), index_(index) {}
 
-[[noreturn]] void invalid(const std::string& pointer, const std::string& message) {
-  fail(ErrorKind::invalid, pointer, message);
-}
-
-// RFC 6901: '~' and '/' inside a key are escaped.
-std::string pointer_key(const std::string& parent, const std::string& key) {
-  std::string out = parent + "/";
-  for (char c : key) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
+  // RFC 6901: '~' and '/' inside a key are escaped.
+  std::string str() const {
+    if (!parent_) return "";
+    std::string out = parent_->str() + "/";
+    if (!key_) return out + std::to_string(index_);
+    for (const char* c = key_; *c; ++c) {
+      if (*c == '~') out += "~0";
+      else if (*c == '/') out += "~1";
+      else out += *c;
+    }
+    return out;
   }
-  return out;
+
+ private:
+  const Path* parent_ = nullptr;
+  const char* key_ = nullptr;
+  std::size_t index_ = 0;
+};
+
+const Path kRoot;
+
+[[noreturn]] void fail(ErrorKind kind, const Path& at, const std::string& message) {
+  throw SceneError(kind, message, ErrorLocation{at.str(), 0, 0});
 }
 
-std::string pointer_index(const std::string& parent, std::size_t i) { return parent + "/" + std::to_string(i); }
+[[noreturn]] void invalid(const Path& at, const std::string& message) { fail(ErrorKind::invalid, at, message); }
 
 const char* type_name(const json& v) {
   switch (v.type()) {
@@ -66,7 +82,7 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 }
 
 // Rejects any key not in `known`, suggesting the nearest known name when it is a plausible typo.
-void check_keys(const json& obj, const std::string& pointer, std::initializer_list<const char*> known) {
+void check_keys(const json& obj, const Path& pointer, std::initializer_list<const char*> known) {
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     const std::string& key = it.key();
     if (std::any_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) continue;
@@ -82,11 +98,11 @@ void check_keys(const json& obj, const std::string& pointer, std::initializer_li
       message += "; known fields are";
       for (const char* k : known) message += std::string(" \"") + k + "\"";
     }
-    invalid(pointer_key(pointer, key), message);
+    invalid(Path(pointer, key), message);
   }
 }
 
-double read_number(const json& v, const std::string& pointer) {
+double read_number(const json& v, const Path& pointer) {
   if (!v.is_number()) invalid(pointer, std::string("expected a number, got ") + type_name(v));
   double d = v.get<double>();
   // The JSON grammar has no NaN or Infinity, and the lexer rejects overflow; this guards the rest.
@@ -95,7 +111,7 @@ double read_number(const json& v, const std::string& pointer) {
 }
 
 // Integer fields accept 256 and 256.0 but not 256.5; the range check is the caller's.
-std::int64_t read_integer(const json& v, const std::string& pointer) {
+std::int64_t read_integer(const json& v, const Path& pointer) {
   if (v.is_number_integer()) {
     if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX))
       return INT64_MAX;
@@ -107,7 +123,7 @@ std::int64_t read_integer(const json& v, const std::string& pointer) {
   return static_cast<std::int64_t>(d);
 }
 
-bool read_bool(const json& v, const std::string& pointer) {
+bool read_bool(const json& v, const Path& pointer) {
   if (!v.is_boolean()) invalid(pointer, std::string("expected true or false, got ") + type_name(v));
   return v.get<bool>();
 }
@@ -133,7 +149,7 @@ std::string hex_of(const std::vector<double>& bytes) {
 }
 
 // "#rgb", "#rgba", "#rrggbb", "#rrggbbaa", [r,g,b] or [r,g,b,a] with components in 0..1.
-Rgba8 read_color(const json& v, const std::string& pointer) {
+Rgba8 read_color(const json& v, const Path& pointer) {
   if (v.is_string()) {
     const std::string& s = v.get_ref<const std::string&>();
     const std::size_t n = s.size();
@@ -154,14 +170,14 @@ Rgba8 read_color(const json& v, const std::string& pointer) {
     if (v.size() != 3 && v.size() != 4)
       invalid(pointer, "a colour array has 3 or 4 components [r, g, b(, a)], got " + std::to_string(v.size()));
     std::vector<double> comp;
-    for (std::size_t k = 0; k < v.size(); ++k) comp.push_back(read_number(v[k], pointer_index(pointer, k)));
+    for (std::size_t k = 0; k < v.size(); ++k) comp.push_back(read_number(v[k], Path(pointer, k)));
     for (std::size_t k = 0; k < comp.size(); ++k) {
       if (comp[k] >= 0.0 && comp[k] <= 1.0) continue;
       std::string message = "colour components are in 0..1, got " + v[k].dump();
       const bool bytes = std::all_of(comp.begin(), comp.end(),
                                      [](double c) { return c >= 0 && c <= 255 && c == std::floor(c); });
       if (bytes) message += "; did you mean \"" + hex_of(comp) + "\"?";
-      invalid(pointer_index(pointer, k), message);
+      invalid(Path(pointer, k), message);
     }
     return {unit_to_byte(comp[0]), unit_to_byte(comp[1]), unit_to_byte(comp[2]),
             comp.size() == 4 ? unit_to_byte(comp[3]) : std::uint8_t{255}};
@@ -169,24 +185,24 @@ Rgba8 read_color(const json& v, const std::string& pointer) {
   invalid(pointer, std::string("expected a colour (\"#rrggbb\" or [r, g, b]), got ") + type_name(v));
 }
 
-double read_coordinate(const json& v, const std::string& pointer) {
+double read_coordinate(const json& v, const Path& pointer) {
   const double d = read_number(v, pointer);
   if (std::fabs(d) > kMaxCoordinate) invalid(pointer, "coordinate " + v.dump() + " is outside +-3.4e38 (+-2^128)");
   return d;
 }
 
 // A point of `dims` (2 or 3) coordinates.
-std::array<double, 3> read_point(const json& v, const std::string& pointer, std::size_t dims) {
+std::array<double, 3> read_point(const json& v, const Path& pointer, std::size_t dims) {
   const char* shape = dims == 2 ? "[x, y]" : "[x, y, z]";
   if (!v.is_array()) invalid(pointer, std::string("expected a point ") + shape + ", got " + type_name(v));
   if (v.size() != dims)
     invalid(pointer, std::string("expected a point ") + shape + " like the first point, got " + std::to_string(v.size()) + " numbers");
   std::array<double, 3> p{};
-  for (std::size_t k = 0; k < dims; ++k) p[k] = read_coordinate(v[k], pointer_index(pointer, k));
+  for (std::size_t k = 0; k < dims; ++k) p[k] = read_coordinate(v[k], Path(pointer, k));
   return p;
 }
 
-Vec3 read_vec3(const json& v, const std::string& pointer) {
+Vec3 read_vec3(const json& v, const Path& pointer) {
   const auto p = read_point(v, pointer, 3);
   return {p[0], p[1], p[2]};
 }
@@ -203,48 +219,48 @@ const char* kind_name(PrimitiveKind k) {
 
 // Colours of a primitive: "color" (flat), "colors" (one per point), or `fallback`; appended to `out`.
 // Returns true when per point.
-bool read_colors(const json& v, const std::string& pointer, std::size_t n, Rgba8 fallback, std::vector<Rgba8>& out) {
+bool read_colors(const json& v, const Path& pointer, std::size_t n, Rgba8 fallback, std::vector<Rgba8>& out) {
   auto color_it = v.find("color");
   auto colors_it = v.find("colors");
   if (color_it != v.end() && colors_it != v.end())
     invalid(pointer, "give either \"color\" (flat) or \"colors\" (one per point), not both");
   if (colors_it != v.end()) {
-    const std::string colors_pointer = pointer + "/colors";
+    const Path colors_pointer(pointer, "colors");
     if (!colors_it->is_array() || colors_it->size() != n)
       invalid(colors_pointer, "\"colors\" needs one colour per point (" + std::to_string(n) + ")");
-    for (std::size_t k = 0; k < n; ++k) out.push_back(read_color((*colors_it)[k], pointer_index(colors_pointer, k)));
+    for (std::size_t k = 0; k < n; ++k) out.push_back(read_color((*colors_it)[k], Path(colors_pointer, k)));
     return true;
   }
-  out.push_back(color_it != v.end() ? read_color(*color_it, pointer + "/color") : fallback);
+  out.push_back(color_it != v.end() ? read_color(*color_it, Path(pointer, "color")) : fallback);
   return false;
 }
 
 // {"translate": [x,y,z], "rotate": [deg x, deg y, deg z], "scale": s | [sx,sy,sz]} -> T * Rz * Ry * Rx * S
 // (scale first, then rotate about x, y, z, then translate), or {"matrix": [16 numbers, row-major]}.
-Mat4 read_transform(const json& v, const std::string& pointer) {
+Mat4 read_transform(const json& v, const Path& pointer) {
   if (!v.is_object()) invalid(pointer, std::string("expected a transform object, got ") + type_name(v));
   check_keys(v, pointer, {"translate", "rotate", "scale", "matrix"});
   Mat4 m;
   if (auto it = v.find("matrix"); it != v.end()) {
     if (v.size() != 1) invalid(pointer, "\"matrix\" replaces translate/rotate/scale; give one or the other");
-    if (!it->is_array() || it->size() != 16) invalid(pointer + "/matrix", "expected 16 numbers (a row-major 4x4 matrix)");
-    for (std::size_t k = 0; k < 16; ++k) m.m[k] = read_number((*it)[k], pointer_index(pointer + "/matrix", k));
+    if (!it->is_array() || it->size() != 16) invalid(Path(pointer, "matrix"), "expected 16 numbers (a row-major 4x4 matrix)");
+    for (std::size_t k = 0; k < 16; ++k) m.m[k] = read_number((*it)[k], Path(Path(pointer, "matrix"), k));
     return m;
   }
   if (auto it = v.find("scale"); it != v.end()) {
     Vec3 s3;
     if (it->is_number()) {
-      const double k = read_number(*it, pointer + "/scale");
+      const double k = read_number(*it, Path(pointer, "scale"));
       s3 = {k, k, k};
     } else {
-      s3 = read_vec3(*it, pointer + "/scale");
+      s3 = read_vec3(*it, Path(pointer, "scale"));
     }
     Mat4 sm;
     sm(0, 0) = s3.x, sm(1, 1) = s3.y, sm(2, 2) = s3.z;
     m = sm;
   }
   if (auto it = v.find("rotate"); it != v.end()) {
-    const Vec3 deg = read_vec3(*it, pointer + "/rotate");
+    const Vec3 deg = read_vec3(*it, Path(pointer, "rotate"));
     const double angles[3] = {deg.x, deg.y, deg.z};
     for (int axis = 0; axis < 3; ++axis) {  // x first, then y, then z
       const double rad = angles[axis] * std::numbers::pi / 180.0, c = std::cos(rad), sn = std::sin(rad);
@@ -255,7 +271,7 @@ Mat4 read_transform(const json& v, const std::string& pointer) {
     }
   }
   if (auto it = v.find("translate"); it != v.end()) {
-    const Vec3 t = read_vec3(*it, pointer + "/translate");
+    const Vec3 t = read_vec3(*it, Path(pointer, "translate"));
     Mat4 tm;
     tm(0, 3) = t.x, tm(1, 3) = t.y, tm(2, 3) = t.z;
     m = detail::operator*(tm, m);
@@ -266,9 +282,9 @@ Mat4 read_transform(const json& v, const std::string& pointer) {
 constexpr Rgba8 kMeshGrey{204, 204, 204, 255};  // the default colour of meshes and models: light grey
 
 // Options shared by "mesh" and "obj": shading, wireframe, cull, transform.
-void read_mesh_options(const json& v, const std::string& pointer, Mesh& mesh) {
+void read_mesh_options(const json& v, const Path& pointer, Mesh& mesh) {
   if (auto it = v.find("shading"); it != v.end()) {
-    const std::string sp = pointer + "/shading";
+    const Path sp(pointer, "shading");
     if (!it->is_string()) invalid(sp, std::string("expected \"flat\", \"smooth\" or \"unlit\", got ") + type_name(*it));
     const std::string& s = it->get_ref<const std::string&>();
     if (s == "flat") mesh.shading = Shading::flat;
@@ -277,36 +293,36 @@ void read_mesh_options(const json& v, const std::string& pointer, Mesh& mesh) {
     else invalid(sp, "expected \"flat\", \"smooth\" or \"unlit\", got \"" + s + "\"");
   }
   if (auto it = v.find("cull"); it != v.end()) {
-    const std::string cp = pointer + "/cull";
+    const Path cp(pointer, "cull");
     if (!it->is_string() || (*it != "none" && *it != "back")) invalid(cp, "expected \"none\" or \"back\", got " + it->dump());
     mesh.cull = *it == "back" ? Cull::back : Cull::none;
   }
-  if (auto it = v.find("wireframe"); it != v.end()) mesh.wireframe = read_bool(*it, pointer + "/wireframe");
-  if (auto it = v.find("transform"); it != v.end()) mesh.transform = read_transform(*it, pointer + "/transform");
+  if (auto it = v.find("wireframe"); it != v.end()) mesh.wireframe = read_bool(*it, Path(pointer, "wireframe"));
+  if (auto it = v.find("transform"); it != v.end()) mesh.transform = read_transform(*it, Path(pointer, "transform"));
 }
 
 // positions: [[x,y,z], ...] or [x,y,z, x,y,z, ...]; likewise normals.
-std::vector<Vec3> read_vec3_list(const json& v, const std::string& pointer) {
+std::vector<Vec3> read_vec3_list(const json& v, const Path& pointer) {
   if (!v.is_array()) invalid(pointer, std::string("expected an array of [x, y, z] or of numbers, got ") + type_name(v));
   std::vector<Vec3> out;
   if (!v.empty() && v[0].is_number()) {
     if (v.size() % 3 != 0) invalid(pointer, "a flat list holds x, y, z triples; its length " + std::to_string(v.size()) + " is not a multiple of 3");
     out.reserve(v.size() / 3);
     for (std::size_t k = 0; k < v.size(); k += 3)
-      out.push_back({read_coordinate(v[k], pointer_index(pointer, k)), read_coordinate(v[k + 1], pointer_index(pointer, k + 1)),
-                     read_coordinate(v[k + 2], pointer_index(pointer, k + 2))});
+      out.push_back({read_coordinate(v[k], Path(pointer, k)), read_coordinate(v[k + 1], Path(pointer, k + 1)),
+                     read_coordinate(v[k + 2], Path(pointer, k + 2))});
     return out;
   }
   out.reserve(v.size());
-  for (std::size_t k = 0; k < v.size(); ++k) out.push_back(read_vec3(v[k], pointer_index(pointer, k)));
+  for (std::size_t k = 0; k < v.size(); ++k) out.push_back(read_vec3(v[k], Path(pointer, k)));
   return out;
 }
 
 // indices: [[a,b,c], ...] or [a,b,c, a,b,c, ...], 0-based into positions.
-std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const std::string& pointer, std::size_t positions,
+std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const Path& pointer, std::size_t positions,
                                                        const Limits& limits) {
   if (!v.is_array()) invalid(pointer, std::string("expected an array of [a, b, c] or of integers, got ") + type_name(v));
-  auto index = [&](const json& e, const std::string& p) {
+  auto index = [&](const json& e, const Path& p) {
     const std::int64_t i = read_integer(e, p);
     if (i < 0 || static_cast<std::size_t>(i) >= positions)
       invalid(p, "index " + e.dump() + " is outside the " + std::to_string(positions) + " positions (0-based)");
@@ -321,31 +337,31 @@ std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const std:
   if (flat) {
     if (v.size() % 3 != 0) invalid(pointer, "a flat list holds a, b, c triples; its length " + std::to_string(v.size()) + " is not a multiple of 3");
     for (std::size_t k = 0; k < v.size(); k += 3)
-      out.push_back({index(v[k], pointer_index(pointer, k)), index(v[k + 1], pointer_index(pointer, k + 1)), index(v[k + 2], pointer_index(pointer, k + 2))});
+      out.push_back({index(v[k], Path(pointer, k)), index(v[k + 1], Path(pointer, k + 1)), index(v[k + 2], Path(pointer, k + 2))});
     return out;
   }
   for (std::size_t k = 0; k < v.size(); ++k) {
-    const std::string p = pointer_index(pointer, k);
+    const Path p(pointer, k);
     if (!v[k].is_array() || v[k].size() != 3) invalid(p, "expected a triangle [a, b, c]");
-    out.push_back({index(v[k][0], pointer_index(p, 0)), index(v[k][1], pointer_index(p, 1)), index(v[k][2], pointer_index(p, 2))});
+    out.push_back({index(v[k][0], Path(p, std::size_t{0})), index(v[k][1], Path(p, std::size_t{1})), index(v[k][2], Path(p, std::size_t{2}))});
   }
   return out;
 }
 
-Mesh read_mesh(const json& v, const std::string& pointer, const Limits& limits) {
+Mesh read_mesh(const json& v, const Path& pointer, const Limits& limits) {
   check_keys(v, pointer, {"type", "positions", "indices", "colors", "color", "normals", "shading", "wireframe", "cull", "transform"});
   Mesh mesh;
   auto pos = v.find("positions");
   if (pos == v.end()) invalid(pointer, "a mesh needs \"positions\"");
-  mesh.positions = read_vec3_list(*pos, pointer + "/positions");
+  mesh.positions = read_vec3_list(*pos, Path(pointer, "positions"));
   auto idx = v.find("indices");
   if (idx == v.end()) invalid(pointer, "a mesh needs \"indices\" (triangles as [a, b, c], 0-based)");
-  mesh.triangles = read_indices(*idx, pointer + "/indices", mesh.positions.size(), limits);
+  mesh.triangles = read_indices(*idx, Path(pointer, "indices"), mesh.positions.size(), limits);
   read_colors(v, pointer, mesh.positions.size(), kMeshGrey, mesh.colors);
   if (auto it = v.find("normals"); it != v.end()) {
-    mesh.normals = read_vec3_list(*it, pointer + "/normals");
+    mesh.normals = read_vec3_list(*it, Path(pointer, "normals"));
     if (mesh.normals.size() != mesh.positions.size())
-      invalid(pointer + "/normals", "\"normals\" needs one normal per position (" + std::to_string(mesh.positions.size()) + ")");
+      invalid(Path(pointer, "normals"), "\"normals\" needs one normal per position (" + std::to_string(mesh.positions.size()) + ")");
     mesh.normal_triangles = mesh.triangles;
   }
   read_mesh_options(v, pointer, mesh);
@@ -356,7 +372,7 @@ std::string located(const SceneError& e) {
   return e.where().line ? std::string(e.what()) + " (line " + std::to_string(e.where().line) + ")" : e.what();
 }
 
-Mesh read_obj(const json& v, const std::string& pointer, const Limits& limits, const Uploads& uploads) {
+Mesh read_obj(const json& v, const Path& pointer, const Limits& limits, const Uploads& uploads) {
   check_keys(v, pointer, {"type", "data", "source", "mtl", "mtl_source", "color", "shading", "wireframe", "cull", "transform"});
   auto text_of = [&](const char* inline_key, const char* source_key, bool required) -> std::string_view {
     auto data = v.find(inline_key);
@@ -364,14 +380,14 @@ Mesh read_obj(const json& v, const std::string& pointer, const Limits& limits, c
     if (data != v.end() && source != v.end())
       invalid(pointer, std::string("give either \"") + inline_key + "\" or \"" + source_key + "\", not both");
     if (data != v.end()) {
-      if (!data->is_string()) invalid(pointer + "/" + inline_key, std::string("expected text, got ") + type_name(*data));
+      if (!data->is_string()) invalid(Path(pointer, inline_key), std::string("expected text, got ") + type_name(*data));
       return data->get_ref<const std::string&>();
     }
     if (source != v.end()) {
-      if (!source->is_string()) invalid(pointer + "/" + source_key, std::string("expected the name of an uploaded part, got ") + type_name(*source));
+      if (!source->is_string()) invalid(Path(pointer, source_key), std::string("expected the name of an uploaded part, got ") + type_name(*source));
       auto part = uploads.find(source->get_ref<const std::string&>());
       if (part == uploads.end())
-        invalid(pointer + "/" + source_key, "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
+        invalid(Path(pointer, source_key), "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
       return part->second;
     }
     if (required) invalid(pointer, "an obj needs \"data\" (OBJ text) or \"source\" (the name of an uploaded part)");
@@ -387,10 +403,10 @@ Mesh read_obj(const json& v, const std::string& pointer, const Limits& limits, c
   try {
     mesh = parse_obj(obj_text, mtl_text, limits);
   } catch (const SceneError& e) {
-    throw SceneError(e.kind(), located(e), ErrorLocation{pointer, 0, e.where().line});
+    throw SceneError(e.kind(), located(e), ErrorLocation{pointer.str(), 0, e.where().line});
   }
   if (auto it = v.find("color"); it != v.end()) {  // an explicit colour wins over the model's own
-    mesh.colors = {read_color(*it, pointer + "/color")};
+    mesh.colors = {read_color(*it, Path(pointer, "color"))};
     mesh.face_colors.clear();
   } else if (mesh.colors.empty()) {
     mesh.colors = {kMeshGrey};
@@ -416,11 +432,11 @@ Mesh mesh_of_3d_primitive(PrimitiveKind kind, const std::vector<Vec3>& points, s
   return mesh;
 }
 
-void read_primitive(const json& v, const std::string& pointer, Scene& scene, const Limits& limits, const Uploads& uploads) {
+void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limits& limits, const Uploads& uploads) {
   if (!v.is_object()) invalid(pointer, std::string("expected a primitive object, got ") + type_name(v));
   auto type_it = v.find("type");
   if (type_it == v.end()) invalid(pointer, "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\")");
-  const std::string type_pointer = pointer + "/type";
+  const Path type_pointer(pointer, "type");
   if (!type_it->is_string()) invalid(type_pointer, std::string("expected a string, got ") + type_name(*type_it));
   const std::string& type = type_it->get_ref<const std::string&>();
 
@@ -446,7 +462,7 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene, con
   }
 
   auto points_it = v.find("points");
-  const std::string points_pointer = pointer + "/points";
+  const Path points_pointer(pointer, "points");
   if (points_it == v.end()) invalid(pointer, std::string("a ") + kind_name(p.kind) + " needs \"points\"");
   if (!points_it->is_array()) invalid(points_pointer, std::string("expected an array of points, got ") + type_name(*points_it));
   const std::size_t n = points_it->size();
@@ -457,8 +473,8 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene, con
   if (p.kind == PrimitiveKind::polyline && n < 2)
     invalid(points_pointer, "a polyline has at least 2 points, got " + std::to_string(n));
   if (scene.points.size() + n > UINT32_MAX) fail(ErrorKind::limit, points_pointer, "too many points in the scene");
-  if (auto it = v.find("fill"); it != v.end()) p.fill = read_bool(*it, pointer + "/fill");
-  if (auto it = v.find("closed"); it != v.end()) p.closed = read_bool(*it, pointer + "/closed");
+  if (auto it = v.find("fill"); it != v.end()) p.fill = read_bool(*it, Path(pointer, "fill"));
+  if (auto it = v.find("closed"); it != v.end()) p.closed = read_bool(*it, Path(pointer, "closed"));
 
   // The first point decides: [x, y] is image space, [x, y, z] world space; all points must agree.
   const json& first = (*points_it)[0];
@@ -466,7 +482,7 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene, con
   if (dims == 3) {
     std::vector<Vec3> pts;
     for (std::size_t k = 0; k < n; ++k) {
-      const auto q = read_point((*points_it)[k], pointer_index(points_pointer, k), 3);
+      const auto q = read_point((*points_it)[k], Path(points_pointer, k), 3);
       pts.push_back({q[0], q[1], q[2]});
     }
     std::vector<Rgba8> colors;
@@ -482,7 +498,7 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene, con
   p.first_point = static_cast<std::uint32_t>(scene.points.size());
   p.point_count = static_cast<std::uint32_t>(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const auto q = read_point((*points_it)[k], pointer_index(points_pointer, k), 2);
+    const auto q = read_point((*points_it)[k], Path(points_pointer, k), 2);
     scene.points.push_back({q[0], q[1]});
   }
   p.first_color = static_cast<std::uint32_t>(scene.colors.size());
@@ -491,56 +507,56 @@ void read_primitive(const json& v, const std::string& pointer, Scene& scene, con
 }
 
 Camera read_camera(const json& v) {
-  const std::string pointer = "/camera";
+  const Path pointer(kRoot, "camera");
   if (!v.is_object()) invalid(pointer, std::string("expected a camera object, got ") + type_name(v));
   check_keys(v, pointer, {"projection", "eye", "target", "up", "fov", "near", "far", "height"});
   Camera c;
   if (auto it = v.find("projection"); it != v.end()) {
     if (!it->is_string() || (*it != "perspective" && *it != "orthographic"))
-      invalid(pointer + "/projection", "expected \"perspective\" or \"orthographic\", got " + it->dump());
+      invalid(Path(pointer, "projection"), "expected \"perspective\" or \"orthographic\", got " + it->dump());
     c.projection = *it == "orthographic" ? Projection::orthographic : Projection::perspective;
   }
-  if (auto it = v.find("eye"); it != v.end()) c.eye = read_vec3(*it, pointer + "/eye"), c.has_eye = true;
-  if (auto it = v.find("target"); it != v.end()) c.target = read_vec3(*it, pointer + "/target"), c.has_target = true;
+  if (auto it = v.find("eye"); it != v.end()) c.eye = read_vec3(*it, Path(pointer, "eye")), c.has_eye = true;
+  if (auto it = v.find("target"); it != v.end()) c.target = read_vec3(*it, Path(pointer, "target")), c.has_target = true;
   if (auto it = v.find("up"); it != v.end()) {
-    c.up = read_vec3(*it, pointer + "/up");
-    if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0) invalid(pointer + "/up", "\"up\" must not be the zero vector");
+    c.up = read_vec3(*it, Path(pointer, "up"));
+    if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0) invalid(Path(pointer, "up"), "\"up\" must not be the zero vector");
   }
   if (auto it = v.find("fov"); it != v.end()) {
-    c.fov_deg = read_number(*it, pointer + "/fov");
-    if (!(c.fov_deg > 0 && c.fov_deg < 180)) invalid(pointer + "/fov", "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180; got " + it->dump());
+    c.fov_deg = read_number(*it, Path(pointer, "fov"));
+    if (!(c.fov_deg > 0 && c.fov_deg < 180)) invalid(Path(pointer, "fov"), "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180; got " + it->dump());
   }
   if (auto it = v.find("near"); it != v.end()) {
-    c.near = read_number(*it, pointer + "/near"), c.has_near = true;
-    if (!(c.near > 0)) invalid(pointer + "/near", "\"near\" is a distance in front of the eye and must be > 0; got " + it->dump());
+    c.near = read_number(*it, Path(pointer, "near")), c.has_near = true;
+    if (!(c.near > 0)) invalid(Path(pointer, "near"), "\"near\" is a distance in front of the eye and must be > 0; got " + it->dump());
   }
   if (auto it = v.find("far"); it != v.end()) {
-    c.far = read_number(*it, pointer + "/far"), c.has_far = true;
-    if (!(c.far > 0)) invalid(pointer + "/far", "\"far\" must be > 0; got " + it->dump());
+    c.far = read_number(*it, Path(pointer, "far")), c.has_far = true;
+    if (!(c.far > 0)) invalid(Path(pointer, "far"), "\"far\" must be > 0; got " + it->dump());
   }
-  if (c.has_near && c.has_far && !(c.near < c.far)) invalid(pointer + "/far", "\"far\" must be greater than \"near\"");
+  if (c.has_near && c.has_far && !(c.near < c.far)) invalid(Path(pointer, "far"), "\"far\" must be greater than \"near\"");
   if (auto it = v.find("height"); it != v.end()) {
-    c.height = read_number(*it, pointer + "/height"), c.has_height = true;
-    if (!(c.height > 0)) invalid(pointer + "/height", "\"height\" (orthographic view height) must be > 0");
+    c.height = read_number(*it, Path(pointer, "height")), c.has_height = true;
+    if (!(c.height > 0)) invalid(Path(pointer, "height"), "\"height\" (orthographic view height) must be > 0");
   }
   if (c.has_eye && c.has_target && c.eye.x == c.target.x && c.eye.y == c.target.y && c.eye.z == c.target.z)
-    invalid(pointer + "/target", "\"eye\" and \"target\" are the same point: the camera has no view direction");
+    invalid(Path(pointer, "target"), "\"eye\" and \"target\" are the same point: the camera has no view direction");
   return c;
 }
 
 Light read_light(const json& v) {
-  const std::string pointer = "/light";
+  const Path pointer(kRoot, "light");
   if (!v.is_object()) invalid(pointer, std::string("expected a light object, got ") + type_name(v));
   check_keys(v, pointer, {"direction", "ambient"});
   Light l;
   if (auto it = v.find("direction"); it != v.end()) {
-    l.direction = read_vec3(*it, pointer + "/direction");
+    l.direction = read_vec3(*it, Path(pointer, "direction"));
     l.headlight = false;
-    if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0) invalid(pointer + "/direction", "the light direction must not be the zero vector");
+    if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0) invalid(Path(pointer, "direction"), "the light direction must not be the zero vector");
   }
   if (auto it = v.find("ambient"); it != v.end()) {
-    l.ambient = read_number(*it, pointer + "/ambient");
-    if (!(l.ambient >= 0 && l.ambient <= 1)) invalid(pointer + "/ambient", "\"ambient\" is in 0..1; got " + it->dump());
+    l.ambient = read_number(*it, Path(pointer, "ambient"));
+    if (!(l.ambient >= 0 && l.ambient <= 1)) invalid(Path(pointer, "ambient"), "\"ambient\" is in 0..1; got " + it->dump());
   }
   return l;
 }
@@ -617,14 +633,14 @@ json parse_document(std::string_view text, int max_depth) {
 
 Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
   const json doc = parse_document(json_text, limits.max_json_depth);
-  if (!doc.is_object()) invalid("", std::string("a scene is a JSON object, got ") + type_name(doc));
-  check_keys(doc, "", {"width", "height", "background", "primitives", "camera", "light"});
+  if (!doc.is_object()) invalid(kRoot, std::string("a scene is a JSON object, got ") + type_name(doc));
+  check_keys(doc, kRoot, {"width", "height", "background", "primitives", "camera", "light"});
 
   Scene scene;
   auto read_side = [&](const char* key, int max_side) {
     auto it = doc.find(key);
-    const std::string pointer = std::string("/") + key;
-    if (it == doc.end()) invalid("", std::string("missing \"") + key + "\" (image size in pixels)");
+    const Path pointer(kRoot, key);
+    if (it == doc.end()) invalid(kRoot, std::string("missing \"") + key + "\" (image size in pixels)");
     const std::int64_t side = read_integer(*it, pointer);
     if (side < 1) invalid(pointer, std::string("\"") + key + "\" must be at least 1, got " + it->dump());
     const int cap = std::min(max_side, kMaxImageSide);
@@ -635,17 +651,18 @@ Scene parse_scene(std::string_view json_text, const Limits& limits, const Upload
   scene.height = read_side("height", limits.max_height);
   const std::int64_t pixels = static_cast<std::int64_t>(scene.width) * scene.height;
   if (pixels > limits.max_pixels)
-    fail(ErrorKind::limit, "", std::to_string(scene.width) + "x" + std::to_string(scene.height) + " is " +
+    fail(ErrorKind::limit, kRoot, std::to_string(scene.width) + "x" + std::to_string(scene.height) + " is " +
                                    std::to_string(pixels) + " pixels, over the limit of " + std::to_string(limits.max_pixels));
 
-  if (auto it = doc.find("background"); it != doc.end()) scene.background = read_color(*it, "/background");
+  if (auto it = doc.find("background"); it != doc.end()) scene.background = read_color(*it, Path(kRoot, "background"));
 
   if (auto it = doc.find("primitives"); it != doc.end()) {
-    if (!it->is_array()) invalid("/primitives", std::string("expected an array, got ") + type_name(*it));
+    const Path primitives(kRoot, "primitives");
+    if (!it->is_array()) invalid(primitives, std::string("expected an array, got ") + type_name(*it));
     if (static_cast<std::int64_t>(it->size()) > limits.max_primitives)
-      fail(ErrorKind::limit, "/primitives", std::to_string(it->size()) + " primitives exceed the limit of " + std::to_string(limits.max_primitives));
+      fail(ErrorKind::limit, primitives, std::to_string(it->size()) + " primitives exceed the limit of " + std::to_string(limits.max_primitives));
     scene.primitives.reserve(it->size());
-    for (std::size_t i = 0; i < it->size(); ++i) read_primitive((*it)[i], pointer_index("/primitives", i), scene, limits, uploads);
+    for (std::size_t i = 0; i < it->size(); ++i) read_primitive((*it)[i], Path(primitives, i), scene, limits, uploads);
   }
   if (auto it = doc.find("camera"); it != doc.end()) scene.camera = read_camera(*it);
   if (auto it = doc.find("light"); it != doc.end()) scene.light = read_light(*it);

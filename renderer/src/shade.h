@@ -64,17 +64,4 @@ inline void blend(std::uint8_t* px, Rgba8 c) {
   }
 }
 
-/// Convex combination sum(w_k c_k) / sum(w_k) rounded to nearest, exact in integers. With w_k >= 0 the
-/// result never leaves [min c_k, max c_k], however thin the triangle. Weights are < 2^50, so
-/// 255 * sum < 2^58 fits.
-inline std::uint8_t mix3(std::int64_t w0, std::int64_t w1, std::int64_t w2, std::int64_t sum, std::uint8_t c0,
-                         std::uint8_t c1, std::uint8_t c2) {
-  return static_cast<std::uint8_t>((w0 * c0 + w1 * c1 + w2 * c2 + sum / 2) / sum);
-}
-
-inline Rgba8 mix3(std::int64_t w0, std::int64_t w1, std::int64_t w2, std::int64_t sum, Rgba8 a, Rgba8 b, Rgba8 c) {
-  return {mix3(w0, w1, w2, sum, a.r, b.r, c.r), mix3(w0, w1, w2, sum, a.g, b.g, c.g),
-          mix3(w0, w1, w2, sum, a.b, b.b, c.b), mix3(w0, w1, w2, sum, a.a, b.a, c.a)};
-}
-
 }  // namespace raster::detail
