@@ -29,7 +29,33 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background) {
 }
 
 std::vector<float> make_depth_buffer(const RenderPlan& plan) {
-  return std::vector<float>(static_cast<std::size_t>(plan.memory.depth_bytes) / sizeof(float), 0.0f);
+  if (!plan.depth_buffer) return {};
+  return std::vector<float>(static_cast<std::size_t>(plan.width) * plan.height, 0.0f);
+}
+
+void resolve(const std::vector<Image>& planes, Image& out, Rect band) {
+  const int c = out.channels();
+  const auto n = static_cast<std::uint32_t>(planes.size());
+  const bool alpha = out.format == PixelFormat::grey_alpha8 || out.format == PixelFormat::rgba8;
+  const std::size_t begin = static_cast<std::size_t>(band.y0) * out.width * c, end = static_cast<std::size_t>(band.y1) * out.width * c;
+  for (std::size_t i = begin; i < end; i += c) {
+    if (!alpha) {
+      for (int k = 0; k < c; ++k) {
+        std::uint32_t sum = 0;
+        for (const Image& p : planes) sum += p.pixels[i + k];
+        out.pixels[i + k] = static_cast<std::uint8_t>((sum + n / 2) / n);
+      }
+      continue;
+    }
+    std::uint32_t alpha_sum = 0;
+    for (const Image& p : planes) alpha_sum += p.pixels[i + c - 1];
+    for (int k = 0; k + 1 < c; ++k) {
+      std::uint32_t weighted = 0;
+      for (const Image& p : planes) weighted += static_cast<std::uint32_t>(p.pixels[i + k]) * p.pixels[i + c - 1];
+      out.pixels[i + k] = alpha_sum ? static_cast<std::uint8_t>((weighted + alpha_sum / 2) / alpha_sum) : 0;
+    }
+    out.pixels[i + c - 1] = static_cast<std::uint8_t>((alpha_sum + n / 2) / n);
+  }
 }
 
 Rect band(const RenderPlan& plan, int index, int count) {

@@ -19,8 +19,13 @@ struct Rect {
 /// Allocates exactly plan.memory.color_bytes and fills it with the background.
 Image make_color_buffer(const RenderPlan& plan, Rgba8 background);
 
-/// Allocates exactly plan.memory.depth_bytes, cleared to 0 (reversed depth: infinitely far); none for 2D.
+/// One depth plane, cleared to 0 (reversed depth: infinitely far); empty for 2D. Aliased renders have one
+/// (the plan's depth_bytes), anti-aliased ones one per sample (part of its sample_bytes).
 std::vector<float> make_depth_buffer(const RenderPlan& plan);
+
+/// Averages the sample planes into `out` over `band`: the plain mean for opaque formats, and for formats
+/// with alpha the mean of premultiplied values (a transparent sample adds no colour), rounded to nearest.
+void resolve(const std::vector<Image>& planes, Image& out, Rect band);
 
 /// Row band `index` of `count` equal bands covering the image (the last takes the remainder).
 Rect band(const RenderPlan& plan, int index, int count);

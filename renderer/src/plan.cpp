@@ -242,7 +242,12 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       work += image_pixels;  // a mesh may cover the whole image
       continue;
     }
-    const Box b = bounds(scene, prim);
+    const bool filled = prim.kind == PrimitiveKind::triangle && prim.fill;
+    Box b = bounds(scene, prim);
+    if (!filled) {  // a wide line reaches half its width beyond its points
+      const double pad = prim.width * 0.5;
+      b.x0 -= pad, b.y0 -= pad, b.x1 += pad, b.y1 += pad;
+    }
     // Conservative: a primitive touching the image's closed rectangle is kept.
     pp.visible = b.x1 >= 0 && b.x0 <= w && b.y1 >= 0 && b.y0 <= h;
     if (!pp.visible) {
@@ -260,19 +265,26 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
     (pp.smooth ? out.smooth_count : out.flat_count) += 1;
     out.blend_count += pp.blend ? 1 : 0;
     const double cw = std::min(b.x1, w) - std::max(b.x0, 0.0) + 1, ch = std::min(b.y1, h) - std::max(b.y0, 0.0) + 1;
-    const bool filled = prim.kind == PrimitiveKind::triangle && prim.fill;
     work += static_cast<std::int64_t>(filled ? cw * ch : std::max(cw, ch));
   }
 
+  work *= scene.samples;  // every sample plane is drawn
   out.format = grey ? (alpha ? PixelFormat::grey_alpha8 : PixelFormat::grey8)
                     : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
   out.memory.color_bytes = image_pixels * channel_count(out.format);
+  out.samples = scene.samples;
+  const std::int64_t depth_per_pixel = any_3d ? static_cast<std::int64_t>(sizeof(float)) : 0;
+  if (out.samples > 1) {
+    // One colour plane (and with 3D one depth plane) per sample; the output image holds the resolve.
+    out.memory.sample_bytes = image_pixels * out.samples * (channel_count(out.format) + depth_per_pixel);
+  } else {
+    out.memory.depth_bytes = image_pixels * depth_per_pixel;
+  }
   if (any_3d) {
     out.depth_buffer = true;
-    out.memory.depth_bytes = image_pixels * static_cast<std::int64_t>(sizeof(float));
     out.view = resolve_view(scene, static_cast<double>(scene.width) / scene.height);
   }
-  if (out.memory.total() > limits.max_buffer_bytes)
+  if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +
                                            std::to_string(limits.max_buffer_bytes));

@@ -15,7 +15,6 @@ namespace {
 std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n / d - ((n % d != 0) && (n < 0)); }
 std::int64_t ceil_div(std::int64_t n, std::int64_t d) { return n / d + ((n % d != 0) && (n > 0)); }
 
-constexpr std::int64_t kHalfPixel = kSubpixelScale / 2;
 
 // Writes `count` pixels from `p` on: one flat colour, or per pixel from `next_color()` (called in order).
 template <int C, typename NextColor>
@@ -80,7 +79,7 @@ Edge make_edge(const ScreenVertex& from, const ScreenVertex& to) {
 // row_step[k] per row down.
 // Returns the doubled area (0: degenerate, nothing covered).
 template <typename Span>
-std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)[3], Rect clip, Span&& span) {
+std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)[3], Rect clip, SamplePoint sample, Span&& span) {
   ScreenVertex v[3];
   for (int k = 0; k < 3; ++k) v[k].x = xs[k], v[k].y = ys[k];
   std::int64_t area = (std::int64_t{v[1].x} - v[0].x) * (std::int64_t{v[2].y} - v[0].y) -
@@ -93,22 +92,23 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
     area = -area;
   }
 
-  // Pixels whose centre (256 i + 128) lies in the bounding box, clamped to the clip rectangle.
+  // Pixels whose sample point (256 i + sample.x, 256 j + sample.y) lies in the bounding box, clamped to
+  // the clip rectangle.
   const std::int64_t min_x = std::min({v[0].x, v[1].x, v[2].x}), max_x = std::max({v[0].x, v[1].x, v[2].x});
   const std::int64_t min_y = std::min({v[0].y, v[1].y, v[2].y}), max_y = std::max({v[0].y, v[1].y, v[2].y});
-  const std::int64_t i_lo = std::max<std::int64_t>(clip.x0, ceil_div(min_x - kHalfPixel, kSubpixelScale));
-  const std::int64_t i_hi = std::min<std::int64_t>(clip.x1 - 1, floor_div(max_x - kHalfPixel, kSubpixelScale));
-  const std::int64_t j_lo = std::max<std::int64_t>(clip.y0, ceil_div(min_y - kHalfPixel, kSubpixelScale));
-  const std::int64_t j_hi = std::min<std::int64_t>(clip.y1 - 1, floor_div(max_y - kHalfPixel, kSubpixelScale));
+  const std::int64_t i_lo = std::max<std::int64_t>(clip.x0, ceil_div(min_x - sample.x, kSubpixelScale));
+  const std::int64_t i_hi = std::min<std::int64_t>(clip.x1 - 1, floor_div(max_x - sample.x, kSubpixelScale));
+  const std::int64_t j_lo = std::max<std::int64_t>(clip.y0, ceil_div(min_y - sample.y, kSubpixelScale));
+  const std::int64_t j_hi = std::min<std::int64_t>(clip.y1 - 1, floor_div(max_y - sample.y, kSubpixelScale));
   if (i_lo > i_hi || j_lo > j_hi) return area;
 
   // Edge k is opposite normalized vertex k, so its value is that vertex's weight times `area`.
   const Edge e[3] = {make_edge(v[1], v[2]), make_edge(v[2], v[0]), make_edge(v[0], v[1])};
   const ScreenVertex* origin[3] = {&v[1], &v[2], &v[0]};
-  const std::int64_t px = i_lo * kSubpixelScale + kHalfPixel;
+  const std::int64_t px = i_lo * kSubpixelScale + sample.x;
   std::int64_t row_value[3], step[3], row_step[3];
   for (int k = 0; k < 3; ++k) {
-    row_value[k] = e[k].a * (px - origin[k]->x) + e[k].b * (j_lo * kSubpixelScale + kHalfPixel - origin[k]->y);
+    row_value[k] = e[k].a * (px - origin[k]->x) + e[k].b * (j_lo * kSubpixelScale + sample.y - origin[k]->y);
     step[slot[k]] = e[k].a * kSubpixelScale;
     row_step[slot[k]] = e[k].b * kSubpixelScale;
   }
@@ -148,12 +148,12 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
 inline std::int64_t round_to_int(double x) { return static_cast<std::int64_t>(x >= 0 ? x + 0.5 : x - 0.5); }
 
 template <int C>
-void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip) {
+void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip, SamplePoint sample) {
   const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x}, ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
   const Rgba8 c[3] = {tri.v[0].color, tri.v[1].color, tri.v[2].color};
   if (!mode.smooth) {
-    for_each_span(xs, ys, clip, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&)[3],
-                                    const std::int64_t (&)[3], const std::int64_t (&)[3], std::int64_t) {
+    for_each_span(xs, ys, clip, sample, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&)[3],
+                                            const std::int64_t (&)[3], const std::int64_t (&)[3], std::int64_t) {
       shade_span<C>(image.pixels.data() + (j * image.width + lo) * C, hi - lo + 1, mode, c[0], [&] { return c[0]; });
     });
     return;
@@ -162,8 +162,8 @@ void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, 
   std::int64_t slope[4] = {};  // 16.16 per pixel
   std::uint8_t lo_c[4], hi_c[4];
   double scale = 0;
-  for_each_span(xs, ys, clip, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
-                                  const std::int64_t (&step)[3], const std::int64_t (&)[3], std::int64_t area) {
+  for_each_span(xs, ys, clip, sample, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
+                                          const std::int64_t (&step)[3], const std::int64_t (&)[3], std::int64_t area) {
     if (scale == 0) {  // once per triangle: depends on the triangle only
       scale = 65536.0 / static_cast<double>(area);
       for (int ch = 0; ch < 4; ++ch) {
@@ -193,14 +193,14 @@ void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, 
 
 template <int C>
 void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawList& list, Image& image, float* depth,
-                         Rect clip) {
+                         Rect clip, SamplePoint sample) {
   const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x}, ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
   const DepthVertex* v = tri.v;
   const PrimitivePlan mode = op.mode;
   const Rgba8 flat{to_byte(v[0].color[0]), to_byte(v[0].color[1]), to_byte(v[0].color[2]), to_byte(v[0].color[3])};
   const double flip = tri.back_facing ? -1.0 : 1.0;  // two-sided lighting
-  for_each_span(xs, ys, clip, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
-                                  const std::int64_t (&step)[3], const std::int64_t (&)[3], std::int64_t area) {
+  for_each_span(xs, ys, clip, sample, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
+                                          const std::int64_t (&step)[3], const std::int64_t (&)[3], std::int64_t area) {
     const double inv_area = 1.0 / static_cast<double>(area);
     const std::size_t row = static_cast<std::size_t>(j) * image.width;
     for (std::int64_t i = lo; i <= hi; ++i) {
@@ -242,7 +242,7 @@ void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawL
 // ---- Triangles, exact wide path: vertices beyond the fast range, up to 2^128 px --------------------------
 
 template <int C>
-void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& image, Rect clip) {
+void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& image, Rect clip, SamplePoint sample) {
   int order[3] = {0, 1, 2};
   Wide x[3], y[3];
   for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(tri.x[k]), y[k] = Wide::from_double(tri.y[k]);
@@ -255,7 +255,8 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
   // Bounding box in doubles (exact integral values), widened by a pixel: it only bounds the work, the
   // per-row spans below decide coverage exactly.
   auto pixel_range = [](double lo_units, double hi_units, int c0, int c1) {
-    const double lo = std::ceil((lo_units - kHalfPixel) / kSubpixelScale) - 1, hi = std::floor((hi_units - kHalfPixel) / kSubpixelScale) + 1;
+    // widened by one pixel on each side, so the sample's offset within the pixel does not matter here
+    const double lo = std::ceil(lo_units / kSubpixelScale) - 2, hi = std::floor(hi_units / kSubpixelScale) + 1;
     return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::max<double>(c0, lo)),
                                                  static_cast<std::int64_t>(std::min<double>(c1 - 1, hi))};
   };
@@ -264,7 +265,7 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
   if (i_lo > i_hi || j_lo > j_hi) return;
 
   Wide a[3], row_value[3], step_x[3], step_y[3], min_value[3];
-  const Wide px(i_lo * kSubpixelScale + kHalfPixel), py(j_lo * kSubpixelScale + kHalfPixel);
+  const Wide px(i_lo * kSubpixelScale + sample.x), py(j_lo * kSubpixelScale + sample.y);
   for (int k = 0; k < 3; ++k) {
     const int from = (k + 1) % 3, to = (k + 2) % 3;  // edge opposite vertex k
     a[k] = y[from] - y[to];
@@ -456,7 +457,7 @@ std::int64_t rough_work(const DrawList& list, const DrawOp& op, std::uint32_t k)
 }
 
 template <int C>
-void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop) {
+void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop, SamplePoint sample) {
   std::int64_t work = 0;
   for (const DrawOp& op : list.ops) {
     for (std::uint32_t k = op.first; k < op.first + op.count; ++k) {
@@ -465,9 +466,9 @@ void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const
         if (stop.now()) return;
       }
       switch (op.kind) {
-        case DrawOp::Kind::triangles: fill_triangle<C>(list.triangles[k], op.mode, image, clip); break;
-        case DrawOp::Kind::huge_triangles: fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip); break;
-        case DrawOp::Kind::depth_triangles: fill_depth_triangle<C>(list.depth_triangles[k], op, list, image, depth, clip); break;
+        case DrawOp::Kind::triangles: fill_triangle<C>(list.triangles[k], op.mode, image, clip, sample); break;
+        case DrawOp::Kind::huge_triangles: fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip, sample); break;
+        case DrawOp::Kind::depth_triangles: fill_depth_triangle<C>(list.depth_triangles[k], op, list, image, depth, clip, sample); break;
         case DrawOp::Kind::lines:
           if (line_fits_int128(list.lines[k])) draw_line<C, __int128>(list.lines[k], op.mode, image, depth, clip);
           else draw_line<C, Wide>(list.lines[k], op.mode, image, depth, clip);
@@ -486,12 +487,33 @@ bool Stop::now() const {
   return stop;
 }
 
-void draw(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop) {
+void draw(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop, SamplePoint sample) {
   switch (image.format) {
-    case PixelFormat::grey8: return draw_all<1>(list, image, depth, clip, stop);
-    case PixelFormat::grey_alpha8: return draw_all<2>(list, image, depth, clip, stop);
-    case PixelFormat::rgb8: return draw_all<3>(list, image, depth, clip, stop);
-    case PixelFormat::rgba8: return draw_all<4>(list, image, depth, clip, stop);
+    case PixelFormat::grey8: return draw_all<1>(list, image, depth, clip, stop, sample);
+    case PixelFormat::grey_alpha8: return draw_all<2>(list, image, depth, clip, stop, sample);
+    case PixelFormat::rgb8: return draw_all<3>(list, image, depth, clip, stop, sample);
+    case PixelFormat::rgba8: return draw_all<4>(list, image, depth, clip, stop, sample);
+  }
+}
+
+const std::vector<SamplePoint>& sample_pattern(int samples) {
+  // Direct3D's standard multisample positions, in 1/16 px from the pixel centre, scaled to 1/256 px from
+  // the pixel's corner: every position is on the rasterizer's sub-pixel grid.
+  auto pattern = [](std::initializer_list<std::pair<int, int>> sixteenths) {
+    std::vector<SamplePoint> out;
+    for (auto [x, y] : sixteenths) out.push_back({128 + 16 * x, 128 + 16 * y});
+    return out;
+  };
+  static const std::vector<SamplePoint> one{{128, 128}};
+  static const std::vector<SamplePoint> four = pattern({{-2, -6}, {6, -2}, {-6, 2}, {2, 6}});
+  static const std::vector<SamplePoint> eight = pattern({{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}});
+  static const std::vector<SamplePoint> sixteen = pattern({{1, 1}, {-1, -3}, {-3, 2}, {4, -1}, {-5, -2}, {2, 5}, {5, 3}, {3, -5},
+                                                           {-2, 6}, {0, -7}, {-4, -6}, {-6, 4}, {-8, 0}, {7, -4}, {6, 7}, {-7, -8}});
+  switch (samples) {
+    case 4: return four;
+    case 8: return eight;
+    case 16: return sixteen;
+    default: return one;
   }
 }
 

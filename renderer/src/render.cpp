@@ -16,20 +16,36 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   std::atomic<bool> stopped{false};  // set by whichever band first sees the deadline or the cancel flag
   const detail::Stop stop{control.deadline, control.cancel, &stopped};
   Image image = detail::make_color_buffer(plan, scene.background);
-  std::vector<float> depth = detail::make_depth_buffer(plan);  // empty unless the plan has 3D content
-  float* const z = depth.empty() ? nullptr : depth.data();
+
+  // Anti-aliasing: one colour plane (and depth plane) per sample position, drawn like an aliased image
+  // whose coverage is tested at that position, then resolved into `image`. Aliased: `image` itself.
+  const std::vector<detail::SamplePoint>& pattern = detail::sample_pattern(plan.samples);
+  std::vector<Image> planes;
+  std::vector<std::vector<float>> depth;
+  if (plan.samples > 1) planes.assign(pattern.size(), image);
+  for (std::size_t s = 0; s < pattern.size(); ++s) depth.push_back(detail::make_depth_buffer(plan));
+
+  if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
+    std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
+    for (const Image& p : planes) bytes += static_cast<std::int64_t>(p.pixels.size());
+    for (const auto& d : depth) bytes += static_cast<std::int64_t>(d.size() * sizeof(float));
+    control.stats->pixel_bytes = bytes;
+  }
+  auto draw_band = [&](detail::Rect rows) {
+    for (std::size_t s = 0; s < pattern.size(); ++s) {
+      Image& target = planes.empty() ? image : planes[s];
+      detail::draw(list, target, depth[s].empty() ? nullptr : depth[s].data(), rows, stop, pattern[s]);
+    }
+    if (!planes.empty()) detail::resolve(planes, image, rows);
+  };
   const int bands = plan.threads;
   if (bands <= 1) {
-    detail::draw(list, image, z, detail::band(plan, 0, 1), stop);  // small work: no hand-off at all
-    if (stopped) throw RenderCancelled("render stopped: deadline passed or cancelled");
-    return image;
-  }
-  {
+    draw_band(detail::band(plan, 0, 1));  // small work: no hand-off at all
+  } else {
     std::vector<std::jthread> workers;
     workers.reserve(bands - 1);
-    for (int b = 1; b < bands; ++b)
-      workers.emplace_back([&, b] { detail::draw(list, image, z, detail::band(plan, b, bands), stop); });
-    detail::draw(list, image, z, detail::band(plan, 0, bands), stop);
+    for (int b = 1; b < bands; ++b) workers.emplace_back([&, b] { draw_band(detail::band(plan, b, bands)); });
+    draw_band(detail::band(plan, 0, bands));
   }  // jthreads join here
   if (stopped) throw RenderCancelled("render stopped: deadline passed or cancelled");
   return image;

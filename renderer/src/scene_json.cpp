@@ -450,13 +450,13 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
   }
   if (type == "triangle") {
     p.kind = PrimitiveKind::triangle;
-    check_keys(v, pointer, {"type", "points", "color", "colors", "fill"});
+    check_keys(v, pointer, {"type", "points", "color", "colors", "fill", "width"});
   } else if (type == "line") {
     p.kind = PrimitiveKind::line;
-    check_keys(v, pointer, {"type", "points", "color", "colors"});
+    check_keys(v, pointer, {"type", "points", "color", "colors", "width"});
   } else if (type == "polyline") {
     p.kind = PrimitiveKind::polyline;
-    check_keys(v, pointer, {"type", "points", "color", "colors", "closed"});
+    check_keys(v, pointer, {"type", "points", "color", "colors", "closed", "width"});
   } else {
     invalid(type_pointer, "unknown primitive type \"" + type + "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\"");
   }
@@ -475,6 +475,11 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
   if (scene.points.size() + n > UINT32_MAX) fail(ErrorKind::limit, points_pointer, "too many points in the scene");
   if (auto it = v.find("fill"); it != v.end()) p.fill = read_bool(*it, Path(pointer, "fill"));
   if (auto it = v.find("closed"); it != v.end()) p.closed = read_bool(*it, Path(pointer, "closed"));
+  if (auto it = v.find("width"); it != v.end()) {
+    const double w = read_number(*it, Path(pointer, "width"));
+    if (!(w > 0 && w <= 4096)) invalid(Path(pointer, "width"), "line \"width\" is in pixels, more than 0 and at most 4096; got " + it->dump());
+    p.width = static_cast<float>(w);
+  }
 
   // The first point decides: [x, y] is image space, [x, y, z] world space; all points must agree.
   const json& first = (*points_it)[0];
@@ -634,7 +639,7 @@ json parse_document(std::string_view text, int max_depth) {
 Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
   const json doc = parse_document(json_text, limits.max_json_depth);
   if (!doc.is_object()) invalid(kRoot, std::string("a scene is a JSON object, got ") + type_name(doc));
-  check_keys(doc, kRoot, {"width", "height", "background", "primitives", "camera", "light"});
+  check_keys(doc, kRoot, {"width", "height", "background", "antialias", "primitives", "camera", "light"});
 
   Scene scene;
   auto read_side = [&](const char* key, int max_side) {
@@ -654,6 +659,12 @@ Scene parse_scene(std::string_view json_text, const Limits& limits, const Upload
     fail(ErrorKind::limit, kRoot, std::to_string(scene.width) + "x" + std::to_string(scene.height) + " is " +
                                    std::to_string(pixels) + " pixels, over the limit of " + std::to_string(limits.max_pixels));
 
+  if (auto it = doc.find("antialias"); it != doc.end()) {
+    const Path at(kRoot, "antialias");
+    const std::int64_t n = read_integer(*it, at);
+    if (n != 1 && n != 4 && n != 8 && n != 16) invalid(at, "\"antialias\" is the samples per pixel: 1, 4, 8 or 16; got " + it->dump());
+    scene.samples = static_cast<int>(n);
+  }
   if (auto it = doc.find("background"); it != doc.end()) scene.background = read_color(*it, Path(kRoot, "background"));
 
   if (auto it = doc.find("primitives"); it != doc.end()) {

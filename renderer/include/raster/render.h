@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <stdexcept>
 
 #include "raster/image.h"
@@ -11,11 +12,17 @@
 
 namespace raster {
 
+/// What a render reports back.
+struct RenderStats {
+  std::int64_t pixel_bytes = 0;  ///< bytes allocated for pixel storage: output, sample planes, depth
+};
+
 /// Per-render control from the caller: a deadline and a cancel flag, checked between batches of
 /// primitives in every band. Nothing here is process-wide.
 struct RenderControl {
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   const std::atomic<bool>* cancel = nullptr;  ///< optional; true stops the render (e.g. on shutdown)
+  RenderStats* stats = nullptr;               ///< optional; filled in by render()
 };
 
 /// Thrown by render() when the deadline passed or the cancel flag was set; no image is returned.

@@ -93,6 +93,7 @@ struct Primitive {
   bool per_vertex_color = false;  ///< true: point_count colours from first_color; false: one flat colour
   bool fill = true;               ///< triangles: false draws the outline with the line rule
   bool closed = false;            ///< polylines: also join the last point to the first
+  float width = 1;                ///< lines, polylines, outlines: pixels; != 1 (or anti-aliasing) draws rectangles
   std::uint32_t mesh = 0;         ///< mesh (also 3D triangles, lines and OBJ models): index into Scene::meshes
 };
 
@@ -107,6 +108,7 @@ struct Scene {
   std::vector<Mesh> meshes;           ///< 3D content, referenced by mesh primitives
   Camera camera;                      ///< used only when the scene has 3D content
   Light light;
+  int samples = 1;                    ///< "antialias": samples per pixel, 1 (aliased), 4, 8 or 16
 
   bool has_3d() const { return !meshes.empty(); }
 
