@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build bench loadtest test-proxy clean
+.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy clean
 
 deps:
 	@scripts/install-deps
@@ -48,6 +48,11 @@ bench-build: build
 # Measures and rewrites docs/performance.md (BENCH_RUNS=11 by default).
 bench: bench-build
 	@scripts/bench
+
+# Error against an exact reference and render time for every anti-aliasing level; rewrites
+# docs/accuracy.md and docs/accuracy.png.
+bench-accuracy: bench-build
+	@build-bench/bench/accuracy .
 
 # wrk against a local server on the mid-size scene; LOADTEST_SECONDS=30 by default.
 loadtest: bench-build

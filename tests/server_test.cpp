@@ -220,3 +220,15 @@ TEST(ServerObj, BadModelIsA422NamingTheLine) {
   ASSERT_TRUE(empty);
   EXPECT_EQ(empty->status, 422);
 }
+
+TEST(Server, AntialiasThroughHttp) {
+  TestServer server;
+  auto r = server.client().Post("/render", test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/aa-16.json"), "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200);
+  EXPECT_NE(r->get_header_value("X-Render-Plan").find("samples=16"), std::string::npos) << r->get_header_value("X-Render-Plan");
+  auto bad = server.client().Post("/render", R"({"width": 8, "height": 8, "antialias": 3})", "application/json");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_EQ(problem_of(bad)["pointer"], "/antialias");
+}
