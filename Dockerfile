@@ -6,10 +6,12 @@ RUN scripts/install-deps
 COPY . .
 RUN make build BUILD=/build
 
-# Runtime: only the shared libraries rasterd links against, and a non-root user.
+# Runtime: only the shared libraries rasterd links against (from `ldd build/rasterd` mapped to packages with
+# dpkg -S; their own dependencies, ssl/zlib/brotli, come with them), curl for the health check, and a
+# non-root user.
 FROM debian:bookworm-slim
 RUN apt-get update -qq \
- && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libdeflate0 curl ca-certificates \
+ && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libdeflate0 libtinyobjloader2rc10 curl ca-certificates \
  && rm -rf /var/lib/apt/lists/* \
  && useradd --system --no-create-home --uid 10001 rasterd
 COPY --from=build /build/rasterd /usr/local/bin/rasterd

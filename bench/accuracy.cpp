@@ -22,6 +22,7 @@
 #pragma GCC diagnostic pop
 
 #include "raster/raster.h"
+#include "scenes.h"
 
 namespace {
 
@@ -47,27 +48,14 @@ Rgba8 random_color(std::mt19937& rng) {
   return {static_cast<std::uint8_t>(40 + rng() % 216), static_cast<std::uint8_t>(40 + rng() % 216), static_cast<std::uint8_t>(40 + rng() % 216), 255};
 }
 
+// Each primitive goes into the scene and, as the polygon it covers, into the reference.
 void add_triangle(Suite& s, Point2 a, Point2 b, Point2 c, Rgba8 color) {
-  raster::Primitive p;
-  p.first_point = static_cast<std::uint32_t>(s.scene.points.size());
-  p.point_count = 3;
-  p.first_color = static_cast<std::uint32_t>(s.scene.colors.size());
-  s.scene.points.insert(s.scene.points.end(), {a, b, c});
-  s.scene.colors.push_back(color);
-  s.scene.primitives.push_back(p);
+  bench::add_triangle(s.scene, {a, b, c}, &color, 1);
   s.shapes.push_back({{a, b, c}, color});
 }
 
 void add_line(Suite& s, Point2 a, Point2 b, double width, Rgba8 color) {
-  raster::Primitive p;
-  p.kind = raster::PrimitiveKind::line;
-  p.first_point = static_cast<std::uint32_t>(s.scene.points.size());
-  p.point_count = 2;
-  p.first_color = static_cast<std::uint32_t>(s.scene.colors.size());
-  p.width = static_cast<float>(width);
-  s.scene.points.insert(s.scene.points.end(), {a, b});
-  s.scene.colors.push_back(color);
-  s.scene.primitives.push_back(p);
+  bench::add_line(s.scene, a, b, color, static_cast<float>(width));
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy), nx = -dy / len * width / 2, ny = dx / len * width / 2;
   s.shapes.push_back({{{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, color});
 }
@@ -248,26 +236,8 @@ void supersampled_reference(const Suite& s, std::vector<double>& rgb, std::vecto
 
 struct PlotScene {
   raster::Scene scene;
-  void tri(Point2 a, Point2 b, Point2 c, Rgba8 col) {
-    raster::Primitive p;
-    p.first_point = static_cast<std::uint32_t>(scene.points.size());
-    p.point_count = 3;
-    p.first_color = static_cast<std::uint32_t>(scene.colors.size());
-    scene.points.insert(scene.points.end(), {a, b, c});
-    scene.colors.push_back(col);
-    scene.primitives.push_back(p);
-  }
-  void line(Point2 a, Point2 b, Rgba8 col, float width = 1) {
-    raster::Primitive p;
-    p.kind = raster::PrimitiveKind::line;
-    p.first_point = static_cast<std::uint32_t>(scene.points.size());
-    p.point_count = 2;
-    p.first_color = static_cast<std::uint32_t>(scene.colors.size());
-    p.width = width;
-    scene.points.insert(scene.points.end(), {a, b});
-    scene.colors.push_back(col);
-    scene.primitives.push_back(p);
-  }
+  void tri(Point2 a, Point2 b, Point2 c, Rgba8 col) { bench::add_triangle(scene, {a, b, c}, &col, 1); }
+  void line(Point2 a, Point2 b, Rgba8 col, float width = 1) { bench::add_line(scene, a, b, col, width); }
   void text(double x, double y, const std::string& s, Rgba8 col, double scale = 1.5) {
     static char buffer[60000];  // stb_easy_font: 4 vertices of 16 bytes per quad
     const int quads = stb_easy_font_print(0, 0, const_cast<char*>(s.c_str()), nullptr, buffer, sizeof buffer);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "raster/raster.h"
+#include "scenes.h"
 
 namespace {
 
@@ -16,19 +17,12 @@ raster::Scene scene_of(int side, int triangles, unsigned seed) {
   std::uniform_real_distribution<double> pos(0, side), offset(-side / 8.0, side / 8.0);
   raster::Scene s;
   s.width = s.height = side;
+  auto color = [&] { return raster::Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 255}; };
   for (int i = 0; i < triangles; ++i) {
-    raster::Primitive p;
-    p.kind = raster::PrimitiveKind::triangle;
-    p.first_point = static_cast<std::uint32_t>(s.points.size());
-    p.point_count = 3;
-    p.first_color = static_cast<std::uint32_t>(s.colors.size());
-    p.per_vertex_color = true;
     const double cx = pos(rng), cy = pos(rng);
-    for (int k = 0; k < 3; ++k) {
-      s.points.push_back({cx + offset(rng), cy + offset(rng)});
-      s.colors.push_back({static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 255});
-    }
-    s.primitives.push_back(p);
+    const raster::Point2 p[3] = {{cx + offset(rng), cy + offset(rng)}, {cx + offset(rng), cy + offset(rng)}, {cx + offset(rng), cy + offset(rng)}};
+    const raster::Rgba8 c[3] = {color(), color(), color()};
+    bench::add_triangle(s, p, c, 3);
   }
   return s;
 }

@@ -11,6 +11,18 @@ raster::Rgba8 random_color(std::mt19937& rng) {
   return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 255};
 }
 
+void random_triangles(raster::Scene& s, int count, double radius, std::mt19937& rng) {
+  std::uniform_real_distribution<double> x(0, s.width), y(0, s.height), d(-radius, radius);
+  for (int i = 0; i < count; ++i) {
+    const double cx = x(rng), cy = y(rng);
+    const raster::Point2 p[3] = {{cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}};
+    const raster::Rgba8 c[3] = {random_color(rng), random_color(rng), random_color(rng)};
+    add_triangle(s, p, c, 3);
+  }
+}
+
+}  // namespace
+
 void add_triangle(raster::Scene& s, const raster::Point2 (&p)[3], const raster::Rgba8* colors, int ncolors) {
   raster::Primitive prim;
   prim.kind = raster::PrimitiveKind::triangle;
@@ -23,17 +35,17 @@ void add_triangle(raster::Scene& s, const raster::Point2 (&p)[3], const raster::
   s.primitives.push_back(prim);
 }
 
-void random_triangles(raster::Scene& s, int count, double radius, std::mt19937& rng) {
-  std::uniform_real_distribution<double> x(0, s.width), y(0, s.height), d(-radius, radius);
-  for (int i = 0; i < count; ++i) {
-    const double cx = x(rng), cy = y(rng);
-    const raster::Point2 p[3] = {{cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}};
-    const raster::Rgba8 c[3] = {random_color(rng), random_color(rng), random_color(rng)};
-    add_triangle(s, p, c, 3);
-  }
+void add_line(raster::Scene& s, raster::Point2 a, raster::Point2 b, raster::Rgba8 color, float width) {
+  raster::Primitive prim;
+  prim.kind = raster::PrimitiveKind::line;
+  prim.first_point = static_cast<std::uint32_t>(s.points.size());
+  prim.point_count = 2;
+  prim.first_color = static_cast<std::uint32_t>(s.colors.size());
+  prim.width = width;
+  s.points.insert(s.points.end(), {a, b});
+  s.colors.push_back(color);
+  s.primitives.push_back(prim);
 }
-
-}  // namespace
 
 raster::Scene make_scene(const std::string& kind, unsigned seed) {
   std::mt19937 rng(seed);

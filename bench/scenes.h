@@ -12,6 +12,12 @@ namespace bench {
 /// (2,000 triangles of about +-30 px on 512x512, the load-test scene). Same seed, same scene.
 raster::Scene make_scene(const std::string& kind, unsigned seed = 1);
 
+/// Appends a triangle with one colour (ncolors 1) or one per vertex (ncolors 3).
+void add_triangle(raster::Scene& scene, const raster::Point2 (&points)[3], const raster::Rgba8* colors, int ncolors);
+
+/// Appends a line of `width` pixels with one colour.
+void add_line(raster::Scene& scene, raster::Point2 a, raster::Point2 b, raster::Rgba8 color, float width = 1);
+
 /// The same scene as JSON text (format v1), for end-to-end measurements.
 std::string scene_json(const raster::Scene& scene);
 
