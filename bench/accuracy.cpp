@@ -32,7 +32,7 @@ using raster::Rgba8;
 constexpr int kSize = 256;
 constexpr int kLevels[] = {1, 4, 8, 16};
 
-struct Shape {              // what the reference composites: a convex polygon with one colour
+struct Shape {               // what the reference composites: a convex polygon with one colour
   std::vector<Point2> poly;  // pixels
   Rgba8 color;
 };
@@ -45,7 +45,8 @@ struct Suite {
 };
 
 Rgba8 random_color(std::mt19937& rng) {
-  return {static_cast<std::uint8_t>(40 + rng() % 216), static_cast<std::uint8_t>(40 + rng() % 216), static_cast<std::uint8_t>(40 + rng() % 216), 255};
+  return {static_cast<std::uint8_t>(40 + rng() % 216), static_cast<std::uint8_t>(40 + rng() % 216),
+          static_cast<std::uint8_t>(40 + rng() % 216), 255};
 }
 
 // Each primitive goes into the scene and, as the polygon it covers, into the reference.
@@ -56,8 +57,10 @@ void add_triangle(Suite& s, Point2 a, Point2 b, Point2 c, Rgba8 color) {
 
 void add_line(Suite& s, Point2 a, Point2 b, double width, Rgba8 color) {
   bench::add_line(s.scene, a, b, color, static_cast<float>(width));
-  const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy), nx = -dy / len * width / 2, ny = dx / len * width / 2;
-  s.shapes.push_back({{{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, color});
+  const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy), nx = -dy / len * width / 2,
+               ny = dx / len * width / 2;
+  s.shapes.push_back(
+      {{{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, color});
 }
 
 Suite blank(const std::string& name) {
@@ -74,7 +77,8 @@ std::vector<Suite> suites() {
   {
     Suite s = blank("triangles");
     for (int i = 0; i < 300; ++i) {
-      const double size = std::pow(10.0, -0.3 + unit(rng) * 2.8), cx = unit(rng) * kSize, cy = unit(rng) * kSize;
+      const double size = std::pow(10.0, -0.3 + unit(rng) * 2.8), cx = unit(rng) * kSize,
+                   cy = unit(rng) * kSize;
       auto p = [&] { return Point2{cx + (unit(rng) - 0.5) * size, cy + (unit(rng) - 0.5) * size}; };
       add_triangle(s, p(), p(), p(), random_color(rng));
     }
@@ -86,7 +90,8 @@ std::vector<Suite> suites() {
     const Point2 c{128.3, 127.6};
     for (int k = 0; k < 1000; ++k) {
       const double t0 = 2 * M_PI * k / 1000, t1 = 2 * M_PI * (k + 1) / 1000;
-      add_triangle(s, c, {c.x + 120 * std::cos(t0), c.y + 120 * std::sin(t0)}, {c.x + 120 * std::cos(t1), c.y + 120 * std::sin(t1)},
+      add_triangle(s, c, {c.x + 120 * std::cos(t0), c.y + 120 * std::sin(t0)},
+                   {c.x + 120 * std::cos(t1), c.y + 120 * std::sin(t1)},
                    k % 2 ? Rgba8{230, 200, 80, 255} : Rgba8{60, 140, 230, 255});
     }
     out.push_back(std::move(s));
@@ -94,8 +99,10 @@ std::vector<Suite> suites() {
   {
     Suite s = blank("slivers");
     for (int i = 0; i < 200; ++i) {
-      const double t = unit(rng) * M_PI, len = 40 + unit(rng) * 200, thick = std::pow(10.0, -1.5 + unit(rng) * 1.5);
-      const Point2 a{unit(rng) * kSize, unit(rng) * kSize}, b{a.x + len * std::cos(t), a.y + len * std::sin(t)};
+      const double t = unit(rng) * M_PI, len = 40 + unit(rng) * 200,
+                   thick = std::pow(10.0, -1.5 + unit(rng) * 1.5);
+      const Point2 a{unit(rng) * kSize, unit(rng) * kSize},
+          b{a.x + len * std::cos(t), a.y + len * std::sin(t)};
       add_triangle(s, a, b, {b.x - thick * std::sin(t), b.y + thick * std::cos(t)}, random_color(rng));
     }
     out.push_back(std::move(s));
@@ -104,14 +111,16 @@ std::vector<Suite> suites() {
     Suite s = blank("lines");
     for (int i = 0; i < 72; ++i) {
       const double t = i * M_PI / 36 + 0.013, w = i % 3 == 0 ? 1.0 : i % 3 == 1 ? 2.0 : 4.0;
-      add_line(s, {128 + 12 * std::cos(t), 128 + 12 * std::sin(t)}, {128 + 118 * std::cos(t), 128 + 118 * std::sin(t)}, w, random_color(rng));
+      add_line(s, {128 + 12 * std::cos(t), 128 + 12 * std::sin(t)},
+               {128 + 118 * std::cos(t), 128 + 118 * std::sin(t)}, w, random_color(rng));
     }
     out.push_back(std::move(s));
   }
   return out;
 }
 
-// Area of the convex polygon `poly` inside the pixel square [x, x+1] x [y, y+1] (Sutherland-Hodgman + shoelace).
+// Area of the convex polygon `poly` inside the pixel square [x, x+1] x [y, y+1] (Sutherland-Hodgman +
+// shoelace).
 double coverage(const std::vector<Point2>& poly, int x, int y) {
   std::vector<Point2> cur = poly, next;
   const double bounds[4] = {double(x), double(x + 1), double(y), double(y + 1)};
@@ -119,10 +128,14 @@ double coverage(const std::vector<Point2>& poly, int x, int y) {
     next.clear();
     auto inside = [&](Point2 p) {
       switch (side) {
-        case 0: return p.x >= bounds[0];
-        case 1: return p.x <= bounds[1];
-        case 2: return p.y >= bounds[2];
-        default: return p.y <= bounds[3];
+        case 0:
+          return p.x >= bounds[0];
+        case 1:
+          return p.x <= bounds[1];
+        case 2:
+          return p.y >= bounds[2];
+        default:
+          return p.y <= bounds[3];
       }
     };
     for (std::size_t i = 0; i < cur.size(); ++i) {
@@ -136,7 +149,8 @@ double coverage(const std::vector<Point2>& poly, int x, int y) {
     std::swap(cur, next);
   }
   double area = 0;
-  for (std::size_t i = 0; i < cur.size(); ++i) area += cur[i].x * cur[(i + 1) % cur.size()].y - cur[(i + 1) % cur.size()].x * cur[i].y;
+  for (std::size_t i = 0; i < cur.size(); ++i)
+    area += cur[i].x * cur[(i + 1) % cur.size()].y - cur[(i + 1) % cur.size()].x * cur[i].y;
   return std::abs(area) / 2;
 }
 
@@ -144,17 +158,21 @@ double coverage(const std::vector<Point2>& poly, int x, int y) {
 void reference(const Suite& s, std::vector<double>& rgb, std::vector<std::uint8_t>& edge) {
   rgb.assign(kSize * kSize * 3, 0);
   edge.assign(kSize * kSize, 0);
-  for (int i = 0; i < kSize * kSize; ++i) rgb[i * 3] = s.scene.background.r, rgb[i * 3 + 1] = s.scene.background.g, rgb[i * 3 + 2] = s.scene.background.b;
+  for (int i = 0; i < kSize * kSize; ++i)
+    rgb[i * 3] = s.scene.background.r, rgb[i * 3 + 1] = s.scene.background.g,
+            rgb[i * 3 + 2] = s.scene.background.b;
   for (const Shape& shape : s.shapes) {
     double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
-    for (const Point2& p : shape.poly) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    for (const Point2& p : shape.poly)
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     for (int y = std::max(0, int(std::floor(y0))); y <= std::min(kSize - 1, int(std::floor(y1))); ++y)
       for (int x = std::max(0, int(std::floor(x0))); x <= std::min(kSize - 1, int(std::floor(x1))); ++x) {
         const double a = coverage(shape.poly, x, y);
         if (a <= 0) continue;
         if (a < 1 - 1e-12) edge[y * kSize + x] = 1;
         const double c[3] = {double(shape.color.r), double(shape.color.g), double(shape.color.b)};
-        const double bg[3] = {double(s.scene.background.r), double(s.scene.background.g), double(s.scene.background.b)};
+        const double bg[3] = {double(s.scene.background.r), double(s.scene.background.g),
+                              double(s.scene.background.b)};
         for (int k = 0; k < 3; ++k) {
           double& v = rgb[(y * kSize + x) * 3 + k];
           // Painter's coverage compositing, or for tiling shapes the exact sum: replace background by colour.
@@ -182,11 +200,13 @@ struct Errors {
   double mean = 0, p99 = 0, max = 0;
 };
 
-Errors errors(const raster::Image& img, const std::vector<double>& ref, const std::vector<std::uint8_t>& edge) {
+Errors errors(const raster::Image& img, const std::vector<double>& ref,
+              const std::vector<std::uint8_t>& edge) {
   std::vector<double> e;
   for (int i = 0; i < kSize * kSize; ++i) {
     if (!edge[i]) continue;
-    for (int k = 0; k < 3; ++k) e.push_back(std::abs(img.pixels[i * img.channels() + (img.channels() >= 3 ? k : 0)] - ref[i * 3 + k]));
+    for (int k = 0; k < 3; ++k)
+      e.push_back(std::abs(img.pixels[i * img.channels() + (img.channels() >= 3 ? k : 0)] - ref[i * 3 + k]));
   }
   Errors r;
   if (e.empty()) return r;
@@ -270,34 +290,49 @@ int main(int argc, char** argv) {
   for (const Suite& s : all) {
     std::vector<double> ref;
     std::vector<std::uint8_t> edge;
-    if (s.shapes.empty()) supersampled_reference(s, ref, edge);
-    else reference(s, ref, edge);
+    if (s.shapes.empty())
+      supersampled_reference(s, ref, edge);
+    else
+      reference(s, ref, edge);
     for (int samples : kLevels) {
       double ms = 0;
       const raster::Image img = render_at(s.scene, samples, &ms);
       rows.push_back({s.name, samples, errors(img, ref, edge), ms});
-      std::fprintf(stderr, "%-12s %2d samples: mean %.2f p99 %.1f max %.1f (1/255), %.2f ms\n", s.name.c_str(), samples,
-                   rows.back().err.mean, rows.back().err.p99, rows.back().err.max, ms);
+      std::fprintf(stderr, "%-12s %2d samples: mean %.2f p99 %.1f max %.1f (1/255), %.2f ms\n",
+                   s.name.c_str(), samples, rows.back().err.mean, rows.back().err.p99, rows.back().err.max,
+                   ms);
     }
   }
 
   // docs/accuracy.md
-  std::string md = "# Anti-aliasing: error against run time\n\nProduced by `make bench-accuracy` (bench/accuracy.cpp). Each scene is 256×256 and seeded. "
-                   "The reference is exact area coverage: every triangle (and every line's butt-capped rectangle) clipped to each pixel "
-                   "square in double precision and composited in primitive order (for the fan, whose slices tile the disk without "
-                   "overlap, summed by area instead, which is exact). The bunny is 3D, where visibility makes per-triangle "
-                   "areas wrong; its reference is its own render at 16× the resolution, box-filtered (256 samples per pixel). Errors are "
-                   "per channel over *edge pixels* (partly covered by some shape; for the bunny, pixels whose 256 samples differ), in "
-                   "1/255 units; times are the median of 7 renders (plan + render, this machine, same run).\n\n";
-  md += "| scene | samples | mean error | p99 error | max error | render ms |\n|---|---:|---:|---:|---:|---:|\n";
+  std::string md =
+      "# Anti-aliasing: error against run time\n\nProduced by `make bench-accuracy` (bench/accuracy.cpp). "
+      "Each scene is 256×256 and seeded. "
+      "The reference is exact area coverage: every triangle (and every line's butt-capped rectangle) clipped "
+      "to each pixel "
+      "square in double precision and composited in primitive order (for the fan, whose slices tile the disk "
+      "without "
+      "overlap, summed by area instead, which is exact). The bunny is 3D, where visibility makes "
+      "per-triangle "
+      "areas wrong; its reference is its own render at 16× the resolution, box-filtered (256 samples per "
+      "pixel). Errors are "
+      "per channel over *edge pixels* (partly covered by some shape; for the bunny, pixels whose 256 samples "
+      "differ), in "
+      "1/255 units; times are the median of 7 renders (plan + render, this machine, same run).\n\n";
+  md +=
+      "| scene | samples | mean error | p99 error | max error | render ms "
+      "|\n|---|---:|---:|---:|---:|---:|\n";
   char buf[256];
   for (const Row& r : rows) {
-    std::snprintf(buf, sizeof buf, "| %s | %d | %.2f | %.1f | %.1f | %.2f |\n", r.suite.c_str(), r.samples, r.err.mean, r.err.p99, r.err.max, r.ms);
+    std::snprintf(buf, sizeof buf, "| %s | %d | %.2f | %.1f | %.1f | %.2f |\n", r.suite.c_str(), r.samples,
+                  r.err.mean, r.err.p99, r.err.max, r.ms);
     md += buf;
   }
-  md += "\n![error against time](accuracy.png)\n\n## Which level to choose\n\n"
-        "Each step, as the median over the scenes of this run (error and time relative to the level before):\n\n"
-        "| step | mean edge error | render time |\n|---|---:|---:|\n";
+  md +=
+      "\n![error against time](accuracy.png)\n\n## Which level to choose\n\n"
+      "Each step, as the median over the scenes of this run (error and time relative to the level "
+      "before):\n\n"
+      "| step | mean edge error | render time |\n|---|---:|---:|\n";
   for (std::size_t k = 1; k < std::size(kLevels); ++k) {
     std::vector<double> err_ratio, time_ratio;
     for (std::size_t i = 0; i < rows.size(); i += std::size(kLevels)) {
@@ -306,22 +341,31 @@ int main(int argc, char** argv) {
     }
     std::sort(err_ratio.begin(), err_ratio.end());
     std::sort(time_ratio.begin(), time_ratio.end());
-    std::snprintf(buf, sizeof buf, "| %d → %d samples | ×%.2f | ×%.1f |\n", kLevels[k - 1], kLevels[k], err_ratio[err_ratio.size() / 2],
-                  time_ratio[time_ratio.size() / 2]);
+    std::snprintf(buf, sizeof buf, "| %d → %d samples | ×%.2f | ×%.1f |\n", kLevels[k - 1], kLevels[k],
+                  err_ratio[err_ratio.size() / 2], time_ratio[time_ratio.size() / 2]);
     md += buf;
   }
-  md += "\n- **1 (default)**: exactly the GPU rules and the fastest; on edge pixels the error is the whole step between "
-        "two colours, by design.\n"
-        "- **4**: the largest cut in error per unit of time (first row above); the choice for most pictures.\n"
-        "- **8, 16**: each doubling of samples doubles the raster time and cuts the remaining edge error by roughly a third "
-        "(about 1/√N overall); for thin lines, slivers and line art where edges dominate.\n\n"
-        "Shading is per sample (each sample plane is a full render at that sample position), which costs N× the raster "
-        "time but keeps gradients and per-sample depth exact. Known limit of area coverage as a reference (and of any "
-        "renderer that composites coverage instead of sampling): shapes that share an edge are conflated, two abutting "
-        "triangles each half-covering a pixel let the background through a seam. With painter's compositing the "
-        "1,000-slice fan's reference shows a mean edge error of 36/255 even against 16 samples, all of it conflation, "
-        "which is why the fan is summed by area; the overlapping suites keep painter's compositing, so part of their "
-        "remaining error at 16 samples belongs to the reference.\n";
+  md +=
+      "\n- **1 (default)**: exactly the GPU rules and the fastest; on edge pixels the error is the whole "
+      "step between "
+      "two colours, by design.\n"
+      "- **4**: the largest cut in error per unit of time (first row above); the choice for most pictures.\n"
+      "- **8, 16**: each doubling of samples doubles the raster time and cuts the remaining edge error by "
+      "roughly a third "
+      "(about 1/√N overall); for thin lines, slivers and line art where edges dominate.\n\n"
+      "Shading is per sample (each sample plane is a full render at that sample position), which costs N× "
+      "the raster "
+      "time but keeps gradients and per-sample depth exact. Known limit of area coverage as a reference (and "
+      "of any "
+      "renderer that composites coverage instead of sampling): shapes that share an edge are conflated, two "
+      "abutting "
+      "triangles each half-covering a pixel let the background through a seam. With painter's compositing "
+      "the "
+      "1,000-slice fan's reference shows a mean edge error of 36/255 even against 16 samples, all of it "
+      "conflation, "
+      "which is why the fan is summed by area; the overlapping suites keep painter's compositing, so part of "
+      "their "
+      "remaining error at 16 samples belongs to the reference.\n";
   std::ofstream(root + "/docs/accuracy.md") << md;
 
   // docs/accuracy.png: mean error against time, log-log, one line per scene, drawn with rasterd.
@@ -332,10 +376,15 @@ int main(int argc, char** argv) {
   plot.scene.samples = 8;
   const double left = 70, right = 600, top = 40, bottom = 360;
   double t_lo = 1e9, t_hi = 0, e_lo = 1e9, e_hi = 0;
-  for (const Row& r : rows) t_lo = std::min(t_lo, r.ms), t_hi = std::max(t_hi, r.ms), e_lo = std::min(e_lo, r.err.mean), e_hi = std::max(e_hi, r.err.mean);
-  const double lt0 = std::floor(std::log10(t_lo)), lt1 = std::ceil(std::log10(t_hi)), le0 = std::floor(std::log10(std::max(e_lo, 1e-3))), le1 = std::ceil(std::log10(e_hi));
+  for (const Row& r : rows)
+    t_lo = std::min(t_lo, r.ms), t_hi = std::max(t_hi, r.ms), e_lo = std::min(e_lo, r.err.mean),
+    e_hi = std::max(e_hi, r.err.mean);
+  const double lt0 = std::floor(std::log10(t_lo)), lt1 = std::ceil(std::log10(t_hi)),
+               le0 = std::floor(std::log10(std::max(e_lo, 1e-3))), le1 = std::ceil(std::log10(e_hi));
   auto px = [&](double ms) { return left + (std::log10(ms) - lt0) / (lt1 - lt0) * (right - left); };
-  auto py = [&](double e) { return bottom - (std::log10(std::max(e, 1e-3)) - le0) / (le1 - le0) * (bottom - top); };
+  auto py = [&](double e) {
+    return bottom - (std::log10(std::max(e, 1e-3)) - le0) / (le1 - le0) * (bottom - top);
+  };
   const Rgba8 ink{40, 40, 40, 255}, grid{225, 225, 225, 255};
   for (double d = lt0; d <= lt1; ++d) {
     plot.line({px(std::pow(10, d)), top}, {px(std::pow(10, d)), bottom}, grid);
@@ -350,7 +399,8 @@ int main(int argc, char** argv) {
   plot.line({left, bottom}, {right, bottom}, ink, 1.5f);
   plot.line({left, top}, {left, bottom}, ink, 1.5f);
   plot.text(left, 12, "mean edge error (1/255) against render time, samples 1 / 4 / 8 / 16", ink);
-  const Rgba8 palette[] = {{220, 60, 60, 255}, {40, 120, 220, 255}, {30, 160, 90, 255}, {200, 130, 20, 255}, {140, 70, 200, 255}};
+  const Rgba8 palette[] = {
+      {220, 60, 60, 255}, {40, 120, 220, 255}, {30, 160, 90, 255}, {200, 130, 20, 255}, {140, 70, 200, 255}};
   std::size_t series = 0;
   for (std::size_t i = 0; i < rows.size(); i += std::size(kLevels), ++series) {
     const Rgba8 col = palette[series % std::size(palette)];
@@ -366,6 +416,7 @@ int main(int argc, char** argv) {
   }
   const raster::RenderPlan plan = raster::plan(plot.scene);
   const auto png = raster::encode_png(raster::render(plot.scene, plan), plan.png);
-  std::ofstream(root + "/docs/accuracy.png", std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  std::ofstream(root + "/docs/accuracy.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   std::fprintf(stderr, "wrote docs/accuracy.md and docs/accuracy.png\n");
 }

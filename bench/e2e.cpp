@@ -29,7 +29,8 @@ double median_ms(int runs, const std::function<void()>& fn) {
 // LP_NUM_THREADS=t osmesa_peer: llvmpipe reads its thread count once per process.
 std::map<std::string, double> peer_ms(const std::string& peer, int threads, int runs) {
   std::map<std::string, double> out;
-  const std::string command = "LP_NUM_THREADS=" + std::to_string(threads) + " " + peer + " " + std::to_string(runs);
+  const std::string command =
+      "LP_NUM_THREADS=" + std::to_string(threads) + " " + peer + " " + std::to_string(runs);
   if (FILE* f = popen(command.c_str(), "r")) {
     char name[32];
     double ms = 0;
@@ -46,7 +47,10 @@ std::map<std::string, double> peer_ms(const std::string& peer, int threads, int 
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::atoi(argv[1]) : 11;
   const std::string peer = argc > 2 ? argv[2] : "";
-  std::printf("| scene | threads | JSON MB | parse ms | parse MB/s | raster ms | encode ms | **total ms** | llvmpipe raster ms | stb encode ms | raster vs llvmpipe | encode vs stb | **e2e vs llvmpipe+stb** | PNG KB (stb KB) |\n");
+  std::printf(
+      "| scene | threads | JSON MB | parse ms | parse MB/s | raster ms | encode ms | **total ms** | llvmpipe "
+      "raster ms | stb encode ms | raster vs llvmpipe | encode vs stb | **e2e vs llvmpipe+stb** | PNG KB "
+      "(stb KB) |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   std::map<int, std::map<std::string, double>> llvmpipe;
   if (!peer.empty())
@@ -68,19 +72,23 @@ int main(int argc, char** argv) {
       std::vector<std::uint8_t> png;
       const double encode = median_ms(runs, [&] { png = raster::encode_png(image, plan.png); });
       std::size_t stb_size = 0;
-      const double stb = median_ms(std::max(3, runs / 3), [&] { stb_size = bench::stb_stock_png_size(image); });
+      const double stb =
+          median_ms(std::max(3, runs / 3), [&] { stb_size = bench::stb_stock_png_size(image); });
       const double total = parse + raster_ms + encode;
-      const double peer_raster = llvmpipe.count(threads) && llvmpipe[threads].count(kind) ? llvmpipe[threads][kind] : 0;
+      const double peer_raster =
+          llvmpipe.count(threads) && llvmpipe[threads].count(kind) ? llvmpipe[threads][kind] : 0;
       auto ratio = [](double theirs, double ours) {
         char buf[32];
         if (theirs <= 0) return std::string("n/a");
         std::snprintf(buf, sizeof buf, "%.2fx", theirs / ours);
         return std::string(buf);
       };
-      std::printf("| %s | %d | %.2f | %.1f | %.0f | %.2f | %.2f | **%.1f** | %.2f | %.2f | %s | %s | **%s** | %zu (%zu) |\n", kind,
-                  threads, json.size() / 1e6, parse, json.size() / 1e6 / (parse / 1e3), raster_ms, encode, total, peer_raster, stb,
-                  ratio(peer_raster, raster_ms).c_str(), ratio(stb, encode).c_str(),
-                  ratio(peer_raster > 0 ? peer_raster + stb : 0, total).c_str(), png.size() / 1024, stb_size / 1024);
+      std::printf(
+          "| %s | %d | %.2f | %.1f | %.0f | %.2f | %.2f | **%.1f** | %.2f | %.2f | %s | %s | **%s** | %zu "
+          "(%zu) |\n",
+          kind, threads, json.size() / 1e6, parse, json.size() / 1e6 / (parse / 1e3), raster_ms, encode,
+          total, peer_raster, stb, ratio(peer_raster, raster_ms).c_str(), ratio(stb, encode).c_str(),
+          ratio(peer_raster > 0 ? peer_raster + stb : 0, total).c_str(), png.size() / 1024, stb_size / 1024);
     }
   }
 }

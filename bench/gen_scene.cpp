@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const std::string json = bench::scene_json(bench::make_scene(argv[1], argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 1));
+    const std::string json = bench::scene_json(
+        bench::make_scene(argv[1], argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 1));
     std::fwrite(json.data(), 1, json.size(), stdout);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "gen_scene: %s\n", e.what());

@@ -17,10 +17,15 @@ raster::Scene scene_of(int side, int triangles, unsigned seed) {
   std::uniform_real_distribution<double> pos(0, side), offset(-side / 8.0, side / 8.0);
   raster::Scene s;
   s.width = s.height = side;
-  auto color = [&] { return raster::Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 255}; };
+  auto color = [&] {
+    return raster::Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                         static_cast<std::uint8_t>(rng()), 255};
+  };
   for (int i = 0; i < triangles; ++i) {
     const double cx = pos(rng), cy = pos(rng);
-    const raster::Point2 p[3] = {{cx + offset(rng), cy + offset(rng)}, {cx + offset(rng), cy + offset(rng)}, {cx + offset(rng), cy + offset(rng)}};
+    const raster::Point2 p[3] = {{cx + offset(rng), cy + offset(rng)},
+                                 {cx + offset(rng), cy + offset(rng)},
+                                 {cx + offset(rng), cy + offset(rng)}};
     const raster::Rgba8 c[3] = {color(), color(), color()};
     bench::add_triangle(s, p, c, 3);
   }
@@ -49,7 +54,8 @@ int main() {
       const raster::Scene scene = scene_of(side, tris, 42);
       const raster::RenderPlan plan = raster::plan(scene);
       const double one = median_ms(scene, plan, 1), two = median_ms(scene, plan, 2);
-      std::printf("%6d %6d %12lld %10.3f %10.3f %8.2f\n", side, tris, static_cast<long long>(plan.work), one, two, two / one);
+      std::printf("%6d %6d %12lld %10.3f %10.3f %8.2f\n", side, tris, static_cast<long long>(plan.work), one,
+                  two, two / one);
     }
   }
 }

@@ -8,14 +8,16 @@ namespace bench {
 namespace {
 
 raster::Rgba8 random_color(std::mt19937& rng) {
-  return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 255};
+  return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+          static_cast<std::uint8_t>(rng()), 255};
 }
 
 void random_triangles(raster::Scene& s, int count, double radius, std::mt19937& rng) {
   std::uniform_real_distribution<double> x(0, s.width), y(0, s.height), d(-radius, radius);
   for (int i = 0; i < count; ++i) {
     const double cx = x(rng), cy = y(rng);
-    const raster::Point2 p[3] = {{cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}};
+    const raster::Point2 p[3] = {
+        {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}};
     const raster::Rgba8 c[3] = {random_color(rng), random_color(rng), random_color(rng)};
     add_triangle(s, p, c, 3);
   }
@@ -70,7 +72,8 @@ raster::Scene make_scene(const std::string& kind, unsigned seed) {
       }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const raster::Point2 a = v[j * (n + 1) + i], b = v[j * (n + 1) + i + 1], c = v[(j + 1) * (n + 1) + i], d = v[(j + 1) * (n + 1) + i + 1];
+        const raster::Point2 a = v[j * (n + 1) + i], b = v[j * (n + 1) + i + 1], c = v[(j + 1) * (n + 1) + i],
+                             d = v[(j + 1) * (n + 1) + i + 1];
         const raster::Rgba8 c1 = random_color(rng), c2 = random_color(rng);
         add_triangle(s, {a, b, d}, &c1, 1);
         add_triangle(s, {a, d, c}, &c2, 1);
@@ -82,7 +85,8 @@ raster::Scene make_scene(const std::string& kind, unsigned seed) {
 }
 
 std::string scene_json(const raster::Scene& s) {
-  std::string out = "{\"width\":" + std::to_string(s.width) + ",\"height\":" + std::to_string(s.height) + ",\"primitives\":[";
+  std::string out = "{\"width\":" + std::to_string(s.width) + ",\"height\":" + std::to_string(s.height) +
+                    ",\"primitives\":[";
   char buf[64];
   auto color = [&](raster::Rgba8 c) {
     std::snprintf(buf, sizeof buf, "\"#%02x%02x%02x\"", c.r, c.g, c.b);
@@ -97,7 +101,8 @@ std::string scene_json(const raster::Scene& s) {
       out += buf;
     }
     if (p.per_vertex_color) {
-      out += "],\"colors\":[" + color(s.colors[p.first_color]) + "," + color(s.colors[p.first_color + 1]) + "," + color(s.colors[p.first_color + 2]) + "]}";
+      out += "],\"colors\":[" + color(s.colors[p.first_color]) + "," + color(s.colors[p.first_color + 1]) +
+             "," + color(s.colors[p.first_color + 2]) + "]}";
     } else {
       out += "],\"color\":" + color(s.colors[p.first_color]) + "}";
     }

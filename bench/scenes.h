@@ -13,7 +13,8 @@ namespace bench {
 raster::Scene make_scene(const std::string& kind, unsigned seed = 1);
 
 /// Appends a triangle with one colour (ncolors 1) or one per vertex (ncolors 3).
-void add_triangle(raster::Scene& scene, const raster::Point2 (&points)[3], const raster::Rgba8* colors, int ncolors);
+void add_triangle(raster::Scene& scene, const raster::Point2 (&points)[3], const raster::Rgba8* colors,
+                  int ncolors);
 
 /// Appends a line of `width` pixels with one colour.
 void add_line(raster::Scene& scene, raster::Point2 a, raster::Point2 b, raster::Rgba8 color, float width = 1);

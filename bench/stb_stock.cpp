@@ -14,8 +14,8 @@ namespace bench {
 
 std::size_t stb_stock_png_size(const raster::Image& image) {
   int len = 0;
-  unsigned char* png = stbi_write_png_to_mem(image.pixels.data(), image.width * image.channels(), image.width, image.height,
-                                             image.channels(), &len);
+  unsigned char* png = stbi_write_png_to_mem(image.pixels.data(), image.width * image.channels(), image.width,
+                                             image.height, image.channels(), &len);
   STBIW_FREE(png);
   return static_cast<std::size_t>(len);
 }

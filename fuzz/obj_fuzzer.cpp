@@ -13,7 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     raster::Scene scene;
     scene.width = 64;
     scene.height = 48;
-    scene.meshes.push_back(raster::parse_obj(std::string_view(reinterpret_cast<const char*>(data), size), {}, limits));
+    scene.meshes.push_back(
+        raster::parse_obj(std::string_view(reinterpret_cast<const char*>(data), size), {}, limits));
     scene.meshes[0].colors = {raster::Rgba8{200, 180, 160, 255}};
     // Alternate shadings by input length so every path sees inputs.
     scene.meshes[0].shading = static_cast<raster::Shading>(size % 3);

@@ -13,7 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.max_pixels = 256 * 256;
   limits.max_primitives = 2000;
   try {
-    const raster::Scene scene = raster::parse_scene(std::string_view(reinterpret_cast<const char*>(data), size), limits);
+    const raster::Scene scene =
+        raster::parse_scene(std::string_view(reinterpret_cast<const char*>(data), size), limits);
     raster::PlanOptions options;
     options.max_threads = 1;
     const raster::RenderPlan plan = raster::plan(scene, limits, options);

@@ -3,13 +3,13 @@
 
 #include <cerrno>
 #include <condition_variable>
-#include <mutex>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -121,7 +121,8 @@ int run_serve(const std::vector<std::string>& args) {
   rasterd::ServiceConfig config;
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
-  if (const std::string error = rasterd::parse_service_flags(static_cast<int>(argv.size()), argv.data(), config, host, port);
+  if (const std::string error =
+          rasterd::parse_service_flags(static_cast<int>(argv.size()), argv.data(), config, host, port);
       !error.empty()) {
     std::cerr << "rasterd: " << error << "\n\n" << rasterd::service_help();
     return 2;

@@ -31,14 +31,16 @@ Problem problem_from(const raster::SceneError& error) {
   }
   const raster::ErrorLocation& where = error.where();
   // Semantic errors are located by pointer (possibly "" = the whole document); syntax errors by byte.
-  if (error.kind() == raster::ErrorKind::invalid || error.kind() == raster::ErrorKind::limit) p.pointer = where.pointer;
+  if (error.kind() == raster::ErrorKind::invalid || error.kind() == raster::ErrorKind::limit)
+    p.pointer = where.pointer;
   p.byte = where.byte;
   p.line = where.line;
   return p;
 }
 
 void write_problem(httplib::Response& res, const Problem& p) {
-  nlohmann::ordered_json body = {{"type", p.type}, {"title", p.title}, {"status", p.status}, {"detail", p.detail}};
+  nlohmann::ordered_json body = {
+      {"type", p.type}, {"title", p.title}, {"status", p.status}, {"detail", p.detail}};
   if (p.pointer) body["pointer"] = *p.pointer;
   if (p.byte != 0) body["byte"] = p.byte;
   if (p.line != 0) body["line"] = p.line;

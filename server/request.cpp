@@ -20,7 +20,8 @@ bool starts_like_json(std::string_view body) {
 // `curl -d @model.obj` drops newlines: what arrives is "v 0 0 0v 1 0 0f 1 2 3..." on one line.
 bool looks_like_flattened_obj(std::string_view body) {
   if (body.size() < 64 || body.find('\n') != std::string_view::npos) return false;
-  const bool vertices = body.find("v ") != std::string_view::npos || body.find("v\t") != std::string_view::npos;
+  const bool vertices =
+      body.find("v ") != std::string_view::npos || body.find("v\t") != std::string_view::npos;
   return vertices && body.find("f ") != std::string_view::npos;
 }
 
@@ -32,7 +33,8 @@ std::string default_scene_json(const Params& params) {
   auto number = [&](const std::string& name, const std::string& text) {
     double v = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) bad_param(name, "expected a number, got \"" + text + "\"");
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+      bad_param(name, "expected a number, got \"" + text + "\"");
     return v;
   };
   auto vector = [&](const std::string& name, const std::string& text) {
@@ -48,13 +50,20 @@ std::string default_scene_json(const Params& params) {
     return out;
   };
   for (const auto& [name, value] : params) {
-    if (name == "width" || name == "height") scene[name] = number(name, value);
-    else if (name == "background") scene["background"] = value;
-    else if (name == "projection") camera["projection"] = value;
-    else if (name == "fov") camera["fov"] = number(name, value);
-    else if (name == "eye" || name == "target" || name == "up") camera[name] = vector(name, value);
-    else if (name == "explain") continue;  // the route's, not the scene's
-    else bad_param(name, "unknown; known: width, height, background, projection, fov, eye, target, up");
+    if (name == "width" || name == "height")
+      scene[name] = number(name, value);
+    else if (name == "background")
+      scene["background"] = value;
+    else if (name == "projection")
+      camera["projection"] = value;
+    else if (name == "fov")
+      camera["fov"] = number(name, value);
+    else if (name == "eye" || name == "target" || name == "up")
+      camera[name] = vector(name, value);
+    else if (name == "explain")
+      continue;  // the route's, not the scene's
+    else
+      bad_param(name, "unknown; known: width, height, background, projection, fov, eye, target, up");
   }
   if (!camera.empty()) scene["camera"] = camera;
   scene["primitives"] = nlohmann::json::array({{{"type", "obj"}, {"source", "model"}}});
@@ -67,11 +76,13 @@ raster::Scene scene_from_request(std::string_view body, const raster::Uploads& u
                                  const raster::Limits& limits) {
   if (starts_like_json(body)) return raster::parse_scene(body, limits, uploads);
   if (looks_like_flattened_obj(body))
-    throw raster::SceneError(raster::ErrorKind::syntax,
-                             "the body looks like an OBJ model whose line breaks were removed (curl -d does that); "
-                             "send it with --data-binary @model.obj");
+    throw raster::SceneError(
+        raster::ErrorKind::syntax,
+        "the body looks like an OBJ model whose line breaks were removed (curl -d does that); "
+        "send it with --data-binary @model.obj");
   if (body.find_first_not_of(" \t\r\n") == std::string_view::npos && !uploads.count("model"))
-    throw raster::SceneError(raster::ErrorKind::syntax, "the request is empty: send a scene (JSON) or a model (OBJ)");
+    throw raster::SceneError(raster::ErrorKind::syntax,
+                             "the request is empty: send a scene (JSON) or a model (OBJ)");
   raster::Uploads with_model = uploads;
   if (!body.empty()) with_model["model"] = std::string(body);
   return raster::parse_scene(default_scene_json(params), limits, with_model);

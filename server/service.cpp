@@ -21,7 +21,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double ms_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+double ms_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
 
 // Renders at once (`workers`) and renders waiting (`max_queue`); beyond both, a request is refused at
 // once instead of piling up. Health and metrics never pass through here.
@@ -84,11 +86,13 @@ class Metrics {
     line("# HELP rasterd_requests_total HTTP requests by route and status.");
     line("# TYPE rasterd_requests_total counter");
     for (const auto& [key, n] : requests_)
-      line("rasterd_requests_total{route=\"" + key.first + "\",status=\"" + std::to_string(key.second) + "\"} " + std::to_string(n));
+      line("rasterd_requests_total{route=\"" + key.first + "\",status=\"" + std::to_string(key.second) +
+           "\"} " + std::to_string(n));
     line("# HELP rasterd_render_duration_seconds Parse + render + encode time of admitted renders.");
     line("# TYPE rasterd_render_duration_seconds histogram");
     for (std::size_t i = 0; i < kBucketsMs.size(); ++i)
-      line("rasterd_render_duration_seconds_bucket{le=\"" + format(kBucketsMs[i] / 1000) + "\"} " + std::to_string(buckets_[i]));
+      line("rasterd_render_duration_seconds_bucket{le=\"" + format(kBucketsMs[i] / 1000) + "\"} " +
+           std::to_string(buckets_[i]));
     line("rasterd_render_duration_seconds_bucket{le=\"+Inf\"} " + std::to_string(render_count_));
     line("rasterd_render_duration_seconds_sum " + format(render_sum_ms_ / 1000));
     line("rasterd_render_duration_seconds_count " + std::to_string(render_count_));
@@ -100,7 +104,8 @@ class Metrics {
     line("rasterd_render_queue_length " + std::to_string(queued));
     line("# HELP rasterd_rejected_total Requests refused before rendering, by reason.");
     line("# TYPE rasterd_rejected_total counter");
-    for (const auto& [reason, n] : rejected_) line("rasterd_rejected_total{reason=\"" + reason + "\"} " + std::to_string(n));
+    for (const auto& [reason, n] : rejected_)
+      line("rasterd_rejected_total{reason=\"" + reason + "\"} " + std::to_string(n));
     line("# HELP rasterd_bytes_total Request and response body bytes.");
     line("# TYPE rasterd_bytes_total counter");
     line("rasterd_bytes_total{direction=\"in\"} " + std::to_string(bytes_in_));
@@ -151,8 +156,7 @@ struct Service::State {
   std::atomic<bool> cancel{false};
   int listen_socket = -1;  // remembered from the socket-options hook, for widen_backlog()
 
-  explicit State(ServiceConfig c)
-      : config(c), admission(c.workers, c.max_queue) {}
+  explicit State(ServiceConfig c) : config(c), admission(c.workers, c.max_queue) {}
 
   bool refuse(httplib::Response& res, const Problem& p, const std::string& reason) {
     metrics.rejected(reason);
@@ -169,11 +173,16 @@ struct Service::State {
                  std::string& body, raster::Uploads& uploads) {
     const std::size_t cap = config.max_body_bytes;
     if (req.has_header("Content-Encoding") && req.get_header_value("Content-Encoding") != "identity")
-      return refuse(res, problem(415, "unsupported-encoding", "Compressed request bodies are not accepted",
-                                 "send the body uncompressed (got Content-Encoding: " + req.get_header_value("Content-Encoding") + ")"),
+      return refuse(res,
+                    problem(415, "unsupported-encoding", "Compressed request bodies are not accepted",
+                            "send the body uncompressed (got Content-Encoding: " +
+                                req.get_header_value("Content-Encoding") + ")"),
                     "encoding");
     auto too_large = [&] {
-      return refuse(res, problem(413, "body-too-large", "The request body is too large", "the limit is " + std::to_string(cap) + " bytes"), "body_size");
+      return refuse(res,
+                    problem(413, "body-too-large", "The request body is too large",
+                            "the limit is " + std::to_string(cap) + " bytes"),
+                    "body_size");
     };
     if (req.get_header_value<std::uint64_t>("Content-Length") > cap) return too_large();
 
@@ -201,8 +210,10 @@ struct Service::State {
     }
     if (over) return too_large();
     if (late || !complete)
-      return refuse(res, problem(408, "body-timeout", "The request body did not arrive in time",
-                                 "the whole body must arrive within " + std::to_string(config.body_deadline.count()) + " ms"),
+      return refuse(res,
+                    problem(408, "body-timeout", "The request body did not arrive in time",
+                            "the whole body must arrive within " +
+                                std::to_string(config.body_deadline.count()) + " ms"),
                     "body_timeout");
     return true;
   }
@@ -214,7 +225,8 @@ struct Service::State {
 
     if (!admission.enter()) {
       res.set_header("Retry-After", "1");
-      refuse(res, problem(503, "overloaded", "All render workers are busy", "try again shortly"), "queue_full");
+      refuse(res, problem(503, "overloaded", "All render workers are busy", "try again shortly"),
+             "queue_full");
       return;
     }
     struct Leave {
@@ -238,8 +250,8 @@ struct Service::State {
       const Clock::time_point t3 = Clock::now();
       metrics.render(ms_between(t0, t3));
       char timing[160];
-      std::snprintf(timing, sizeof timing, "parse;dur=%.3f, raster;dur=%.3f, encode;dur=%.3f", ms_between(t0, t1),
-                    ms_between(t1, t2), ms_between(t2, t3));
+      std::snprintf(timing, sizeof timing, "parse;dur=%.3f, raster;dur=%.3f, encode;dur=%.3f",
+                    ms_between(t0, t1), ms_between(t1, t2), ms_between(t2, t3));
       res.set_header("Server-Timing", timing);
       res.set_header("X-Render-Plan", raster::explain_line(plan));
       res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
@@ -248,9 +260,11 @@ struct Service::State {
     } catch (const raster::RenderCancelled&) {
       const bool shutting_down = cancel.load();
       metrics.rejected(shutting_down ? "shutdown" : "render_timeout");
-      write_problem(res, shutting_down ? problem(503, "shutting-down", "The server is shutting down", "the render was stopped; retry elsewhere")
+      write_problem(res, shutting_down ? problem(503, "shutting-down", "The server is shutting down",
+                                                 "the render was stopped; retry elsewhere")
                                        : problem(503, "render-timeout", "The render took too long",
-                                                 "the limit is " + std::to_string(config.render_deadline.count()) + " ms"));
+                                                 "the limit is " +
+                                                     std::to_string(config.render_deadline.count()) + " ms"));
     }
   }
 };
@@ -264,12 +278,17 @@ Service::Service(ServiceConfig config) {
 
 Service::~Service() = default;
 
-const ServiceConfig& Service::config() const { return state_->config; }
+const ServiceConfig& Service::config() const {
+  return state_->config;
+}
 
-void Service::cancel_renders() { state_->cancel = true; }
+void Service::cancel_renders() {
+  state_->cancel = true;
+}
 
 void Service::widen_backlog() const {
-  if (state_->listen_socket >= 0) ::listen(state_->listen_socket, 1024);  // Linux: re-listen updates the backlog
+  if (state_->listen_socket >= 0)
+    ::listen(state_->listen_socket, 1024);  // Linux: re-listen updates the backlog
 }
 
 void Service::install(httplib::Server& server) {
@@ -279,11 +298,13 @@ void Service::install(httplib::Server& server) {
   const std::size_t threads = static_cast<std::size_t>(s.config.workers + s.config.max_queue) + 16;
   server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
   server.set_keep_alive_timeout(2);  // idle keep-alive connections give their thread back quickly
-  const auto read_timeout = std::min<std::chrono::milliseconds>(s.config.body_deadline, std::chrono::milliseconds(5000));
+  const auto read_timeout =
+      std::min<std::chrono::milliseconds>(s.config.body_deadline, std::chrono::milliseconds(5000));
   server.set_read_timeout(read_timeout);
   server.set_socket_options([&s](socket_t sock) {
     httplib::default_socket_options(sock);
-    if (s.listen_socket < 0) s.listen_socket = sock;  // the first socket this server creates is the listening one
+    if (s.listen_socket < 0)
+      s.listen_socket = sock;  // the first socket this server creates is the listening one
   });
 
   server.set_pre_routing_handler([](const httplib::Request&, httplib::Response& res) {
@@ -292,45 +313,54 @@ void Service::install(httplib::Server& server) {
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
-  server.Post("/render", [&s](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader) {
-    s.render(req, res, reader);
-  });
-  server.Get("/healthz", [](const httplib::Request&, httplib::Response& res) { res.set_content("ok\n", "text/plain"); });
+  server.Post("/render", [&s](const httplib::Request& req, httplib::Response& res,
+                              const httplib::ContentReader& reader) { s.render(req, res, reader); });
+  server.Get("/healthz",
+             [](const httplib::Request&, httplib::Response& res) { res.set_content("ok\n", "text/plain"); });
   server.Get("/metrics", [&s](const httplib::Request&, httplib::Response& res) {
     const auto [running, waiting] = s.admission.load();
     res.set_content(s.metrics.text(running, waiting), "text/plain; version=0.0.4");
   });
 
   // Any error response without a body of ours (404, 405, ...) still gets a problem body.
-  server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    const std::string detail = req.method + " " + req.path;
-    if (res.status == 404) write_problem(res, problem(404, "not-found", "No such route", detail + " (routes: POST /render, GET /healthz, GET /metrics)"));
-    else if (res.status == 405) write_problem(res, problem(405, "method-not-allowed", "Method not allowed", detail));
-    else write_problem(res, problem(res.status, "http-error", "HTTP error " + std::to_string(res.status), detail));
-    return httplib::Server::HandlerResponse::Handled;
-  }));
+  server.set_error_handler(
+      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+        if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        const std::string detail = req.method + " " + req.path;
+        if (res.status == 404)
+          write_problem(res, problem(404, "not-found", "No such route",
+                                     detail + " (routes: POST /render, GET /healthz, GET /metrics)"));
+        else if (res.status == 405)
+          write_problem(res, problem(405, "method-not-allowed", "Method not allowed", detail));
+        else
+          write_problem(
+              res, problem(res.status, "http-error", "HTTP error " + std::to_string(res.status), detail));
+        return httplib::Server::HandlerResponse::Handled;
+      }));
 
   // Nothing internal reaches the client; the log line carries the detail and the request id.
-  server.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
-    std::string what = "unknown exception";
-    try {
-      std::rethrow_exception(ep);
-    } catch (const std::exception& e) {
-      what = e.what();
-    } catch (...) {
-    }
-    std::fprintf(stderr, "error id=%s %s %s: %s\n", res.get_header_value("X-Request-Id").c_str(), req.method.c_str(),
-                 req.path.c_str(), what.c_str());
-    write_problem(res, problem(500, "internal", "Internal server error",
-                               "the request failed unexpectedly; quote request id " + res.get_header_value("X-Request-Id")));
-  });
+  server.set_exception_handler(
+      [](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
+        std::string what = "unknown exception";
+        try {
+          std::rethrow_exception(ep);
+        } catch (const std::exception& e) {
+          what = e.what();
+        } catch (...) {
+        }
+        std::fprintf(stderr, "error id=%s %s %s: %s\n", res.get_header_value("X-Request-Id").c_str(),
+                     req.method.c_str(), req.path.c_str(), what.c_str());
+        write_problem(res, problem(500, "internal", "Internal server error",
+                                   "the request failed unexpectedly; quote request id " +
+                                       res.get_header_value("X-Request-Id")));
+      });
 
   server.set_logger([&s](const httplib::Request& req, const httplib::Response& res) {
     const std::size_t in = t_request.bytes_in ? t_request.bytes_in : req.body.size();
     s.metrics.request(route_label(req.path), res.status, in, res.body.size());
-    std::fprintf(stderr, "%s %s %d in=%zu out=%zu ms=%.1f id=%s\n", req.method.c_str(), req.path.c_str(), res.status, in,
-                 res.body.size(), ms_between(t_request.start, Clock::now()), res.get_header_value("X-Request-Id").c_str());
+    std::fprintf(stderr, "%s %s %d in=%zu out=%zu ms=%.1f id=%s\n", req.method.c_str(), req.path.c_str(),
+                 res.status, in, res.body.size(), ms_between(t_request.start, Clock::now()),
+                 res.get_header_value("X-Request-Id").c_str());
   });
 }
 
@@ -360,14 +390,17 @@ constexpr Flag kFlags[] = {
 
 std::string env_name(const char* flag) {
   std::string e = "RASTERD_";
-  for (const char* c = flag; *c; ++c) e += *c == '-' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+  for (const char* c = flag; *c; ++c)
+    e += *c == '-' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
   return e;
 }
 
 }  // namespace
 
 std::string service_help() {
-  std::string h = "rasterd serve [--flag value ...]\n\nEach flag can also be set in the environment as RASTERD_<FLAG> (e.g. RASTERD_MAX_BODY_BYTES);\nflags win over the environment.\n\n";
+  std::string h =
+      "rasterd serve [--flag value ...]\n\nEach flag can also be set in the environment as RASTERD_<FLAG> "
+      "(e.g. RASTERD_MAX_BODY_BYTES);\nflags win over the environment.\n\n";
   for (const Flag& f : kFlags) {
     char line[200];
     std::snprintf(line, sizeof line, "  --%-20s %s\n", f.name, f.help);
@@ -376,7 +409,8 @@ std::string service_help() {
   return h;
 }
 
-std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig& config, std::string& host, int& port) {
+std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig& config, std::string& host,
+                                int& port) {
   std::map<std::string, std::string> values;
   for (const Flag& f : kFlags)
     if (const char* v = std::getenv(env_name(f.name).c_str())) values[f.name] = v;
@@ -386,10 +420,14 @@ std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig
     if (a.rfind("--", 0) != 0) return "unexpected argument '" + a + "'";
     a = a.substr(2);
     std::string value;
-    if (const auto eq = a.find('='); eq != std::string::npos) value = a.substr(eq + 1), a = a.substr(0, eq);
-    else if (i + 1 < argc) value = argv[++i];
-    else return "--" + a + " needs a value";
-    if (std::none_of(std::begin(kFlags), std::end(kFlags), [&](const Flag& f) { return a == f.name; })) return "unknown flag --" + a;
+    if (const auto eq = a.find('='); eq != std::string::npos)
+      value = a.substr(eq + 1), a = a.substr(0, eq);
+    else if (i + 1 < argc)
+      value = argv[++i];
+    else
+      return "--" + a + " needs a value";
+    if (std::none_of(std::begin(kFlags), std::end(kFlags), [&](const Flag& f) { return a == f.name; }))
+      return "unknown flag --" + a;
     values[a] = value;
   }
   std::string error;
@@ -398,27 +436,44 @@ std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig
     char* end = nullptr;
     const long long n = std::strtoll(v.c_str(), &end, 10);
     if (v.empty() || *end || n < lo || n > hi) {
-      if (error.empty()) error = "--" + name + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" + v + "'";
+      if (error.empty())
+        error = "--" + name + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                ", got '" + v + "'";
       return lo;
     }
     return n;
   };
   for (const auto& [name, v] : values) {
-    if (name == "host") host = v;
-    else if (name == "port") port = static_cast<int>(number(name, 1, 65535));
-    else if (name == "max-body-bytes") config.max_body_bytes = static_cast<std::size_t>(number(name, 1, 1ll << 32));
-    else if (name == "max-width") config.limits.max_width = static_cast<int>(number(name, 1, raster::kMaxImageSide));
-    else if (name == "max-height") config.limits.max_height = static_cast<int>(number(name, 1, raster::kMaxImageSide));
-    else if (name == "max-pixels") config.limits.max_pixels = number(name, 1, 1ll << 28);
-    else if (name == "max-primitives") config.limits.max_primitives = number(name, 1, 1ll << 31);
-    else if (name == "max-obj-faces") config.limits.max_obj_faces = number(name, 1, 1ll << 31);
-    else if (name == "max-json-depth") config.limits.max_json_depth = static_cast<int>(number(name, 2, 1000));
-    else if (name == "render-deadline-ms") config.render_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
-    else if (name == "body-deadline-ms") config.body_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
-    else if (name == "workers") config.workers = static_cast<int>(number(name, 1, 1024));
-    else if (name == "max-queue") config.max_queue = static_cast<int>(number(name, 1, 100000));
-    else if (name == "render-threads") config.render_threads = static_cast<int>(number(name, 1, 1024));
-    else if (name == "shutdown-grace-ms") config.shutdown_grace = std::chrono::milliseconds(number(name, 0, 3'600'000));
+    if (name == "host")
+      host = v;
+    else if (name == "port")
+      port = static_cast<int>(number(name, 1, 65535));
+    else if (name == "max-body-bytes")
+      config.max_body_bytes = static_cast<std::size_t>(number(name, 1, 1ll << 32));
+    else if (name == "max-width")
+      config.limits.max_width = static_cast<int>(number(name, 1, raster::kMaxImageSide));
+    else if (name == "max-height")
+      config.limits.max_height = static_cast<int>(number(name, 1, raster::kMaxImageSide));
+    else if (name == "max-pixels")
+      config.limits.max_pixels = number(name, 1, 1ll << 28);
+    else if (name == "max-primitives")
+      config.limits.max_primitives = number(name, 1, 1ll << 31);
+    else if (name == "max-obj-faces")
+      config.limits.max_obj_faces = number(name, 1, 1ll << 31);
+    else if (name == "max-json-depth")
+      config.limits.max_json_depth = static_cast<int>(number(name, 2, 1000));
+    else if (name == "render-deadline-ms")
+      config.render_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
+    else if (name == "body-deadline-ms")
+      config.body_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
+    else if (name == "workers")
+      config.workers = static_cast<int>(number(name, 1, 1024));
+    else if (name == "max-queue")
+      config.max_queue = static_cast<int>(number(name, 1, 100000));
+    else if (name == "render-threads")
+      config.render_threads = static_cast<int>(number(name, 1, 1024));
+    else if (name == "shutdown-grace-ms")
+      config.shutdown_grace = std::chrono::milliseconds(number(name, 0, 3'600'000));
   }
   return error;
 }

@@ -15,14 +15,14 @@
 namespace rasterd {
 
 struct ServiceConfig {
-  raster::Limits limits;                                  ///< scene limits, enforced by the library
-  std::size_t max_body_bytes = 32u << 20;                 ///< request body cap in bytes (413 above it)
-  int render_threads = 0;                                 ///< band threads per render; 0 = core count
-  int workers = 0;                                        ///< renders at once; 0 = core count
-  int max_queue = 0;                                      ///< renders waiting for a worker; 0 = 2 x workers
-  std::chrono::milliseconds render_deadline{10'000};      ///< parse + render + encode; 503 past it
-  std::chrono::milliseconds body_deadline{10'000};        ///< reading the body, whatever its pace; 408 past it
-  std::chrono::milliseconds shutdown_grace{20'000};       ///< after SIGTERM, how long renders may finish
+  raster::Limits limits;                              ///< scene limits, enforced by the library
+  std::size_t max_body_bytes = 32u << 20;             ///< request body cap in bytes (413 above it)
+  int render_threads = 0;                             ///< band threads per render; 0 = core count
+  int workers = 0;                                    ///< renders at once; 0 = core count
+  int max_queue = 0;                                  ///< renders waiting for a worker; 0 = 2 x workers
+  std::chrono::milliseconds render_deadline{10'000};  ///< parse + render + encode; 503 past it
+  std::chrono::milliseconds body_deadline{10'000};    ///< reading the body, whatever its pace; 408 past it
+  std::chrono::milliseconds shutdown_grace{20'000};   ///< after SIGTERM, how long renders may finish
 };
 
 /// Reads the configuration from `--flag value` arguments over environment variables over defaults.

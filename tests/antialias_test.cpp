@@ -15,7 +15,9 @@ namespace {
 using nlohmann::json;
 using test::kBlack;
 
-raster::Image render_json(const json& scene, int threads = 1) { return test::render(raster::parse_scene(scene.dump()), threads); }
+raster::Image render_json(const json& scene, int threads = 1) {
+  return test::render(raster::parse_scene(scene.dump()), threads);
+}
 
 // Area of the unit pixel [x, x+1] x [y, y+1] on the side n . p >= d of a line (exact polygon clipping).
 double area_inside(double x, double y, double nx, double ny, double d) {
@@ -48,7 +50,8 @@ double line_discrepancy(int samples) {
       const double d = nx * 0.5 + ny * 0.5 + o / 100.0;  // lines across the pixel centred at (0.5, 0.5)
       int in = 0;
       for (const auto& s : pattern) in += nx * (s.x / 256.0) + ny * (s.y / 256.0) - d >= 0;
-      worst = std::max(worst, std::abs(static_cast<double>(in) / pattern.size() - area_inside(0, 0, nx, ny, d)));
+      worst =
+          std::max(worst, std::abs(static_cast<double>(in) / pattern.size() - area_inside(0, 0, nx, ny, d)));
     }
   }
   return worst;
@@ -79,25 +82,31 @@ TEST(Antialias, OnlyStandardLevelsAreAccepted) {
 TEST(Antialias, HalfPlaneCoverageIsWithinTheSamplingBound) {
   for (int samples : {4, 8, 16}) {
     const double bound = line_discrepancy(samples);
-    // A well-spread pattern beats an ordered sqrt(N) x sqrt(N) grid, whose axis-aligned edges are off by 1 / sqrt(N).
+    // A well-spread pattern beats an ordered sqrt(N) x sqrt(N) grid, whose axis-aligned edges are off by 1 /
+    // sqrt(N).
     EXPECT_LT(bound, 1 / std::sqrt(static_cast<double>(samples))) << samples;
     RecordProperty("line_discrepancy_" + std::to_string(samples), std::to_string(bound));
     double worst = 0, sum = 0;
     int edge_pixels = 0;
     for (double degrees : {0.0, 7.0, 30.0, 45.0, 61.0, 83.0, 97.0}) {
-      const double t = degrees * M_PI / 180, nx = -std::sin(t), ny = std::cos(t);  // inside: below a line at angle t
-      const double cx = 31.37, cy = 32.81, d = nx * cx + ny * cy;                   // through a point off the pixel grid
+      const double t = degrees * M_PI / 180, nx = -std::sin(t),
+                   ny = std::cos(t);                               // inside: below a line at angle t
+      const double cx = 31.37, cy = 32.81, d = nx * cx + ny * cy;  // through a point off the pixel grid
       // A triangle far larger than the image whose one visible edge is that line.
       const double ux = std::cos(t), uy = std::sin(t), far = 1e4;
-      const json tri = {{"type", "triangle"},
-                        {"points", {{cx - far * ux, cy - far * uy}, {cx + far * ux, cy + far * uy}, {cx + far * nx, cy + far * ny}}},
-                        {"color", "#ffffff"}};
-      const auto img = render_json({{"width", 64}, {"height", 64}, {"antialias", samples}, {"primitives", {tri}}});
+      const json tri = {
+          {"type", "triangle"},
+          {"points",
+           {{cx - far * ux, cy - far * uy}, {cx + far * ux, cy + far * uy}, {cx + far * nx, cy + far * ny}}},
+          {"color", "#ffffff"}};
+      const auto img =
+          render_json({{"width", 64}, {"height", 64}, {"antialias", samples}, {"primitives", {tri}}});
       for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) {
           const double area = area_inside(x, y, nx, ny, d);
           const double err = std::abs(test::pixel(img, x, y).r / 255.0 - area);
-          ASSERT_LE(err, bound + 0.5 / 255 + 1e-9) << samples << " samples, " << degrees << " deg, pixel " << x << "," << y;
+          ASSERT_LE(err, bound + 0.5 / 255 + 1e-9)
+              << samples << " samples, " << degrees << " deg, pixel " << x << "," << y;
           if (area > 0 && area < 1) worst = std::max(worst, err), sum += err, ++edge_pixels;
         }
     }
@@ -115,19 +124,26 @@ TEST(Antialias, ResolvedJitteredGridShowsNoSeam) {
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const bool border = i == 0 || j == 0 || i == n || j == n;
-      g[j * (n + 1) + i] = {4.0 + i * cell + (border ? 0 : jitter(rng)), 4.0 + j * cell + (border ? 0 : jitter(rng))};
+      g[j * (n + 1) + i] = {4.0 + i * cell + (border ? 0 : jitter(rng)),
+                            4.0 + j * cell + (border ? 0 : jitter(rng))};
     }
   auto pt = [&](int i, int j) { return json{g[j * (n + 1) + i].first, g[j * (n + 1) + i].second}; };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      prims.push_back({{"type", "triangle"}, {"points", {pt(i, j), pt(i + 1, j), pt(i + 1, j + 1)}}, {"color", "#ffffff80"}});
-      prims.push_back({{"type", "triangle"}, {"points", {pt(i, j), pt(i + 1, j + 1), pt(i, j + 1)}}, {"color", "#ffffff80"}});
+      prims.push_back({{"type", "triangle"},
+                       {"points", {pt(i, j), pt(i + 1, j), pt(i + 1, j + 1)}},
+                       {"color", "#ffffff80"}});
+      prims.push_back({{"type", "triangle"},
+                       {"points", {pt(i, j), pt(i + 1, j + 1), pt(i, j + 1)}},
+                       {"color", "#ffffff80"}});
     }
   for (int samples : {4, 16}) {
-    const auto img = render_json({{"width", 8 + n * cell}, {"height", 8 + n * cell}, {"antialias", samples}, {"primitives", prims}});
+    const auto img = render_json(
+        {{"width", 8 + n * cell}, {"height", 8 + n * cell}, {"antialias", samples}, {"primitives", prims}});
     // Every pixel fully inside the grid: every sample hit exactly once, so the resolve is exactly 128.
     for (int y = 5; y < 3 + n * cell; ++y)
-      for (int x = 5; x < 3 + n * cell; ++x) ASSERT_EQ(test::pixel(img, x, y).r, 128) << samples << ": " << x << "," << y;
+      for (int x = 5; x < 3 + n * cell; ++x)
+        ASSERT_EQ(test::pixel(img, x, y).r, 128) << samples << ": " << x << "," << y;
   }
 }
 
@@ -139,8 +155,10 @@ TEST(Antialias, LinesCoverWidthTimesLength) {
     for (double degrees : {0.0, 13.0, 45.0, 71.0}) {
       const double t = degrees * M_PI / 180, length = 80;
       const double x0 = 20.3, y0 = 14.6, x1 = x0 + length * std::cos(t), y1 = y0 + length * std::sin(t);
-      const json line = {{"type", "line"}, {"points", {{x0, y0}, {x1, y1}}}, {"width", width}, {"color", "#ffffff"}};
-      const auto img = render_json({{"width", 128}, {"height", 128}, {"antialias", 16}, {"primitives", {line}}});
+      const json line = {
+          {"type", "line"}, {"points", {{x0, y0}, {x1, y1}}}, {"width", width}, {"color", "#ffffff"}};
+      const auto img =
+          render_json({{"width", 128}, {"height", 128}, {"antialias", 16}, {"primitives", {line}}});
       double covered = 0;
       for (int y = 0; y < 128; ++y)
         for (int x = 0; x < 128; ++x) covered += test::pixel(img, x, y).r / 255.0;
@@ -156,11 +174,16 @@ TEST(Antialias, IntersectingSurfacesGetSmoothIntersectionsFromPerSampleDepth) {
     const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
     return json{c * x - s * y, s * x + c * y, z};
   };
-  const json a = {{"type", "triangle"}, {"points", {turned(-1, -1, -1), turned(1, -1, 1), turned(0, 1, 0)}}, {"color", "#ff0000"}};
-  const json b = {{"type", "triangle"}, {"points", {turned(-1, -1, 1), turned(1, -1, -1), turned(0, 0.8, 0)}}, {"color", "#00ff00"}};
+  const json a = {{"type", "triangle"},
+                  {"points", {turned(-1, -1, -1), turned(1, -1, 1), turned(0, 1, 0)}},
+                  {"color", "#ff0000"}};
+  const json b = {{"type", "triangle"},
+                  {"points", {turned(-1, -1, 1), turned(1, -1, -1), turned(0, 0.8, 0)}},
+                  {"color", "#00ff00"}};
   const json cam = {{"eye", {0.3, 0.2, 4}}, {"target", {0, 0, 0}}, {"fov", 50}};
   const auto aliased = render_json({{"width", 80}, {"height", 80}, {"camera", cam}, {"primitives", {a, b}}});
-  const auto smooth = render_json({{"width", 80}, {"height", 80}, {"antialias", 8}, {"camera", cam}, {"primitives", {a, b}}});
+  const auto smooth =
+      render_json({{"width", 80}, {"height", 80}, {"antialias", 8}, {"camera", cam}, {"primitives", {a, b}}});
   // Pixels where the aliased image steps from red to green (to the right or below): the intersection.
   int boundary = 0, mixed_aliased = 0, mixed_smooth = 0;
   for (int y = 0; y + 1 < 80; ++y)
@@ -189,7 +212,8 @@ TEST(Antialias, SameBytesForAnyThreadCount) {
 // allocates equal the plan's estimate (no depth or sample storage unless the scene uses it).
 TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
   const std::string bunny = test::read_file(RASTERD_MODELS_DIR "/bunny.obj");
-  const json tri3d = {{"type", "triangle"}, {"points", {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}, {"color", "#ff0000"}};
+  const json tri3d = {
+      {"type", "triangle"}, {"points", {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}, {"color", "#ff0000"}};
   struct Case {
     const char* name;
     json scene;
@@ -198,16 +222,60 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
     int samples;
   };
   const Case cases[] = {
-      {"2D flat lines", {{"width", 64}, {"height", 48}, {"background", "#fff"}, {"primitives", {{{"type", "line"}, {"points", {{1, 1}, {60, 40}}}, {"color", "#000"}}}}}, raster::PixelFormat::grey8, false, 1},
-      {"2D gradient", json::parse(test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/gradient.json")), raster::PixelFormat::rgb8, false, 1},
-      {"2D alpha", json::parse(test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/alpha.json")), raster::PixelFormat::rgb8, false, 1},
-      {"2D transparent", {{"width", 32}, {"height", 32}, {"background", "#00000000"}, {"primitives", {{{"type", "triangle"}, {"points", {{0, 0}, {30, 0}, {0, 30}}}, {"color", "#f00"}}}}}, raster::PixelFormat::rgba8, false, 1},
-      {"opaque 3D mesh", {{"width", 64}, {"height", 64}, {"primitives", {tri3d}}}, raster::PixelFormat::rgb8, true, 1},
-      {"lit OBJ", {{"width", 96}, {"height", 96}, {"primitives", {{{"type", "obj"}, {"data", bunny}}}}}, raster::PixelFormat::grey8, true, 1},
-      {"anti-aliased 2D", {{"width", 64}, {"height", 64}, {"antialias", 4}, {"primitives", {{{"type", "triangle"}, {"points", {{0, 0}, {60, 5}, {9, 60}}}, {"color", "#0f0"}}}}}, raster::PixelFormat::rgb8, false, 4},
-      {"anti-aliased 3D", {{"width", 64}, {"height", 64}, {"antialias", 8}, {"primitives", {tri3d}}}, raster::PixelFormat::rgb8, true, 8},
+      {"2D flat lines",
+       {{"width", 64},
+        {"height", 48},
+        {"background", "#fff"},
+        {"primitives", {{{"type", "line"}, {"points", {{1, 1}, {60, 40}}}, {"color", "#000"}}}}},
+       raster::PixelFormat::grey8,
+       false,
+       1},
+      {"2D gradient", json::parse(test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/gradient.json")),
+       raster::PixelFormat::rgb8, false, 1},
+      {"2D alpha", json::parse(test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/alpha.json")),
+       raster::PixelFormat::rgb8, false, 1},
+      {"2D transparent",
+       {{"width", 32},
+        {"height", 32},
+        {"background", "#00000000"},
+        {"primitives", {{{"type", "triangle"}, {"points", {{0, 0}, {30, 0}, {0, 30}}}, {"color", "#f00"}}}}},
+       raster::PixelFormat::rgba8,
+       false,
+       1},
+      {"opaque 3D mesh",
+       {{"width", 64}, {"height", 64}, {"primitives", {tri3d}}},
+       raster::PixelFormat::rgb8,
+       true,
+       1},
+      {"lit OBJ",
+       {{"width", 96}, {"height", 96}, {"primitives", {{{"type", "obj"}, {"data", bunny}}}}},
+       raster::PixelFormat::grey8,
+       true,
+       1},
+      {"anti-aliased 2D",
+       {{"width", 64},
+        {"height", 64},
+        {"antialias", 4},
+        {"primitives", {{{"type", "triangle"}, {"points", {{0, 0}, {60, 5}, {9, 60}}}, {"color", "#0f0"}}}}},
+       raster::PixelFormat::rgb8,
+       false,
+       4},
+      {"anti-aliased 3D",
+       {{"width", 64}, {"height", 64}, {"antialias", 8}, {"primitives", {tri3d}}},
+       raster::PixelFormat::rgb8,
+       true,
+       8},
       {"tiny", {{"width", 1}, {"height", 1}}, raster::PixelFormat::grey8, false, 1},
-      {"large", {{"width", 2000}, {"height", 1500}, {"primitives", {{{"type", "triangle"}, {"points", {{0, 0}, {2000, 0}, {0, 1500}}}, {"colors", {"#f00", "#0f0", "#00f"}}}}}}, raster::PixelFormat::rgb8, false, 1},
+      {"large",
+       {{"width", 2000},
+        {"height", 1500},
+        {"primitives",
+         {{{"type", "triangle"},
+           {"points", {{0, 0}, {2000, 0}, {0, 1500}}},
+           {"colors", {"#f00", "#0f0", "#00f"}}}}}},
+       raster::PixelFormat::rgb8,
+       false,
+       1},
   };
   for (const Case& c : cases) {
     const auto scene = raster::parse_scene(c.scene.dump());
@@ -218,13 +286,16 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
     const std::int64_t pixels = static_cast<std::int64_t>(scene.width) * scene.height;
     EXPECT_EQ(plan.memory.color_bytes, pixels * raster::channel_count(c.format)) << c.name;
     EXPECT_EQ(plan.memory.depth_bytes, c.depth && c.samples == 1 ? pixels * 4 : 0) << c.name;
-    EXPECT_EQ(plan.memory.sample_bytes, c.samples > 1 ? pixels * c.samples * (raster::channel_count(c.format) + (c.depth ? 4 : 0)) : 0) << c.name;
+    EXPECT_EQ(plan.memory.sample_bytes,
+              c.samples > 1 ? pixels * c.samples * (raster::channel_count(c.format) + (c.depth ? 4 : 0)) : 0)
+        << c.name;
     raster::RenderStats stats;
     raster::RenderControl control;
     control.stats = &stats;
     const auto img = raster::render(scene, plan, control);
     EXPECT_EQ(stats.pixel_bytes, plan.memory.total()) << c.name << ": allocated what the plan said";
-    EXPECT_EQ(test::decode_png(raster::encode_png(img, plan.png)).channels, raster::channel_count(c.format)) << c.name;
+    EXPECT_EQ(test::decode_png(raster::encode_png(img, plan.png)).channels, raster::channel_count(c.format))
+        << c.name;
   }
 }
 

@@ -80,15 +80,19 @@ TEST(Line, HugeLinesAreClippedExactly) {
 }
 
 TEST(Line, PerVertexColoursInterpolateAlongTheMajorAxis) {
-  auto img = test::render(SceneBuilder(11, 3).line({0.5, 1.5}, {10.5, 1.5}, raster::Rgba8{0, 0, 0, 255},
-                                                   raster::Rgba8{200, 100, 250, 255}).scene);
+  auto img = test::render(
+      SceneBuilder(11, 3)
+          .line({0.5, 1.5}, {10.5, 1.5}, raster::Rgba8{0, 0, 0, 255}, raster::Rgba8{200, 100, 250, 255})
+          .scene);
   for (int x = 0; x <= 10; ++x) {
     EXPECT_EQ(test::pixel(img, x, 1).r, 20 * x);
     EXPECT_EQ(test::pixel(img, x, 1).b, 25 * x);
   }
   // reversed: same pixels and colours
-  auto rev = test::render(SceneBuilder(11, 3).line({10.5, 1.5}, {0.5, 1.5}, raster::Rgba8{200, 100, 250, 255},
-                                                   raster::Rgba8{0, 0, 0, 255}).scene);
+  auto rev = test::render(
+      SceneBuilder(11, 3)
+          .line({10.5, 1.5}, {0.5, 1.5}, raster::Rgba8{200, 100, 250, 255}, raster::Rgba8{0, 0, 0, 255})
+          .scene);
   EXPECT_EQ(img.pixels, rev.pixels);
 }
 
@@ -117,7 +121,8 @@ TEST(Line, TriangleOutlineUsesTheLineRule) {
   s.triangle({5.5, 5.5}, {30.5, 8.5}, {12.5, 33.5}, kWhite, /*fill=*/false);
   const auto outline = test::mask_not(test::render(s.scene), kBlack);
   std::vector<std::uint8_t> expect(40 * 40, 0);
-  for (auto [a, b] : {std::pair{Point2{5.5, 5.5}, Point2{30.5, 8.5}}, {Point2{30.5, 8.5}, Point2{12.5, 33.5}},
+  for (auto [a, b] : {std::pair{Point2{5.5, 5.5}, Point2{30.5, 8.5}},
+                      {Point2{30.5, 8.5}, Point2{12.5, 33.5}},
                       {Point2{12.5, 33.5}, Point2{5.5, 5.5}}}) {
     const auto m = ref::line(a.x, a.y, b.x, b.y, 40, 40);
     for (std::size_t i = 0; i < m.size(); ++i) expect[i] |= m[i];

@@ -16,7 +16,8 @@ raster::RenderPlan plan_of(const raster::Scene& s, int threads = 0) {
 
 TEST(Plan, FlatLineDrawingIsOneGreyChannelAndNothingElse) {
   SceneBuilder s(64, 64, raster::Rgba8{255, 255, 255, 255});
-  s.line({1, 1}, {60, 30}, raster::Rgba8{0, 0, 0, 255}).line({1, 60}, {60, 3}, raster::Rgba8{90, 90, 90, 255});
+  s.line({1, 1}, {60, 30}, raster::Rgba8{0, 0, 0, 255})
+      .line({1, 60}, {60, 3}, raster::Rgba8{90, 90, 90, 255});
   const auto p = plan_of(s.scene);
   EXPECT_EQ(p.format, raster::PixelFormat::grey8);
   EXPECT_FALSE(p.depth_buffer);
@@ -30,7 +31,8 @@ TEST(Plan, FlatLineDrawingIsOneGreyChannelAndNothingElse) {
   EXPECT_EQ(p.png.color_type, 0);
   const auto img = raster::render(s.scene, p);
   EXPECT_EQ(static_cast<std::int64_t>(img.pixels.size()), p.memory.color_bytes);
-  EXPECT_EQ(test::decode_png(raster::encode_png(img, p.png)).channels, 1) << "a grey scene is a 1-channel PNG";
+  EXPECT_EQ(test::decode_png(raster::encode_png(img, p.png)).channels, 1)
+      << "a grey scene is a 1-channel PNG";
 }
 
 TEST(Plan, GradientIsRgbAndSmooth) {
@@ -47,7 +49,8 @@ TEST(Plan, TranslucentInkOnOpaqueBackgroundStaysOpaqueRgb) {
   SceneBuilder s(16, 16, raster::Rgba8{10, 20, 30, 255});
   s.triangle({1, 1}, {15, 1}, {1, 15}, raster::Rgba8{255, 0, 0, 100});
   const auto p = plan_of(s.scene);
-  EXPECT_EQ(p.format, raster::PixelFormat::rgb8) << "blending onto opaque pixels cannot make them transparent";
+  EXPECT_EQ(p.format, raster::PixelFormat::rgb8)
+      << "blending onto opaque pixels cannot make them transparent";
   EXPECT_EQ(p.blend_count, 1);
   EXPECT_TRUE(p.primitives[0].blend);
 }
@@ -63,9 +66,9 @@ TEST(Plan, TransparentBackgroundNeedsAlpha) {
   EXPECT_EQ(p.png.color_type, 4);
   const auto d = test::decode_png(raster::encode_png(raster::render(ga.scene, p), p.png));
   EXPECT_EQ(d.channels, 2);
-  EXPECT_EQ(d.pixels[0], 0);                          // background grey ...
-  EXPECT_EQ(d.pixels[1], 0);                          // ... fully transparent
-  EXPECT_EQ(d.pixels[(2 * 16 + 2) * 2], 200);         // ink
+  EXPECT_EQ(d.pixels[0], 0);                   // background grey ...
+  EXPECT_EQ(d.pixels[1], 0);                   // ... fully transparent
+  EXPECT_EQ(d.pixels[(2 * 16 + 2) * 2], 200);  // ink
   EXPECT_EQ(d.pixels[(2 * 16 + 2) * 2 + 1], 255);
 }
 
@@ -84,7 +87,7 @@ TEST(Plan, EqualVertexColoursTakeTheFlatPathWithIdenticalPixels) {
 TEST(Plan, PrimitivesOutsideTheImageAreCulled) {
   SceneBuilder s(32, 32);
   s.triangle({-50, -50}, {-10, -40}, {-30, -5}, test::kRed)  // left of and above the image
-      .line({40, 0}, {90, 31}, test::kRed)                    // right of it
+      .line({40, 0}, {90, 31}, test::kRed)                   // right of it
       .triangle({1, 1}, {30, 1}, {1, 30}, test::kGreen);
   const auto p = plan_of(s.scene);
   EXPECT_EQ(p.culled_count, 2);
@@ -101,7 +104,9 @@ TEST(Plan, SmallScenesStayOnTheCallingThreadLargeOnesUseBands) {
   EXPECT_EQ(plan_of(tiny.scene, 8).threads, 1);
   // Few large primitives on a small image: the work estimate is over the threshold, the scene is small.
   SceneBuilder thumbnail(256, 256);
-  for (int i = 0; i < 4; ++i) thumbnail.triangle({0, 0}, {256, 0}, {0, 256}, test::kRed).triangle({256, 0}, {256, 256}, {0, 256}, test::kRed);
+  for (int i = 0; i < 4; ++i)
+    thumbnail.triangle({0, 0}, {256, 0}, {0, 256}, test::kRed)
+        .triangle({256, 0}, {256, 256}, {0, 256}, test::kRed);
   EXPECT_GT(plan_of(thumbnail.scene, 8).work, 100'000);
   EXPECT_EQ(plan_of(thumbnail.scene, 8).threads, 1) << "256x256 with <= 100 primitives never hands off";
   SceneBuilder big(1024, 1024);
@@ -126,7 +131,8 @@ TEST(Plan, MemoryIsCheckedBeforeAllocation) {
 
 TEST(Plan, ExplainShowsTheDecisions) {
   SceneBuilder s(20, 10);
-  s.triangle({1, 1}, {19, 1}, {1, 9}, test::kRed, test::kGreen, test::kBlue).line({0, 0}, {5, 5}, raster::Rgba8{1, 2, 3, 4});
+  s.triangle({1, 1}, {19, 1}, {1, 9}, test::kRed, test::kGreen, test::kBlue)
+      .line({0, 0}, {5, 5}, raster::Rgba8{1, 2, 3, 4});
   const auto p = plan_of(s.scene);
   EXPECT_EQ(raster::explain_line(p), "rgb8 depth=none samples=1 flat=1 smooth=1 blend=1 culled=0 threads=1");
   const std::string j = raster::explain_json(p);

@@ -12,7 +12,9 @@ namespace ref {
 using i128 = __int128;
 
 /// Snap to 1/256 px, rounding half up (the rule the scene format documents).
-inline std::int64_t snap(double px) { return static_cast<std::int64_t>(std::floor(px * 256.0 + 0.5)); }
+inline std::int64_t snap(double px) {
+  return static_cast<std::int64_t>(std::floor(px * 256.0 + 0.5));
+}
 
 struct V {
   std::int64_t x, y;  // 1/256 px

@@ -15,11 +15,15 @@ raster::Scene random_scene(int w, int h, int n, unsigned seed) {
   std::uniform_real_distribution<double> x(-20, w + 20), y(-20, h + 20);
   std::uniform_int_distribution<int> byte(0, 255);
   SceneBuilder s(w, h, raster::Rgba8{20, 30, 40, 255});
-  auto color = [&] { return raster::Rgba8{static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)),
-                                          static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng) | 64)}; };
+  auto color = [&] {
+    return raster::Rgba8{static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)),
+                         static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng) | 64)};
+  };
   for (int i = 0; i < n; ++i) {
-    if (i % 3 == 0) s.line({x(rng), y(rng)}, {x(rng), y(rng)}, color(), color());
-    else s.triangle({x(rng), y(rng)}, {x(rng), y(rng)}, {x(rng), y(rng)}, color(), color(), color());
+    if (i % 3 == 0)
+      s.line({x(rng), y(rng)}, {x(rng), y(rng)}, color(), color());
+    else
+      s.triangle({x(rng), y(rng)}, {x(rng), y(rng)}, {x(rng), y(rng)}, color(), color(), color());
   }
   return s.scene;
 }
@@ -55,11 +59,14 @@ TEST(Render, PngRoundTripsEveryFormat) {
 TEST(Render, AsymmetricImageSurvivesEncodingUnflipped) {
   // Red top-left, green top-right, blue bottom-left: a flip or channel swap in the encoder fails.
   SceneBuilder s(40, 30);
-  s.triangle({0, 0}, {10, 0}, {0, 10}, test::kRed).triangle({30, 0}, {40, 0}, {40, 10}, test::kGreen)
+  s.triangle({0, 0}, {10, 0}, {0, 10}, test::kRed)
+      .triangle({30, 0}, {40, 0}, {40, 10}, test::kGreen)
       .triangle({0, 20}, {10, 30}, {0, 30}, test::kBlue);
   const auto p = raster::plan(s.scene);
   const auto d = test::decode_png(raster::encode_png(raster::render(s.scene, p), p.png));
-  auto px = [&](int x, int y) { return std::vector<int>(d.pixels.begin() + (y * 40 + x) * 3, d.pixels.begin() + (y * 40 + x) * 3 + 3); };
+  auto px = [&](int x, int y) {
+    return std::vector<int>(d.pixels.begin() + (y * 40 + x) * 3, d.pixels.begin() + (y * 40 + x) * 3 + 3);
+  };
   EXPECT_EQ(px(1, 1), (std::vector<int>{255, 0, 0}));
   EXPECT_EQ(px(38, 1), (std::vector<int>{0, 255, 0}));
   EXPECT_EQ(px(1, 28), (std::vector<int>{0, 0, 255}));
@@ -68,7 +75,8 @@ TEST(Render, AsymmetricImageSurvivesEncodingUnflipped) {
 
 TEST(Render, BlendingIsSourceOverInDrawOrder) {
   SceneBuilder s(4, 4, raster::Rgba8{0, 0, 255, 255});
-  s.triangle({0, 0}, {4, 0}, {0, 4}, raster::Rgba8{255, 0, 0, 128}).triangle({0, 0}, {4, 0}, {0, 4}, raster::Rgba8{0, 255, 0, 64});
+  s.triangle({0, 0}, {4, 0}, {0, 4}, raster::Rgba8{255, 0, 0, 128})
+      .triangle({0, 0}, {4, 0}, {0, 4}, raster::Rgba8{0, 255, 0, 64});
   const auto c = test::pixel(test::render(s.scene), 0, 0);
   // red over blue: (128, 0, 127); then green a=64: r = 128*191/255, g = 255*64/255, b = 127*191/255
   EXPECT_EQ(c.r, 96);
@@ -78,7 +86,8 @@ TEST(Render, BlendingIsSourceOverInDrawOrder) {
 
 TEST(Render, BlendingOntoTransparentKeepsStraightAlpha) {
   SceneBuilder s(2, 2, raster::Rgba8{0, 0, 0, 0});
-  s.triangle({0, 0}, {2, 0}, {0, 2}, raster::Rgba8{200, 100, 50, 128}).triangle({0, 0}, {2, 0}, {0, 2}, raster::Rgba8{0, 0, 250, 128});
+  s.triangle({0, 0}, {2, 0}, {0, 2}, raster::Rgba8{200, 100, 50, 128})
+      .triangle({0, 0}, {2, 0}, {0, 2}, raster::Rgba8{0, 0, 250, 128});
   const auto c = test::pixel(test::render(s.scene), 0, 0);
   // first: exactly the source (nothing below); second over it: a = 128 + 128 * 127/255 = 192
   EXPECT_EQ(c.a, 192);

@@ -49,7 +49,8 @@ TEST(Robustness, ManyPrimitivesAreBoundedByTheLimit) {
   raster::Limits limits;
   limits.max_primitives = 1000;
   std::string scene = R"({"width": 16, "height": 16, "primitives": [)";
-  for (int i = 0; i < 1001; ++i) scene += std::string(i ? "," : "") + R"({"type":"line","points":[[0,0],[1,1]]})";
+  for (int i = 0; i < 1001; ++i)
+    scene += std::string(i ? "," : "") + R"({"type":"line","points":[[0,0],[1,1]]})";
   scene += "]}";
   try {
     raster::parse_scene(scene, limits);
@@ -61,8 +62,10 @@ TEST(Robustness, ManyPrimitivesAreBoundedByTheLimit) {
   // Mesh triangles count against the same limit, before any index is read.
   limits.max_primitives = 2;
   try {
-    raster::parse_scene(R"({"width": 8, "height": 8, "primitives": [{"type": "mesh", "positions": [0,0,0, 1,0,0, 0,1,0],
-                           "indices": [0,1,2, 0,1,2, 0,1,2]}]})", limits);
+    raster::parse_scene(
+        R"({"width": 8, "height": 8, "primitives": [{"type": "mesh", "positions": [0,0,0, 1,0,0, 0,1,0],
+                           "indices": [0,1,2, 0,1,2, 0,1,2]}]})",
+        limits);
     FAIL();
   } catch (const raster::SceneError& e) {
     EXPECT_EQ(e.kind(), raster::ErrorKind::limit);
@@ -73,7 +76,8 @@ TEST(Robustness, ManyPrimitivesAreBoundedByTheLimit) {
 TEST(Robustness, CoordinatesBeyondTheFloatRangeAreRefused) {
   const auto e = [] {
     try {
-      raster::parse_scene(R"({"width": 8, "height": 8, "primitives": [{"type": "line", "points": [[0,0],[1e39, 1]]}]})");
+      raster::parse_scene(
+          R"({"width": 8, "height": 8, "primitives": [{"type": "line", "points": [[0,0],[1e39, 1]]}]})");
     } catch (const raster::SceneError& e) {
       return e;
     }

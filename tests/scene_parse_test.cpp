@@ -91,11 +91,13 @@ TEST(SceneParse, WrongTypesAndArities) {
       {with_primitive(R"({"type":"line","points":[[0,0],[1,2]],"colors":["#fff"]})"), "/primitives/0/colors"},
       {with_primitive(R"({"type":"line","points":[[0,0],[1,2]],"color":"#ff"})"), "/primitives/0/color"},
       {with_primitive(R"({"type":"line","points":[[0,0],[1,2]],"color":[1,1]})"), "/primitives/0/color"},
-      {with_primitive(R"({"type":"triangle","points":[[0,0],[1,0],[0,1]],"fill":"no"})"), "/primitives/0/fill"},
+      {with_primitive(R"({"type":"triangle","points":[[0,0],[1,0],[0,1]],"fill":"no"})"),
+       "/primitives/0/fill"},
       {with_primitive(R"({"type":"circle","points":[[0,0]]})"), "/primitives/0/type"},
       {with_primitive(R"({"points":[[0,0],[1,1]]})"), "/primitives/0"},
       {with_primitive(R"(42)"), "/primitives/0"},
-      {with_primitive(R"({"type":"line","points":[[0,0],[1,2]],"color":"#fff","colors":["#fff","#000"]})"), "/primitives/0"},
+      {with_primitive(R"({"type":"line","points":[[0,0],[1,2]],"color":"#fff","colors":["#fff","#000"]})"),
+       "/primitives/0"},
       {R"({"width": 8})", ""},
       {R"([1, 2])", ""},
   };
@@ -110,7 +112,8 @@ TEST(SceneParse, ColourComponentsOutsideUnitRangeHintAtHex) {
   const auto e = parse_error(R"({"width": 8, "height": 8, "background": [255, 0, 0]})");
   EXPECT_EQ(e.where().pointer, "/background/0");
   EXPECT_NE(std::string(e.what()).find("did you mean \"#ff0000\""), std::string::npos) << e.what();
-  EXPECT_EQ(parse_error(R"({"width": 8, "height": 8, "background": [0, -0.1, 0]})").where().pointer, "/background/1");
+  EXPECT_EQ(parse_error(R"({"width": 8, "height": 8, "background": [0, -0.1, 0]})").where().pointer,
+            "/background/1");
 }
 
 TEST(SceneParse, MalformedJsonIsASyntaxErrorWithAByteOffset) {
@@ -131,7 +134,8 @@ TEST(SceneParse, DeepNestingIsCutAtTheDepthLimit) {
   EXPECT_EQ(e.kind(), ErrorKind::syntax);
   EXPECT_NE(std::string(e.what()).find("deeper than 64"), std::string::npos) << e.what();
   // 64 levels are fine where the grammar allows them (here: inside an ignored-by-type position)
-  std::string ok = R"({"width": 1, "height": 1, "primitives": [)" + std::string(62, '[') + std::string(62, ']') + "]}";
+  std::string ok =
+      R"({"width": 1, "height": 1, "primitives": [)" + std::string(62, '[') + std::string(62, ']') + "]}";
   EXPECT_EQ(parse_error(ok).kind(), ErrorKind::invalid) << "depth 64 parses; the content is then invalid";
 }
 

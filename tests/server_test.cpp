@@ -1,7 +1,6 @@
 // The HTTP service through real HTTP on an ephemeral loopback port, with the routes main() serves.
 #include <gtest/gtest.h>
 
-
 #include <nlohmann/json.hpp>
 
 #include "support.h"
@@ -28,7 +27,8 @@ TEST(Server, RendersAScene) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
-  EXPECT_EQ(r->get_header_value("X-Render-Plan"), "rgb8 depth=none samples=1 flat=0 smooth=1 blend=0 culled=0 threads=1");
+  EXPECT_EQ(r->get_header_value("X-Render-Plan"),
+            "rgb8 depth=none samples=1 flat=0 smooth=1 blend=0 culled=0 threads=1");
   EXPECT_FALSE(r->get_header_value("X-Request-Id").empty());
   const auto png = test::decode_png(r->body);
   // The same bytes as the library gives: the server adds nothing of its own to the picture.
@@ -58,7 +58,8 @@ TEST(Server, OneMebibyteFormEncodedBodyRenders) {
   int n = 0;
   while (scene.size() < (1u << 20)) {
     if (n++) scene += ",";
-    scene += R"({"type":"line","points":[[)" + std::to_string(n % 128) + ",0],[127," + std::to_string(n % 128) + "]],\"color\":\"#fff\"}";
+    scene += R"({"type":"line","points":[[)" + std::to_string(n % 128) + ",0],[127," +
+             std::to_string(n % 128) + "]],\"color\":\"#fff\"}";
   }
   scene += "]}";
   ASSERT_GE(scene.size(), 1u << 20);
@@ -70,7 +71,9 @@ TEST(Server, OneMebibyteFormEncodedBodyRenders) {
 
 TEST(Server, InvalidSceneIsA400ProblemWithAPointer) {
   TestServer server;
-  auto r = server.client().Post("/render", R"({"width": 8, "height": 8, "primitives": [{"type": "line", "points": [[0,0],[1,"x"]]}]})", "application/json");
+  auto r = server.client().Post(
+      "/render", R"({"width": 8, "height": 8, "primitives": [{"type": "line", "points": [[0,0],[1,"x"]]}]})",
+      "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 400);
   const auto j = problem_of(r);
@@ -108,7 +111,8 @@ TEST(Server, BodyOverTheCapIsA413) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 413);
   problem_of(r);
-  auto ok = server.client().Post("/render", R"({"width": 1, "height": 1})" + std::string(900, ' '), "application/json");
+  auto ok = server.client().Post("/render", R"({"width": 1, "height": 1})" + std::string(900, ' '),
+                                 "application/json");
   ASSERT_TRUE(ok);
   EXPECT_EQ(ok->status, 200);
 }
@@ -148,12 +152,16 @@ TEST(Server, HealthAndUnknownRoutes) {
 
 // --- 3D uploads: the three forms of issue 3, with the Stanford bunny -------------------------------------
 
-std::string bunny() { return test::read_file(RASTERD_MODELS_DIR "/bunny.obj"); }
+std::string bunny() {
+  return test::read_file(RASTERD_MODELS_DIR "/bunny.obj");
+}
 
 TEST(ServerObj, MultipartSceneAndModel) {
   TestServer server;
   httplib::MultipartFormDataItems items = {
-      {"scene", R"({"width": 200, "height": 150, "background": "#102030", "primitives": [{"type": "obj", "source": "model", "color": "#e0a060"}]})", "scene.json", "application/json"},
+      {"scene",
+       R"({"width": 200, "height": 150, "background": "#102030", "primitives": [{"type": "obj", "source": "model", "color": "#e0a060"}]})",
+       "scene.json", "application/json"},
       {"model", bunny(), "bunny.obj", "text/plain"},
   };
   auto r = server.client().Post("/render", items);
@@ -177,7 +185,8 @@ TEST(ServerObj, MultipartModelAloneUsesTheDefaultScene) {
 
 TEST(ServerObj, RawObjBodyWithQueryParameters) {
   TestServer server;
-  auto r = server.client().Post("/render?width=320&height=240&background=%23ffffff&projection=orthographic", bunny(), "application/octet-stream");
+  auto r = server.client().Post("/render?width=320&height=240&background=%23ffffff&projection=orthographic",
+                                bunny(), "application/octet-stream");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   const auto png = test::decode_png(r->body);
@@ -192,7 +201,9 @@ TEST(ServerObj, RawObjBodyWithQueryParameters) {
 
 TEST(ServerObj, InlineObjInAScene) {
   TestServer server;
-  const nlohmann::json scene = {{"width", 96}, {"height", 96}, {"primitives", {{{"type", "obj"}, {"data", bunny()}, {"shading", "flat"}}}}};
+  const nlohmann::json scene = {{"width", 96},
+                                {"height", 96},
+                                {"primitives", {{{"type", "obj"}, {"data", bunny()}, {"shading", "flat"}}}}};
   auto r = server.client().Post("/render", scene.dump(), "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200) << r->body;
@@ -223,11 +234,14 @@ TEST(ServerObj, BadModelIsA422NamingTheLine) {
 
 TEST(Server, AntialiasThroughHttp) {
   TestServer server;
-  auto r = server.client().Post("/render", test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/aa-16.json"), "application/json");
+  auto r = server.client().Post("/render", test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/aa-16.json"),
+                                "application/json");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200);
-  EXPECT_NE(r->get_header_value("X-Render-Plan").find("samples=16"), std::string::npos) << r->get_header_value("X-Render-Plan");
-  auto bad = server.client().Post("/render", R"({"width": 8, "height": 8, "antialias": 3})", "application/json");
+  EXPECT_NE(r->get_header_value("X-Render-Plan").find("samples=16"), std::string::npos)
+      << r->get_header_value("X-Render-Plan");
+  auto bad =
+      server.client().Post("/render", R"({"width": 8, "height": 8, "antialias": 3})", "application/json");
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(problem_of(bad)["pointer"], "/antialias");

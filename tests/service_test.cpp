@@ -30,7 +30,9 @@ using test::TestServer;
 std::string slow_scene() {
   nlohmann::json prims = nlohmann::json::array();
   for (int i = 0; i < 20; ++i)
-    prims.push_back({{"type", "triangle"}, {"points", {{0, 0}, {2048, 0}, {0, 2048}}}, {"colors", {"#ff0000", "#00ff00", "#0000ff"}}});
+    prims.push_back({{"type", "triangle"},
+                     {"points", {{0, 0}, {2048, 0}, {0, 2048}}},
+                     {"colors", {"#ff0000", "#00ff00", "#0000ff"}}});
   return nlohmann::json{{"width", 2048}, {"height", 2048}, {"primitives", prims}}.dump();
 }
 
@@ -49,7 +51,9 @@ class RawClient {
   }
   ~RawClient() { ::close(fd_); }
   bool connected() const { return connected_; }
-  bool send(const std::string& s) { return ::send(fd_, s.data(), s.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(s.size()); }
+  bool send(const std::string& s) {
+    return ::send(fd_, s.data(), s.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(s.size());
+  }
   std::string receive_all() {
     std::string out;
     char buf[4096];
@@ -116,7 +120,9 @@ TEST(Service, EachSceneLimitHasItsStatus) {
   config.limits.max_obj_faces = 1;
   config.limits.max_json_depth = 8;
   TestServer server(config);
-  auto post = [&](const std::string& body) { return server.client().Post("/render", body, "application/json"); };
+  auto post = [&](const std::string& body) {
+    return server.client().Post("/render", body, "application/json");
+  };
   auto r = post(R"({"width": 4, "height": 4, "primitives": [{}, {}, {}, {}]})");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422);
@@ -139,13 +145,18 @@ TEST(Service, SaturatedServiceRefusesAtOnceAndStaysHealthy) {
   config.render_threads = 1;
   TestServer server(config);
   const std::string scene = slow_scene();
-  auto slow = [&] { return std::async(std::launch::async, [&] { return server.client().Post("/render", scene, "application/json"); }); };
+  auto slow = [&] {
+    return std::async(std::launch::async,
+                      [&] { return server.client().Post("/render", scene, "application/json"); });
+  };
   auto first = slow();
   auto second = slow();
   // Wait until one render runs and one waits.
   for (int i = 0; i < 2000; ++i) {
     const auto m = server.client().Get("/metrics");
-    if (m && metric(m->body, "rasterd_renders_in_flight") == 1 && metric(m->body, "rasterd_render_queue_length") == 1) break;
+    if (m && metric(m->body, "rasterd_renders_in_flight") == 1 &&
+        metric(m->body, "rasterd_render_queue_length") == 1)
+      break;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   auto third = server.client().Post("/render", scene, "application/json");
@@ -210,7 +221,14 @@ TEST(Service, MetricsAndServerTiming) {
                                std::regex(R"(parse;dur=[0-9.]+, raster;dur=[0-9.]+, encode;dur=[0-9.]+)")))
       << r->get_header_value("Server-Timing");
   server.client().Get("/nope");
-  const auto m = server.client().Get("/metrics");
+  // cpp-httplib calls the logger, which counts the request, just after writing the response: a fast
+  // client can ask for /metrics before the previous request is counted. Wait (bounded) for it.
+  httplib::Result m;
+  for (int i = 0; i < 500; ++i) {
+    m = server.client().Get("/metrics");
+    if (m && metric(m->body, R"(rasterd_requests_total{route="other",status="404"})") == 1) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
   ASSERT_TRUE(m);
   EXPECT_EQ(m->get_header_value("Content-Type"), "text/plain; version=0.0.4");
   EXPECT_EQ(metric(m->body, R"(rasterd_requests_total{route="/render",status="200"})"), 1);
@@ -235,8 +253,8 @@ TEST(Service, SigtermLetsAcceptedRendersFinish) {
     ::close(fd);
   }
   const std::string port_text = std::to_string(port);
-  const char* argv[] = {RASTERD_BINARY, "serve", "--host", "127.0.0.1", "--port", port_text.c_str(), "--workers", "1",
-                        "--render-threads", "1", nullptr};
+  const char* argv[] = {RASTERD_BINARY, "serve", "--host",           "127.0.0.1", "--port", port_text.c_str(),
+                        "--workers",    "1",     "--render-threads", "1",         nullptr};
   pid_t pid = 0;
   ASSERT_EQ(posix_spawn(&pid, RASTERD_BINARY, nullptr, nullptr, const_cast<char**>(argv), environ), 0);
   httplib::Client probe("127.0.0.1", port);
@@ -257,7 +275,9 @@ TEST(Service, SigtermLetsAcceptedRendersFinish) {
     }));
   for (int i = 0; i < 2000; ++i) {  // all three accepted: one running, two queued
     const auto m = probe.Get("/metrics");
-    if (m && metric(m->body, "rasterd_renders_in_flight") == 1 && metric(m->body, "rasterd_render_queue_length") == 2) break;
+    if (m && metric(m->body, "rasterd_renders_in_flight") == 1 &&
+        metric(m->body, "rasterd_render_queue_length") == 2)
+      break;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   ASSERT_EQ(::kill(pid, SIGTERM), 0);

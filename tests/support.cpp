@@ -75,10 +75,14 @@ raster::Image render(const raster::Scene& scene, int threads) {
 Rgba8 pixel(const raster::Image& image, int x, int y) {
   const std::uint8_t* p = image.at(x, y);
   switch (image.format) {
-    case raster::PixelFormat::grey8: return {p[0], p[0], p[0], 255};
-    case raster::PixelFormat::grey_alpha8: return {p[0], p[0], p[0], p[1]};
-    case raster::PixelFormat::rgb8: return {p[0], p[1], p[2], 255};
-    case raster::PixelFormat::rgba8: return {p[0], p[1], p[2], p[3]};
+    case raster::PixelFormat::grey8:
+      return {p[0], p[0], p[0], 255};
+    case raster::PixelFormat::grey_alpha8:
+      return {p[0], p[0], p[0], p[1]};
+    case raster::PixelFormat::rgb8:
+      return {p[0], p[1], p[2], 255};
+    case raster::PixelFormat::rgba8:
+      return {p[0], p[1], p[2], p[3]};
   }
   return {};
 }
@@ -86,7 +90,8 @@ Rgba8 pixel(const raster::Image& image, int x, int y) {
 std::vector<std::uint8_t> mask_not(const raster::Image& image, Rgba8 background) {
   std::vector<std::uint8_t> mask(static_cast<std::size_t>(image.width) * image.height);
   for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) mask[static_cast<std::size_t>(y) * image.width + x] = !(pixel(image, x, y) == background);
+    for (int x = 0; x < image.width; ++x)
+      mask[static_cast<std::size_t>(y) * image.width + x] = !(pixel(image, x, y) == background);
   return mask;
 }
 
@@ -98,14 +103,17 @@ int count_not(const raster::Image& image, Rgba8 background) {
 
 Decoded decode_png(const std::vector<std::uint8_t>& png) {
   Decoded d;
-  unsigned char* data = stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &d.width, &d.height, &d.channels, 0);
+  unsigned char* data =
+      stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &d.width, &d.height, &d.channels, 0);
   if (!data) throw std::runtime_error(std::string("PNG does not decode: ") + stbi_failure_reason());
   d.pixels.assign(data, data + static_cast<std::size_t>(d.width) * d.height * d.channels);
   stbi_image_free(data);
   return d;
 }
 
-Decoded decode_png(const std::string& png) { return decode_png(std::vector<std::uint8_t>(png.begin(), png.end())); }
+Decoded decode_png(const std::string& png) {
+  return decode_png(std::vector<std::uint8_t>(png.begin(), png.end()));
+}
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

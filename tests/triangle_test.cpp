@@ -53,7 +53,8 @@ TEST(Triangle, VerticesSnapToEightSubpixelBits) {
     s.triangle({0, 0}, {x, 0}, {x, 4}, kWhite).triangle({0, 0}, {x, 4}, {0, 4}, kWhite);
     return test::pixel(test::render(s.scene), 3, 1);
   };
-  EXPECT_EQ(with_right_edge_at(3.5 + 1.0 / 1024), kBlack) << "snapped onto the centre: right edge excludes it";
+  EXPECT_EQ(with_right_edge_at(3.5 + 1.0 / 1024), kBlack)
+      << "snapped onto the centre: right edge excludes it";
   EXPECT_EQ(with_right_edge_at(3.5 + 1.0 / 256), kWhite) << "one sub-pixel step past the centre covers it";
   EXPECT_EQ(with_right_edge_at(3.5 - 1.0 / 256), kBlack);
 }
@@ -63,7 +64,8 @@ TEST(Triangle, VerticesSnapToEightSubpixelBits) {
 // diagonal's pixel centres, where the left-edge rule includes them; rounding away from zero would move the
 // edge 1/256 px and drop the whole diagonal.
 TEST(Triangle, SnappingRoundsHalfUpAlsoForNegativeCoordinates) {
-  auto tie = test::render(SceneBuilder(32, 32).triangle({-100, -100 - 1.0 / 512}, {60, 60}, {60, -100}, kWhite).scene);
+  auto tie = test::render(
+      SceneBuilder(32, 32).triangle({-100, -100 - 1.0 / 512}, {60, 60}, {60, -100}, kWhite).scene);
   auto exact = test::render(SceneBuilder(32, 32).triangle({-100, -100}, {60, 60}, {60, -100}, kWhite).scene);
   EXPECT_EQ(tie.pixels, exact.pixels);
   for (int i = 0; i < 32; ++i) EXPECT_EQ(test::pixel(tie, i, i), kWhite) << i;
@@ -78,7 +80,7 @@ TEST(Triangle, BothWindingsCoverTheSamePixels) {
 
 TEST(Triangle, DegenerateTrianglesDrawNothing) {
   SceneBuilder s(16, 16);
-  s.triangle({1, 1}, {8, 8}, {15, 15}, kWhite)        // collinear through pixel centres' diagonal
+  s.triangle({1, 1}, {8, 8}, {15, 15}, kWhite)               // collinear through pixel centres' diagonal
       .triangle({4.5, 4.5}, {4.5, 4.5}, {4.5, 4.5}, kWhite)  // a point on a centre
       .triangle({2, 2}, {9, 2}, {2, 2}, kWhite);             // repeated vertex
   EXPECT_EQ(test::count_not(test::render(s.scene), kBlack), 0);
@@ -138,7 +140,8 @@ TEST(Triangle, JitteredGridIsWatertight) {
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const bool border = i == 0 || j == 0 || i == n || j == n;
-      grid[j * (n + 1) + i] = {4.0 + i * cell + (border ? 0 : jitter(rng)), 4.0 + j * cell + (border ? 0 : jitter(rng))};
+      grid[j * (n + 1) + i] = {4.0 + i * cell + (border ? 0 : jitter(rng)),
+                               4.0 + j * cell + (border ? 0 : jitter(rng))};
     }
   SceneBuilder s(n * cell + 8, n * cell + 8);
   for (int j = 0; j < n; ++j)
@@ -163,7 +166,8 @@ TEST(Triangle, ThousandSliceFanIsWatertight) {
   const double r = 60;
   for (int k = 0; k < slices; ++k) {
     const double t0 = 2 * M_PI * k / slices, t1 = 2 * M_PI * (k + 1) / slices;
-    s.triangle(c, {c.x + r * std::cos(t0), c.y + r * std::sin(t0)}, {c.x + r * std::cos(t1), c.y + r * std::sin(t1)}, kHalfWhite);
+    s.triangle(c, {c.x + r * std::cos(t0), c.y + r * std::sin(t0)},
+               {c.x + r * std::cos(t1), c.y + r * std::sin(t1)}, kHalfWhite);
   }
   auto img = test::render(s.scene);
   for (int y = 0; y < 128; ++y)
@@ -189,10 +193,11 @@ TEST(Triangle, MatchesExactReferenceOnRandomTriangles) {
     const double cx = -20 + unit(rng) * (w + 40), cy = -20 + unit(rng) * (h + 40);
     Point2 p[3];
     for (auto& q : p) q = {cx + (unit(rng) - 0.5) * size, cy + (unit(rng) - 0.5) * size};
-    if (t % 7 == 0) p[1].y = p[0].y;  // exact horizontal edges exercise the top rule
+    if (t % 7 == 0) p[1].y = p[0].y;   // exact horizontal edges exercise the top rule
     if (t % 11 == 0) p[2].x = p[1].x;  // exact vertical edges exercise the left rule
     const raster::Rgba8 c0{255, 0, 30, 255}, c1{0, 255, 60, 255}, c2{10, 20, 255, 255};
-    auto img = test::render(SceneBuilder(w, h, raster::Rgba8{0, 0, 0, 255}).triangle(p[0], p[1], p[2], c0, c1, c2).scene);
+    auto img = test::render(
+        SceneBuilder(w, h, raster::Rgba8{0, 0, 0, 255}).triangle(p[0], p[1], p[2], c0, c1, c2).scene);
     const auto expect = ref::triangle(p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, w, h);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
@@ -206,7 +211,8 @@ TEST(Triangle, MatchesExactReferenceOnRandomTriangles) {
         if (!covered) continue;
         ++compared;
         const double* b = &expect.bary[i * 3];
-        const double er = b[0] * c0.r + b[1] * c1.r + b[2] * c2.r, eg = b[0] * c0.g + b[1] * c1.g + b[2] * c2.g;
+        const double er = b[0] * c0.r + b[1] * c1.r + b[2] * c2.r,
+                     eg = b[0] * c0.g + b[1] * c1.g + b[2] * c2.g;
         worst_colour = std::max({worst_colour, std::abs(got.r - er), std::abs(got.g - eg)});
       }
   }
@@ -221,12 +227,18 @@ TEST(Triangle, InvariantUnderVertexOrderWindingAndTranslation) {
   std::uniform_real_distribution<double> coord(2, 30);
   for (int t = 0; t < 300; ++t) {
     const Point2 a{coord(rng), coord(rng)}, b{coord(rng), coord(rng)}, c{coord(rng), coord(rng)};
-    const auto base = test::mask_not(test::render(SceneBuilder(64, 64).triangle(a, b, c, kWhite).scene), kBlack);
-    EXPECT_EQ(base, test::mask_not(test::render(SceneBuilder(64, 64).triangle(b, c, a, kWhite).scene), kBlack));
-    EXPECT_EQ(base, test::mask_not(test::render(SceneBuilder(64, 64).triangle(c, b, a, kWhite).scene), kBlack));
+    const auto base =
+        test::mask_not(test::render(SceneBuilder(64, 64).triangle(a, b, c, kWhite).scene), kBlack);
+    EXPECT_EQ(base,
+              test::mask_not(test::render(SceneBuilder(64, 64).triangle(b, c, a, kWhite).scene), kBlack));
+    EXPECT_EQ(base,
+              test::mask_not(test::render(SceneBuilder(64, 64).triangle(c, b, a, kWhite).scene), kBlack));
     const int dx = 17, dy = 23;
     const auto moved = test::mask_not(
-        test::render(SceneBuilder(64, 64).triangle({a.x + dx, a.y + dy}, {b.x + dx, b.y + dy}, {c.x + dx, c.y + dy}, kWhite).scene), kBlack);
+        test::render(SceneBuilder(64, 64)
+                         .triangle({a.x + dx, a.y + dy}, {b.x + dx, b.y + dy}, {c.x + dx, c.y + dy}, kWhite)
+                         .scene),
+        kBlack);
     for (int y = 0; y + dy < 64; ++y)
       for (int x = 0; x + dx < 64; ++x) ASSERT_EQ(base[y * 64 + x], moved[(y + dy) * 64 + x + dx]) << t;
   }
@@ -237,7 +249,8 @@ TEST(Triangle, InvariantUnderVertexOrderWindingAndTranslation) {
 TEST(Triangle, HugeCoordinatesClipToTheRightCoverage) {
   for (double big : {1e4, 1e6, 1e9, 1e30, 3.4e38}) {
     // A half-plane y >= x (below the diagonal), drawn as one giant triangle.
-    auto img = test::render(SceneBuilder(32, 32).triangle({-big, -big}, {big, big}, {-big, big}, kWhite).scene);
+    auto img =
+        test::render(SceneBuilder(32, 32).triangle({-big, -big}, {big, big}, {-big, big}, kWhite).scene);
     auto small = test::render(SceneBuilder(32, 32).triangle({-64, -64}, {64, 64}, {-64, 64}, kWhite).scene);
     EXPECT_EQ(img.pixels, small.pixels) << big;
     EXPECT_EQ(test::count_not(img, kBlack), 32 * 31 / 2) << big;  // the diagonal is a right edge: excluded

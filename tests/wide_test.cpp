@@ -18,14 +18,16 @@ Wide from_i128(__int128 v) {
   const bool neg = v < 0;
   unsigned __int128 m = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
   Wide w = Wide(static_cast<std::int64_t>(m >> 64)) * Wide(INT64_C(1) << 32) * Wide(INT64_C(1) << 32) +
-           Wide(static_cast<std::int64_t>(m & 0xffffffff)) + Wide(static_cast<std::int64_t>((m >> 32) & 0xffffffff)) * Wide(INT64_C(1) << 32);
+           Wide(static_cast<std::int64_t>(m & 0xffffffff)) +
+           Wide(static_cast<std::int64_t>((m >> 32) & 0xffffffff)) * Wide(INT64_C(1) << 32);
   return neg ? -w : w;
 }
 
 TEST(Wide, ArithmeticMatchesInt128) {
   std::mt19937_64 rng(1);
   for (int i = 0; i < 20000; ++i) {
-    const __int128 a = static_cast<std::int64_t>(rng()) >> (rng() % 40), b = static_cast<std::int64_t>(rng()) >> (rng() % 40);
+    const __int128 a = static_cast<std::int64_t>(rng()) >> (rng() % 40),
+                   b = static_cast<std::int64_t>(rng()) >> (rng() % 40);
     ASSERT_EQ(from_i128(a) + from_i128(b), from_i128(a + b));
     ASSERT_EQ(from_i128(a) - from_i128(b), from_i128(a - b));
     ASSERT_EQ(from_i128(a) * from_i128(b), from_i128(a * b));
@@ -46,14 +48,16 @@ TEST(Wide, FromDoubleIsExactForIntegralValues) {
   EXPECT_EQ(Wide::from_double(0x1p200 + 0x1p148) - Wide::from_double(0x1p200), Wide::from_double(0x1p148));
   // Products far beyond 128 bits keep their low bits: (2^136 + 1)^2 - 2^272 - 2^137 = 1.
   const Wide big = Wide::from_double(0x1p136) + Wide(1);
-  EXPECT_EQ(big * big - Wide::from_double(0x1p136) * Wide::from_double(0x1p136) - Wide::from_double(0x1p137), Wide(1));
+  EXPECT_EQ(big * big - Wide::from_double(0x1p136) * Wide::from_double(0x1p136) - Wide::from_double(0x1p137),
+            Wide(1));
 }
 
 TEST(Wide, FloorDivisionClampedIsExact) {
   std::mt19937_64 rng(2);
   for (int i = 0; i < 20000; ++i) {
     const __int128 d = static_cast<__int128>((rng() >> (rng() % 60)) | 1);
-    const __int128 n = static_cast<__int128>(static_cast<std::int64_t>(rng())) * static_cast<std::int64_t>(rng() >> (rng() % 64));
+    const __int128 n = static_cast<__int128>(static_cast<std::int64_t>(rng())) *
+                       static_cast<std::int64_t>(rng() >> (rng() % 64));
     __int128 q = n / d;
     if (n % d != 0 && n < 0) --q;
     const std::int64_t expect = q < -1000 ? -1000 : q > 1000 ? 1000 : static_cast<std::int64_t>(q);
@@ -72,7 +76,9 @@ std::vector<std::uint8_t> wide_reference(const Point2 (&p)[3], int w, int h) {
   auto snap = [](double v) { return raster::detail::snap(v); };
   Wide x[3], y[3];
   for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(snap(p[k].x)), y[k] = Wide::from_double(snap(p[k].y));
-  auto orient = [&](int a, int b, const Wide& px, const Wide& py) { return (x[b] - x[a]) * (py - y[a]) - (y[b] - y[a]) * (px - x[a]); };
+  auto orient = [&](int a, int b, const Wide& px, const Wide& py) {
+    return (x[b] - x[a]) * (py - y[a]) - (y[b] - y[a]) * (px - x[a]);
+  };
   std::vector<std::uint8_t> mask(static_cast<std::size_t>(w) * h, 0);
   const Wide area = orient(0, 1, x[2], y[2]);
   if (area == Wide(0)) return mask;
@@ -108,7 +114,9 @@ TEST(Wide, HugeTrianglesMatchTheExactReference) {
       q = unit(rng) < 0.3 ? Point2{unit(rng) * 40, unit(rng) * 30}
                           : Point2{(unit(rng) - 0.5) * mag, (unit(rng) - 0.5) * mag};
     }
-    const auto got = test::mask_not(test::render(test::SceneBuilder(40, 30).triangle(p[0], p[1], p[2], test::kWhite).scene), test::kBlack);
+    const auto got = test::mask_not(
+        test::render(test::SceneBuilder(40, 30).triangle(p[0], p[1], p[2], test::kWhite).scene),
+        test::kBlack);
     const auto want = wide_reference(p, 40, 30);
     ASSERT_EQ(got, want) << "triangle " << t;
     for (auto m : got) covered += m;

@@ -14,10 +14,18 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background) {
   const std::uint8_t all[4] = {background.r, background.g, background.b, background.a};
   std::uint8_t texel[4];
   switch (plan.format) {
-    case PixelFormat::grey8: texel[0] = background.r; break;
-    case PixelFormat::grey_alpha8: texel[0] = background.r, texel[1] = background.a; break;
-    case PixelFormat::rgb8: std::memcpy(texel, all, 3); break;
-    case PixelFormat::rgba8: std::memcpy(texel, all, 4); break;
+    case PixelFormat::grey8:
+      texel[0] = background.r;
+      break;
+    case PixelFormat::grey_alpha8:
+      texel[0] = background.r, texel[1] = background.a;
+      break;
+    case PixelFormat::rgb8:
+      std::memcpy(texel, all, 3);
+      break;
+    case PixelFormat::rgba8:
+      std::memcpy(texel, all, 4);
+      break;
   }
   const int c = image.channels();
   if (std::all_of(texel, texel + c, [&](std::uint8_t v) { return v == texel[0]; })) {
@@ -37,7 +45,8 @@ void resolve(const std::vector<Image>& planes, Image& out, Rect band) {
   const int c = out.channels();
   const auto n = static_cast<std::uint32_t>(planes.size());
   const bool alpha = out.format == PixelFormat::grey_alpha8 || out.format == PixelFormat::rgba8;
-  const std::size_t begin = static_cast<std::size_t>(band.y0) * out.width * c, end = static_cast<std::size_t>(band.y1) * out.width * c;
+  const std::size_t begin = static_cast<std::size_t>(band.y0) * out.width * c,
+                    end = static_cast<std::size_t>(band.y1) * out.width * c;
   for (std::size_t i = begin; i < end; i += c) {
     if (!alpha) {
       for (int k = 0; k < c; ++k) {
@@ -51,7 +60,8 @@ void resolve(const std::vector<Image>& planes, Image& out, Rect band) {
     for (const Image& p : planes) alpha_sum += p.pixels[i + c - 1];
     for (int k = 0; k + 1 < c; ++k) {
       std::uint32_t weighted = 0;
-      for (const Image& p : planes) weighted += static_cast<std::uint32_t>(p.pixels[i + k]) * p.pixels[i + c - 1];
+      for (const Image& p : planes)
+        weighted += static_cast<std::uint32_t>(p.pixels[i + k]) * p.pixels[i + c - 1];
       out.pixels[i + k] = alpha_sum ? static_cast<std::uint8_t>((weighted + alpha_sum / 2) / alpha_sum) : 0;
     }
     out.pixels[i + c - 1] = static_cast<std::uint8_t>((alpha_sum + n / 2) / n);

@@ -6,7 +6,9 @@
 namespace raster::detail {
 namespace {
 
-bool in_fast_range(const Point2& p) { return std::fabs(p.x) <= kFastRangePx && std::fabs(p.y) <= kFastRangePx; }
+bool in_fast_range(const Point2& p) {
+  return std::fabs(p.x) <= kFastRangePx && std::fabs(p.y) <= kFastRangePx;
+}
 
 void add_triangle(const Scene& scene, const Primitive& prim, DrawList& list, DrawOp& op) {
   const Point2* pts = &scene.points[prim.first_point];
@@ -15,7 +17,8 @@ void add_triangle(const Scene& scene, const Primitive& prim, DrawList& list, Dra
     op.first = static_cast<std::uint32_t>(list.triangles.size());
     ScreenTriangle t;
     for (std::uint32_t k = 0; k < 3; ++k)
-      t.v[k] = {static_cast<std::int32_t>(snap(pts[k].x)), static_cast<std::int32_t>(snap(pts[k].y)), scene.vertex_color(prim, k)};
+      t.v[k] = {static_cast<std::int32_t>(snap(pts[k].x)), static_cast<std::int32_t>(snap(pts[k].y)),
+                scene.vertex_color(prim, k)};
     list.triangles.push_back(t);
   } else {
     op.kind = DrawOp::Kind::huge_triangles;
@@ -34,25 +37,29 @@ void add_triangle(const Scene& scene, const Primitive& prim, DrawList& list, Dra
 void add_segment(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j, bool draw_first,
                  bool draw_last, std::vector<ScreenLine>& out) {
   const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
-  out.push_back({std::floor(a.x), std::floor(a.y), std::floor(b.x), std::floor(b.y), scene.vertex_color(prim, i),
-                 scene.vertex_color(prim, j), draw_first, draw_last});
+  out.push_back({std::floor(a.x), std::floor(a.y), std::floor(b.x), std::floor(b.y),
+                 scene.vertex_color(prim, i), scene.vertex_color(prim, j), draw_first, draw_last});
 }
 
 // A segment as the rectangle of its width around it (butt caps), two triangles with the endpoints'
 // colours: how lines are drawn when anti-aliased or wider than one pixel.
-void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j, DrawList& list) {
+void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j,
+                           DrawList& list) {
   const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
   if (!(len > 0) || !std::isfinite(len)) return;  // a point, or a segment too long to have a direction
   const double half = prim.width * 0.5, nx = -dy / len * half, ny = dx / len * half;
-  const Point2 q[4] = {{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
+  const Point2 q[4] = {
+      {a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
   const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
   const Rgba8 c[4] = {ca, cb, cb, ca};
   for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
     const Point2 p[3] = {q[t[0]], q[t[1]], q[t[2]]};
     if (in_fast_range(p[0]) && in_fast_range(p[1]) && in_fast_range(p[2])) {
       ScreenTriangle tri;
-      for (int k = 0; k < 3; ++k) tri.v[k] = {static_cast<std::int32_t>(snap(p[k].x)), static_cast<std::int32_t>(snap(p[k].y)), c[t[k]]};
+      for (int k = 0; k < 3; ++k)
+        tri.v[k] = {static_cast<std::int32_t>(snap(p[k].x)), static_cast<std::int32_t>(snap(p[k].y)),
+                    c[t[k]]};
       list.triangles.push_back(tri);
     } else {
       HugeTriangle tri;
@@ -63,7 +70,8 @@ void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint3
 }
 
 // Wide or anti-aliased lines: every segment a rectangle; fast and huge triangles go to their own ops.
-void add_polyline_rectangles(const Scene& scene, const Primitive& prim, bool closed, const PrimitivePlan& mode, DrawList& list) {
+void add_polyline_rectangles(const Scene& scene, const Primitive& prim, bool closed,
+                             const PrimitivePlan& mode, DrawList& list) {
   const std::uint32_t n = prim.point_count;
   const std::size_t t0 = list.triangles.size(), h0 = list.huge_triangles.size();
   for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment_rectangle(scene, prim, i, i + 1, list);
@@ -72,9 +80,11 @@ void add_polyline_rectangles(const Scene& scene, const Primitive& prim, bool clo
   op.mode = mode;
   op.mode.smooth = true;  // endpoint colours may differ; equal ones interpolate to themselves exactly
   if (list.triangles.size() > t0)
-    list.ops.push_back({DrawOp::Kind::triangles, op.mode, false, static_cast<std::uint32_t>(t0), static_cast<std::uint32_t>(list.triangles.size() - t0)});
+    list.ops.push_back({DrawOp::Kind::triangles, op.mode, false, static_cast<std::uint32_t>(t0),
+                        static_cast<std::uint32_t>(list.triangles.size() - t0)});
   if (list.huge_triangles.size() > h0)
-    list.ops.push_back({DrawOp::Kind::huge_triangles, op.mode, false, static_cast<std::uint32_t>(h0), static_cast<std::uint32_t>(list.huge_triangles.size() - h0)});
+    list.ops.push_back({DrawOp::Kind::huge_triangles, op.mode, false, static_cast<std::uint32_t>(h0),
+                        static_cast<std::uint32_t>(list.huge_triangles.size() - h0)});
 }
 
 // A polyline draws each joint pixel once (no double blending where segments meet). Triangle outlines
@@ -100,7 +110,8 @@ double snap(double px) {
 DrawList build_draw_list(const Scene& scene, const RenderPlan& plan) {
   DrawList list;
   if (plan.depth_buffer) {
-    list.to_light[0] = plan.view.to_light.x, list.to_light[1] = plan.view.to_light.y, list.to_light[2] = plan.view.to_light.z;
+    list.to_light[0] = plan.view.to_light.x, list.to_light[1] = plan.view.to_light.y,
+    list.to_light[2] = plan.view.to_light.z;
     list.ambient = plan.view.ambient;
   }
   list.ops.reserve(scene.primitives.size() - static_cast<std::size_t>(plan.culled_count));

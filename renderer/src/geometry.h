@@ -12,7 +12,7 @@
 
 namespace raster::detail {
 
-inline constexpr int kSubpixelBits = 8;                              ///< GPU-style 8 sub-pixel bits
+inline constexpr int kSubpixelBits = 8;                             ///< GPU-style 8 sub-pixel bits
 inline constexpr std::int64_t kSubpixelScale = 1 << kSubpixelBits;  ///< fixed-point units per pixel
 
 /// Triangles whose vertices all lie within +-kFastRangePx take the int64 path: snapped coordinates fit in
@@ -41,8 +41,8 @@ struct HugeTriangle {
 struct ScreenLine {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixel column and row of each endpoint, integral values
   Rgba8 c0, c1;                           ///< colours at the two endpoints
-  bool draw_first = true;  ///< false: endpoint 0's pixel belongs to the previous polyline segment
-  bool draw_last = true;   ///< false: endpoint 1's pixel belongs to the next segment (closing segment)
+  bool draw_first = true;        ///< false: endpoint 0's pixel belongs to the previous polyline segment
+  bool draw_last = true;         ///< false: endpoint 1's pixel belongs to the next segment (closing segment)
   float depth0 = 0, depth1 = 0;  ///< 3D lines (ops with mode.depth): z / w at each endpoint, reversed
 };
 
@@ -65,7 +65,7 @@ struct DrawOp {
   enum class Kind : std::uint8_t { triangles, huge_triangles, lines, depth_triangles } kind = Kind::triangles;
   PrimitivePlan mode;
   bool light_per_pixel = false;  ///< depth_triangles: interpolate normals and light each pixel
-  std::uint32_t first = 0;  ///< index into the DrawList vector of that kind
+  std::uint32_t first = 0;       ///< index into the DrawList vector of that kind
   std::uint32_t count = 0;
 };
 

@@ -21,7 +21,8 @@ struct ClipVertex {
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
   ClipVertex r;
-  r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t, r.w = a.w + (b.w - a.w) * t;
+  r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t,
+  r.w = a.w + (b.w - a.w) * t;
   for (int k = 0; k < 7; ++k) r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
   return r;
 }
@@ -32,12 +33,18 @@ struct Planes {
   double gx = 1, gy = 1;
   double distance(const ClipVertex& v, int plane) const {
     switch (plane) {
-      case 0: return v.w - v.z;
-      case 1: return v.z;
-      case 2: return gx * v.w + v.x;
-      case 3: return gx * v.w - v.x;
-      case 4: return gy * v.w + v.y;
-      default: return gy * v.w - v.y;
+      case 0:
+        return v.w - v.z;
+      case 1:
+        return v.z;
+      case 2:
+        return gx * v.w + v.x;
+      case 3:
+        return gx * v.w - v.x;
+      case 4:
+        return gy * v.w + v.y;
+      default:
+        return gy * v.w - v.y;
     }
   }
 };
@@ -77,8 +84,10 @@ bool clip_segment(ClipVertex& a, ClipVertex& b, const Planes& planes) {
   for (int plane = 0; plane < kPlaneCount; ++plane) {
     const double da = planes.distance(a, plane), db = planes.distance(b, plane);
     if (da < 0 && db < 0) return false;
-    if (da < 0) a = intersect(a, b, plane, planes);
-    else if (db < 0) b = intersect(a, b, plane, planes);
+    if (da < 0)
+      a = intersect(a, b, plane, planes);
+    else if (db < 0)
+      b = intersect(a, b, plane, planes);
   }
   return true;
 }
@@ -94,7 +103,9 @@ struct Viewport {
   }
 };
 
-Rgba8 to_rgba8(const float* c) { return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])}; }
+Rgba8 to_rgba8(const float* c) {
+  return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
+}
 
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
 // the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
@@ -125,9 +136,12 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   std::vector<bool> finite(mesh.positions.size());
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
     clip[i] = transform(model_to_clip, mesh.positions[i]);
-    finite[i] = std::isfinite(clip[i].x) && std::isfinite(clip[i].y) && std::isfinite(clip[i].z) && std::isfinite(clip[i].w);
+    finite[i] = std::isfinite(clip[i].x) && std::isfinite(clip[i].y) && std::isfinite(clip[i].z) &&
+                std::isfinite(clip[i].w);
   }
-  auto vertex_color = [&](std::uint32_t vertex) { return mesh.colors.size() == 1 ? mesh.colors[0] : mesh.colors[vertex]; };
+  auto vertex_color = [&](std::uint32_t vertex) {
+    return mesh.colors.size() == 1 ? mesh.colors[0] : mesh.colors[vertex];
+  };
   auto color_at = [&](std::size_t triangle, std::uint32_t vertex) {
     return mesh.face_colors.empty() ? vertex_color(vertex) : mesh.face_colors[triangle];
   };
@@ -140,11 +154,13 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   if (!mesh.wireframe && !mesh.triangles.empty()) {
     const bool light_per_pixel = mode.lit && mesh.shading == Shading::smooth;
     std::vector<Vec3> world(mesh.positions.size());
-    for (std::size_t i = 0; i < world.size(); ++i) world[i] = transform_point(mesh.transform, mesh.positions[i]);
+    for (std::size_t i = 0; i < world.size(); ++i)
+      world[i] = transform_point(mesh.transform, mesh.positions[i]);
     std::vector<Vec3> normals;  // world space, per position (computed) or per OBJ normal index (given)
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
     if (light_per_pixel) {
-      if (mode.compute_normals) normals = vertex_normals(mesh, world);
+      if (mode.compute_normals)
+        normals = vertex_normals(mesh, world);
       else
         for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
     }
@@ -161,7 +177,8 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
       // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
       // front when the counter-clockwise normal points toward the eye.
       const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
-      const Vec3 toward_eye = view.projection == Projection::perspective ? view.eye - world[tri[0]] : forward * -1.0;
+      const Vec3 toward_eye =
+          view.projection == Projection::perspective ? view.eye - world[tri[0]] : forward * -1.0;
       const bool back = dot(face, toward_eye) < 0;
       if (back && mesh.cull == Cull::back) continue;
 
@@ -178,8 +195,10 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
         poly[k] = clip_vertex(tri[k], color_at(t, tri[k]));
         for (int c = 0; c < 3; ++c) poly[k].attr[c] *= shade;
         if (light_per_pixel) {
-          const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
-          poly[k].attr[4] = static_cast<float>(n.x), poly[k].attr[5] = static_cast<float>(n.y), poly[k].attr[6] = static_cast<float>(n.z);
+          const Vec3 n =
+              mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
+          poly[k].attr[4] = static_cast<float>(n.x), poly[k].attr[5] = static_cast<float>(n.y),
+          poly[k].attr[6] = static_cast<float>(n.z);
         }
       }
       const int n = clip_polygon(poly, 3, planes);
@@ -227,12 +246,14 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   op.first = static_cast<std::uint32_t>(list.lines.size());
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (!finite[segments[s][0]] || !finite[segments[s][1]]) continue;
-    ClipVertex a = clip_vertex(segments[s][0], segment_colors[s][0]), b = clip_vertex(segments[s][1], segment_colors[s][1]);
+    ClipVertex a = clip_vertex(segments[s][0], segment_colors[s][0]),
+               b = clip_vertex(segments[s][1], segment_colors[s][1]);
     if (!clip_segment(a, b, planes)) continue;
     double ax, ay, ad, aw, bx, by, bd, bw;
     viewport.project(a, ax, ay, ad, aw);
     viewport.project(b, bx, by, bd, bw);
-    ScreenLine line{std::floor(ax), std::floor(ay), std::floor(bx), std::floor(by), to_rgba8(a.attr), to_rgba8(b.attr), true, true};
+    ScreenLine line{std::floor(ax),   std::floor(ay),   std::floor(bx), std::floor(by),
+                    to_rgba8(a.attr), to_rgba8(b.attr), true,           true};
     line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
     list.lines.push_back(line);
   }

@@ -17,7 +17,9 @@ namespace {
   throw SceneError(ErrorKind::model, message, ErrorLocation{"", 0, line});
 }
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
 
 // The whitespace-separated words of one line.
 std::vector<std::string_view> words(std::string_view line) {
@@ -43,8 +45,8 @@ bool check_index(std::string_view text, std::int64_t defined, const char* what, 
   }
   const std::int64_t resolved = value < 0 ? defined + value + 1 : value;
   if (value == 0 || resolved < 1 || resolved > defined) {
-    why = std::string(what) + " index " + std::to_string(value) + " is out of range (" + std::to_string(defined) +
-          " defined so far)";
+    why = std::string(what) + " index " + std::to_string(value) + " is out of range (" +
+          std::to_string(defined) + " defined so far)";
     return false;
   }
   return true;
@@ -73,8 +75,10 @@ Counts prescan(std::string_view text, const Limits& limits) {
       for (std::size_t k = 1; k < w.size() && k <= 6; ++k) {
         double d = 0;
         const auto [p, ec] = std::from_chars(w[k].data(), w[k].data() + w[k].size(), d);
-        if (ec != std::errc() || p != w[k].data() + w[k].size() || !std::isfinite(d) || std::fabs(d) > kMaxCoordinate)
-          model_error(line_no, "vertex component \"" + std::string(w[k]) + "\" is not a finite number within +-3.4e38");
+        if (ec != std::errc() || p != w[k].data() + w[k].size() || !std::isfinite(d) ||
+            std::fabs(d) > kMaxCoordinate)
+          model_error(line_no, "vertex component \"" + std::string(w[k]) +
+                                   "\" is not a finite number within +-3.4e38");
       }
       ++n.v;
     } else if (key == "vt") {
@@ -85,8 +89,10 @@ Counts prescan(std::string_view text, const Limits& limits) {
     } else if (key == "f" || key == "l" || key == "p") {
       const std::size_t min_refs = key == "f" ? 3 : key == "l" ? 2 : 1;
       if (w.size() - 1 < min_refs)
-        model_error(line_no, std::string(key == "f" ? "a face" : key == "l" ? "a line" : "a point") + " needs at least " +
-                                 std::to_string(min_refs) + " vertices");
+        model_error(line_no, std::string(key == "f"   ? "a face"
+                                         : key == "l" ? "a line"
+                                                      : "a point") +
+                                 " needs at least " + std::to_string(min_refs) + " vertices");
       for (std::size_t k = 1; k < w.size(); ++k) {
         // v, v/vt, v//vn or v/vt/vn
         const std::string_view ref = w[k];
@@ -95,7 +101,8 @@ Counts prescan(std::string_view text, const Limits& limits) {
         const std::string_view vi = ref.substr(0, s1);
         bool ok = check_index(vi, n.v, "vertex", why);
         if (ok && s1 != std::string_view::npos) {
-          const std::string_view ti = ref.substr(s1 + 1, s2 == std::string_view::npos ? std::string_view::npos : s2 - s1 - 1);
+          const std::string_view ti =
+              ref.substr(s1 + 1, s2 == std::string_view::npos ? std::string_view::npos : s2 - s1 - 1);
           if (!ti.empty()) ok = check_index(ti, n.vt, "texture coordinate", why);
           if (ok && s2 != std::string_view::npos) ok = check_index(ref.substr(s2 + 1), n.vn, "normal", why);
         }
@@ -103,7 +110,8 @@ Counts prescan(std::string_view text, const Limits& limits) {
       }
       if (key == "f") {
         if (++n.faces > limits.max_obj_faces)
-          throw SceneError(ErrorKind::limit, "the model has more than " + std::to_string(limits.max_obj_faces) + " faces",
+          throw SceneError(ErrorKind::limit,
+                           "the model has more than " + std::to_string(limits.max_obj_faces) + " faces",
                            ErrorLocation{"", 0, line_no});
       } else if (key == "l") {
         n.segments += static_cast<std::int64_t>(w.size()) - 2;
@@ -115,7 +123,9 @@ Counts prescan(std::string_view text, const Limits& limits) {
   return n;
 }
 
-std::uint8_t unit_byte(double v) { return static_cast<std::uint8_t>(std::floor(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5)); }
+std::uint8_t unit_byte(double v) {
+  return static_cast<std::uint8_t>(std::floor(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5));
+}
 
 }  // namespace
 
@@ -144,7 +154,8 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   // `v x y z r g b`: honoured when every vertex has a colour.
   if (!attrib.colors.empty() && attrib.colors.size() == attrib.vertices.size()) {
     for (std::size_t i = 0; i + 2 < attrib.colors.size(); i += 3)
-      mesh.colors.push_back({unit_byte(attrib.colors[i]), unit_byte(attrib.colors[i + 1]), unit_byte(attrib.colors[i + 2]), 255});
+      mesh.colors.push_back({unit_byte(attrib.colors[i]), unit_byte(attrib.colors[i + 1]),
+                             unit_byte(attrib.colors[i + 2]), 255});
   }
 
   const auto& materials = reader.GetMaterials();
@@ -154,18 +165,21 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     const auto& idx = shape.mesh.indices;
     for (std::size_t f = 0; f * 3 + 2 < idx.size(); ++f) {
       const tinyobj::index_t* c = &idx[f * 3];
-      mesh.triangles.push_back({static_cast<std::uint32_t>(c[0].vertex_index), static_cast<std::uint32_t>(c[1].vertex_index),
+      mesh.triangles.push_back({static_cast<std::uint32_t>(c[0].vertex_index),
+                                static_cast<std::uint32_t>(c[1].vertex_index),
                                 static_cast<std::uint32_t>(c[2].vertex_index)});
       const bool has_normals = c[0].normal_index >= 0 && c[1].normal_index >= 0 && c[2].normal_index >= 0;
       all_normals = all_normals && has_normals;
       if (has_normals)
-        mesh.normal_triangles.push_back({static_cast<std::uint32_t>(c[0].normal_index), static_cast<std::uint32_t>(c[1].normal_index),
+        mesh.normal_triangles.push_back({static_cast<std::uint32_t>(c[0].normal_index),
+                                         static_cast<std::uint32_t>(c[1].normal_index),
                                          static_cast<std::uint32_t>(c[2].normal_index)});
       const int m = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
       if (m >= 0 && static_cast<std::size_t>(m) < materials.size()) {
         any_material = true;
         const auto& kd = materials[m].diffuse;
-        face_colors.push_back({unit_byte(kd[0]), unit_byte(kd[1]), unit_byte(kd[2]), unit_byte(materials[m].dissolve)});
+        face_colors.push_back(
+            {unit_byte(kd[0]), unit_byte(kd[1]), unit_byte(kd[2]), unit_byte(materials[m].dissolve)});
       } else {
         face_colors.push_back({204, 204, 204, 255});  // the default light grey
       }
@@ -174,7 +188,8 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     std::size_t at = 0;
     for (int count : shape.lines.num_line_vertices) {
       for (int k = 0; k + 1 < count && at + k + 1 < li.size(); ++k)
-        mesh.segments.push_back({static_cast<std::uint32_t>(li[at + k].vertex_index), static_cast<std::uint32_t>(li[at + k + 1].vertex_index)});
+        mesh.segments.push_back({static_cast<std::uint32_t>(li[at + k].vertex_index),
+                                 static_cast<std::uint32_t>(li[at + k + 1].vertex_index)});
       at += static_cast<std::size_t>(count);
     }
   }
@@ -194,7 +209,8 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   for (const auto& t : mesh.normal_triangles)
     for (std::uint32_t i : t)
       if (i >= mesh.normals.size()) model_error(0, "a face refers to a normal the model does not define");
-  if (mesh.triangles.empty() && mesh.segments.empty()) model_error(0, "the model has no faces or lines to draw");
+  if (mesh.triangles.empty() && mesh.segments.empty())
+    model_error(0, "the model has no faces or lines to draw");
   return mesh;
 }
 

@@ -45,7 +45,9 @@ void check_references(const Scene& scene) {
     const std::size_t colors = p.per_vertex_color ? p.point_count : 1;
     const bool ok = std::size_t{p.first_point} + p.point_count <= scene.points.size() &&
                     std::size_t{p.first_color} + colors <= scene.colors.size() &&
-                    p.point_count == (p.kind == PrimitiveKind::triangle ? 3u : p.kind == PrimitiveKind::line ? 2u : std::max(p.point_count, 2u));
+                    p.point_count == (p.kind == PrimitiveKind::triangle ? 3u
+                                      : p.kind == PrimitiveKind::line   ? 2u
+                                                                        : std::max(p.point_count, 2u));
     if (!ok)
       throw SceneError(ErrorKind::invalid, "primitive refers to points or colours the scene does not have",
                        {"/primitives/" + std::to_string(i), 0, 0});
@@ -54,7 +56,8 @@ void check_references(const Scene& scene) {
     const Primitive& p = scene.primitives[i];
     if (p.kind != PrimitiveKind::mesh) continue;
     const std::string where = "/primitives/" + std::to_string(i);
-    if (p.mesh >= scene.meshes.size()) throw SceneError(ErrorKind::invalid, "mesh primitive refers to a missing mesh", {where, 0, 0});
+    if (p.mesh >= scene.meshes.size())
+      throw SceneError(ErrorKind::invalid, "mesh primitive refers to a missing mesh", {where, 0, 0});
     const Mesh& m = scene.meshes[p.mesh];
     const std::size_t n = m.positions.size();
     bool ok = (m.colors.size() == 1 || m.colors.size() == n) &&
@@ -62,20 +65,27 @@ void check_references(const Scene& scene) {
               (m.normal_triangles.empty() || m.normal_triangles.size() == m.triangles.size());
     for (const auto& t : m.triangles) ok = ok && t[0] < n && t[1] < n && t[2] < n;
     for (const auto& s : m.segments) ok = ok && s[0] < n && s[1] < n;
-    for (const auto& t : m.normal_triangles) ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
-    for (const Vec3& q : m.positions) ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate && std::fabs(q.z) <= kMaxCoordinate;
-    if (!ok) throw SceneError(ErrorKind::invalid, "mesh has indices, colours or normals that do not match its positions", {where, 0, 0});
+    for (const auto& t : m.normal_triangles)
+      ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
+    for (const Vec3& q : m.positions)
+      ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate &&
+           std::fabs(q.z) <= kMaxCoordinate;
+    if (!ok)
+      throw SceneError(ErrorKind::invalid,
+                       "mesh has indices, colours or normals that do not match its positions", {where, 0, 0});
   }
   // Scenes built in code skip the parser's checks; coverage relies on these bounds.
   for (std::size_t i = 0; i < scene.points.size(); ++i) {
     const Point2& q = scene.points[i];
     if (!(std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate))
-      throw SceneError(ErrorKind::invalid, "point " + std::to_string(i) + " is not finite or outside +-2^128");
+      throw SceneError(ErrorKind::invalid,
+                       "point " + std::to_string(i) + " is not finite or outside +-2^128");
   }
 }
 
 void check_size(const Scene& scene, const Limits& limits) {
-  const int max_w = std::min(limits.max_width, kMaxImageSide), max_h = std::min(limits.max_height, kMaxImageSide);
+  const int max_w = std::min(limits.max_width, kMaxImageSide),
+            max_h = std::min(limits.max_height, kMaxImageSide);
   if (scene.width < 1 || scene.height < 1)
     throw SceneError(ErrorKind::invalid, "image size must be at least 1x1");
   if (scene.width > max_w || scene.height > max_h ||
@@ -88,20 +98,28 @@ void check_size(const Scene& scene, const Limits& limits) {
 
 const char* format_name(PixelFormat f) {
   switch (f) {
-    case PixelFormat::grey8: return "grey8";
-    case PixelFormat::grey_alpha8: return "grey_alpha8";
-    case PixelFormat::rgb8: return "rgb8";
-    case PixelFormat::rgba8: return "rgba8";
+    case PixelFormat::grey8:
+      return "grey8";
+    case PixelFormat::grey_alpha8:
+      return "grey_alpha8";
+    case PixelFormat::rgb8:
+      return "rgb8";
+    case PixelFormat::rgba8:
+      return "rgba8";
   }
   return "?";
 }
 
 int png_color_type(PixelFormat f) {
   switch (f) {
-    case PixelFormat::grey8: return 0;
-    case PixelFormat::grey_alpha8: return 4;
-    case PixelFormat::rgb8: return 2;
-    case PixelFormat::rgba8: return 6;
+    case PixelFormat::grey8:
+      return 0;
+    case PixelFormat::grey_alpha8:
+      return 4;
+    case PixelFormat::rgb8:
+      return 2;
+    case PixelFormat::rgba8:
+      return 6;
   }
   return 2;
 }
@@ -146,7 +164,8 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   const double fit_distance = radius * std::sqrt(1 + tan_fit * tan_fit) / tan_fit;
   v.eye = cam.has_eye ? cam.eye : v.target + Vec3{0, 0, fit_distance + length(v.target - centre)};
   const Vec3 forward = normalize(v.target - v.eye);
-  if (length(forward) == 0) camera_error("/camera/eye", "\"eye\" and \"target\" coincide: the camera has no view direction");
+  if (length(forward) == 0)
+    camera_error("/camera/eye", "\"eye\" and \"target\" coincide: the camera has no view direction");
   const Vec3 side = normalize(cross(forward, v.up));
   // sin of the angle between up and the view direction; below ~1e-9 the basis is not defined.
   if (length(side) == 0 || length(cross(forward, normalize(v.up))) < 1e-9)
@@ -178,7 +197,7 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
     proj(0, 0) = 1 / (std::tan(half) * aspect);
     proj(1, 1) = 1 / std::tan(half);
     proj(2, 2) = n / (f - n), proj(2, 3) = n * f / (f - n);  // z = n (f - d) / (f - n) with d = -z_view
-    proj(3, 2) = -1, proj(3, 3) = 0;                          // w = d
+    proj(3, 2) = -1, proj(3, 3) = 0;                         // w = d
   } else {
     proj(0, 0) = 2 / (v.height * aspect);
     proj(1, 1) = 2 / v.height;
@@ -234,7 +253,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       }
       // Per-pixel work when colours vary per vertex or normals are interpolated; per-face colours and flat
       // lighting give one colour per triangle.
-      pp.smooth = (varied && mesh.face_colors.empty() && mesh.colors.size() > 1) || (pp.lit && mesh.shading == Shading::smooth);
+      pp.smooth = (varied && mesh.face_colors.empty() && mesh.colors.size() > 1) ||
+                  (pp.lit && mesh.shading == Shading::smooth);
       (pp.smooth ? out.smooth_count : out.flat_count) += 1;
       out.blend_count += pp.blend ? 1 : 0;
       out.lit_count += pp.lit ? 1 : 0;
@@ -264,7 +284,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
     }
     (pp.smooth ? out.smooth_count : out.flat_count) += 1;
     out.blend_count += pp.blend ? 1 : 0;
-    const double cw = std::min(b.x1, w) - std::max(b.x0, 0.0) + 1, ch = std::min(b.y1, h) - std::max(b.y0, 0.0) + 1;
+    const double cw = std::min(b.x1, w) - std::max(b.x0, 0.0) + 1,
+                 ch = std::min(b.y1, h) - std::max(b.y0, 0.0) + 1;
     work += static_cast<std::int64_t>(filled ? cw * ch : std::max(cw, ch));
   }
 
@@ -289,11 +310,13 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
                                            " bytes of pixel storage, over the limit of " +
                                            std::to_string(limits.max_buffer_bytes));
 
-  const int cores = options.max_threads > 0 ? options.max_threads
-                                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = options.max_threads > 0
+                        ? options.max_threads
+                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   out.work = work;
   const bool small = image_pixels <= kSmallScenePixels && scene.primitives.size() <= kSmallScenePrimitives;
-  out.threads = small || work < kParallelWorkThreshold ? 1 : std::clamp(scene.height / kMinBandRows, 1, cores);
+  out.threads =
+      small || work < kParallelWorkThreshold ? 1 : std::clamp(scene.height / kMinBandRows, 1, cores);
   out.png.color_type = png_color_type(out.format);
   return out;
 }
@@ -306,18 +329,26 @@ std::string explain_json(const RenderPlan& p) {
   j["channels"] = channel_count(p.format);
   j["depth_buffer"] = p.depth_buffer;
   j["samples"] = p.samples;
-  j["primitives"] = {{"flat", p.flat_count}, {"smooth", p.smooth_count}, {"blend", p.blend_count},
-                     {"culled", p.culled_count}, {"lit", p.lit_count}, {"triangles_3d", p.triangles_3d}};
+  j["primitives"] = {{"flat", p.flat_count},   {"smooth", p.smooth_count},
+                     {"blend", p.blend_count}, {"culled", p.culled_count},
+                     {"lit", p.lit_count},     {"triangles_3d", p.triangles_3d}};
   if (p.depth_buffer) {
     const ViewPlan& v = p.view;
     j["camera"] = {{"projection", v.projection == Projection::perspective ? "perspective" : "orthographic"},
-                   {"eye", {v.eye.x, v.eye.y, v.eye.z}}, {"target", {v.target.x, v.target.y, v.target.z}},
-                   {"up", {v.up.x, v.up.y, v.up.z}}, {"fov", v.fov_deg}, {"near", v.near}, {"far", v.far}, {"height", v.height}};
+                   {"eye", {v.eye.x, v.eye.y, v.eye.z}},
+                   {"target", {v.target.x, v.target.y, v.target.z}},
+                   {"up", {v.up.x, v.up.y, v.up.z}},
+                   {"fov", v.fov_deg},
+                   {"near", v.near},
+                   {"far", v.far},
+                   {"height", v.height}};
   }
   j["work"] = p.work;
   j["threads"] = p.threads;
-  j["memory_bytes"] = {{"color", p.memory.color_bytes}, {"depth", p.memory.depth_bytes},
-                       {"samples", p.memory.sample_bytes}, {"total", p.memory.total()}};
+  j["memory_bytes"] = {{"color", p.memory.color_bytes},
+                       {"depth", p.memory.depth_bytes},
+                       {"samples", p.memory.sample_bytes},
+                       {"total", p.memory.total()}};
   j["png"] = {{"color_type", p.png.color_type}, {"deflate_level", p.png.deflate_level}};
   return j.dump(2);
 }
@@ -326,8 +357,8 @@ std::string explain_line(const RenderPlan& p) {
   return std::string(format_name(p.format)) + " depth=" + (p.depth_buffer ? "f32" : "none") +
          " samples=" + std::to_string(p.samples) + " flat=" + std::to_string(p.flat_count) +
          " smooth=" + std::to_string(p.smooth_count) + " blend=" + std::to_string(p.blend_count) +
-         " culled=" + std::to_string(p.culled_count) + (p.lit_count ? " lit=" + std::to_string(p.lit_count) : "") +
-         " threads=" + std::to_string(p.threads);
+         " culled=" + std::to_string(p.culled_count) +
+         (p.lit_count ? " lit=" + std::to_string(p.lit_count) : "") + " threads=" + std::to_string(p.threads);
 }
 
 }  // namespace raster

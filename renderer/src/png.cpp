@@ -34,7 +34,8 @@ unsigned char* libdeflate_zlib(unsigned char* data, int data_len, int* out_len, 
   if (!compressor) return nullptr;
   const std::size_t bound = libdeflate_zlib_compress_bound(compressor, static_cast<std::size_t>(data_len));
   auto* out = static_cast<unsigned char*>(std::malloc(bound));  // stb releases it with STBIW_FREE (free)
-  std::size_t size = out ? libdeflate_zlib_compress(compressor, data, static_cast<std::size_t>(data_len), out, bound) : 0;
+  std::size_t size =
+      out ? libdeflate_zlib_compress(compressor, data, static_cast<std::size_t>(data_len), out, bound) : 0;
   if (size == 0) {
     std::free(out);
     return nullptr;
@@ -83,7 +84,8 @@ std::vector<std::uint8_t> encode_png(const Image& image, const PngPlan& png) {
   std::vector<std::uint8_t> out;
   auto append = [](void* context, void* data, int size) {
     auto* bytes = static_cast<std::uint8_t*>(data);
-    static_cast<std::vector<std::uint8_t>*>(context)->insert(static_cast<std::vector<std::uint8_t>*>(context)->end(), bytes, bytes + size);
+    static_cast<std::vector<std::uint8_t>*>(context)->insert(
+        static_cast<std::vector<std::uint8_t>*>(context)->end(), bytes, bytes + size);
   };
   const int ok = stbi_write_png_to_func(append, &out, image.width, image.height, image.channels(),
                                         image.pixels.data(), image.width * image.channels());

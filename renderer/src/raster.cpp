@@ -12,9 +12,12 @@ namespace raster::detail {
 namespace {
 
 // Integer division rounding toward -infinity / +infinity (C++ '/' rounds toward zero). d > 0.
-std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n / d - ((n % d != 0) && (n < 0)); }
-std::int64_t ceil_div(std::int64_t n, std::int64_t d) { return n / d + ((n % d != 0) && (n > 0)); }
-
+std::int64_t floor_div(std::int64_t n, std::int64_t d) {
+  return n / d - ((n % d != 0) && (n < 0));
+}
+std::int64_t ceil_div(std::int64_t n, std::int64_t d) {
+  return n / d + ((n % d != 0) && (n > 0));
+}
 
 // Writes `count` pixels from `p` on: one flat colour, or per pixel from `next_color()` (called in order).
 template <int C, typename NextColor>
@@ -30,8 +33,10 @@ void shade_span(std::uint8_t* p, std::int64_t count, PrimitivePlan mode, Rgba8 f
   }
   for (; p != end; p += C) {
     const Rgba8 c = next_color();
-    if (mode.blend) blend<C>(p, c);
-    else store<C>(p, c);
+    if (mode.blend)
+      blend<C>(p, c);
+    else
+      store<C>(p, c);
   }
 }
 
@@ -79,7 +84,8 @@ Edge make_edge(const ScreenVertex& from, const ScreenVertex& to) {
 // row_step[k] per row down.
 // Returns the doubled area (0: degenerate, nothing covered).
 template <typename Span>
-std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)[3], Rect clip, SamplePoint sample, Span&& span) {
+std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)[3], Rect clip,
+                           SamplePoint sample, Span&& span) {
   ScreenVertex v[3];
   for (int k = 0; k < 3; ++k) v[k].x = xs[k], v[k].y = ys[k];
   std::int64_t area = (std::int64_t{v[1].x} - v[0].x) * (std::int64_t{v[2].y} - v[0].y) -
@@ -125,9 +131,12 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
   for (std::int64_t j = j_lo; j <= j_hi; ++j) {
     std::int64_t lo = i_lo, hi = i_hi;
     for (int k = 0; k < 3; ++k) {
-      if (e[k].a > 0) lo = std::max(lo, i_lo - bound[k].q);
-      else if (e[k].a < 0) hi = std::min(hi, i_lo + bound[k].q);
-      else if (row_value[k] < e[k].min_value) lo = hi + 1;
+      if (e[k].a > 0)
+        lo = std::max(lo, i_lo - bound[k].q);
+      else if (e[k].a < 0)
+        hi = std::min(hi, i_lo + bound[k].q);
+      else if (row_value[k] < e[k].min_value)
+        lo = hi + 1;
       bound[k].step();
     }
     if (lo <= hi) {
@@ -145,104 +154,133 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
 // a constant 16.16 slope. Over the longest span (16384 px) the stepping error stays below 0.13 of a level,
 // and clamping to the vertex range keeps the result inside it. Equal vertex colours give a slope of
 // exactly 0 (the edge steps sum to 0), so flat and smooth agree exactly.
-inline std::int64_t round_to_int(double x) { return static_cast<std::int64_t>(x >= 0 ? x + 0.5 : x - 0.5); }
+inline std::int64_t round_to_int(double x) {
+  return static_cast<std::int64_t>(x >= 0 ? x + 0.5 : x - 0.5);
+}
 
 template <int C>
-void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip, SamplePoint sample) {
-  const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x}, ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
+void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip,
+                   SamplePoint sample) {
+  const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x},
+                     ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
   const Rgba8 c[3] = {tri.v[0].color, tri.v[1].color, tri.v[2].color};
   if (!mode.smooth) {
-    for_each_span(xs, ys, clip, sample, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&)[3],
-                                            const std::int64_t (&)[3], const std::int64_t (&)[3], std::int64_t) {
-      shade_span<C>(image.pixels.data() + (j * image.width + lo) * C, hi - lo + 1, mode, c[0], [&] { return c[0]; });
-    });
+    for_each_span(xs, ys, clip, sample,
+                  [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t(&)[3],
+                      const std::int64_t(&)[3], const std::int64_t(&)[3], std::int64_t) {
+                    shade_span<C>(image.pixels.data() + (j * image.width + lo) * C, hi - lo + 1, mode, c[0],
+                                  [&] { return c[0]; });
+                  });
     return;
   }
-  const std::uint8_t channels[4][3] = {{c[0].r, c[1].r, c[2].r}, {c[0].g, c[1].g, c[2].g}, {c[0].b, c[1].b, c[2].b}, {c[0].a, c[1].a, c[2].a}};
+  const std::uint8_t channels[4][3] = {
+      {c[0].r, c[1].r, c[2].r}, {c[0].g, c[1].g, c[2].g}, {c[0].b, c[1].b, c[2].b}, {c[0].a, c[1].a, c[2].a}};
   std::int64_t slope[4] = {};  // 16.16 per pixel
   std::uint8_t lo_c[4], hi_c[4];
   double scale = 0;
-  for_each_span(xs, ys, clip, sample, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
-                                          const std::int64_t (&step)[3], const std::int64_t (&)[3], std::int64_t area) {
-    if (scale == 0) {  // once per triangle: depends on the triangle only
-      scale = 65536.0 / static_cast<double>(area);
-      for (int ch = 0; ch < 4; ++ch) {
-        const std::uint8_t* v = channels[ch];
-        slope[ch] = round_to_int(static_cast<double>(step[0] * v[0] + step[1] * v[1] + step[2] * v[2]) * scale);
-        lo_c[ch] = std::min({v[0], v[1], v[2]});
-        hi_c[ch] = std::max({v[0], v[1], v[2]});
-      }
-    }
-    std::int64_t value[4];  // 16.16, with a half added for rounding; exact numerator < 2^58, so the double is exact to 2^-29 levels
-    for (int ch = 0; ch < 4; ++ch) {
-      const std::uint8_t* v = channels[ch];
-      value[ch] = round_to_int(static_cast<double>(w[0] * v[0] + w[1] * v[1] + w[2] * v[2]) * scale) + 0x8000;
-    }
-    shade_span<C>(image.pixels.data() + (j * image.width + lo) * C, hi - lo + 1, mode, c[0], [&] {
-      std::uint8_t out[4];
-      for (int ch = 0; ch < 4; ++ch) {
-        out[ch] = static_cast<std::uint8_t>(std::clamp<std::int64_t>(value[ch] >> 16, lo_c[ch], hi_c[ch]));
-        value[ch] += slope[ch];
-      }
-      return Rgba8{out[0], out[1], out[2], out[3]};
-    });
-  });
+  for_each_span(
+      xs, ys, clip, sample,
+      [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t(&w)[3],
+          const std::int64_t(&step)[3], const std::int64_t(&)[3], std::int64_t area) {
+        if (scale == 0) {  // once per triangle: depends on the triangle only
+          scale = 65536.0 / static_cast<double>(area);
+          for (int ch = 0; ch < 4; ++ch) {
+            const std::uint8_t* v = channels[ch];
+            slope[ch] =
+                round_to_int(static_cast<double>(step[0] * v[0] + step[1] * v[1] + step[2] * v[2]) * scale);
+            lo_c[ch] = std::min({v[0], v[1], v[2]});
+            hi_c[ch] = std::max({v[0], v[1], v[2]});
+          }
+        }
+        std::int64_t value[4];  // 16.16, with a half added for rounding; exact numerator < 2^58, so the
+                                // double is exact to 2^-29 levels
+        for (int ch = 0; ch < 4; ++ch) {
+          const std::uint8_t* v = channels[ch];
+          value[ch] =
+              round_to_int(static_cast<double>(w[0] * v[0] + w[1] * v[1] + w[2] * v[2]) * scale) + 0x8000;
+        }
+        shade_span<C>(image.pixels.data() + (j * image.width + lo) * C, hi - lo + 1, mode, c[0], [&] {
+          std::uint8_t out[4];
+          for (int ch = 0; ch < 4; ++ch) {
+            out[ch] =
+                static_cast<std::uint8_t>(std::clamp<std::int64_t>(value[ch] >> 16, lo_c[ch], hi_c[ch]));
+            value[ch] += slope[ch];
+          }
+          return Rgba8{out[0], out[1], out[2], out[3]};
+        });
+      });
 }
 
 // ---- Triangles with depth (3D): the same coverage, then depth test and perspective-correct shading ----
 
 template <int C>
-void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawList& list, Image& image, float* depth,
-                         Rect clip, SamplePoint sample) {
-  const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x}, ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
+void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawList& list, Image& image,
+                         float* depth, Rect clip, SamplePoint sample) {
+  const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x},
+                     ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
   const DepthVertex* v = tri.v;
   const PrimitivePlan mode = op.mode;
-  const Rgba8 flat{to_byte(v[0].color[0]), to_byte(v[0].color[1]), to_byte(v[0].color[2]), to_byte(v[0].color[3])};
+  const Rgba8 flat{to_byte(v[0].color[0]), to_byte(v[0].color[1]), to_byte(v[0].color[2]),
+                   to_byte(v[0].color[3])};
   const double flip = tri.back_facing ? -1.0 : 1.0;  // two-sided lighting
-  for_each_span(xs, ys, clip, sample, [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t (&w)[3],
-                                          const std::int64_t (&step)[3], const std::int64_t (&)[3], std::int64_t area) {
-    const double inv_area = 1.0 / static_cast<double>(area);
-    const std::size_t row = static_cast<std::size_t>(j) * image.width;
-    for (std::int64_t i = lo; i <= hi; ++i) {
-      const std::int64_t n = i - lo;
-      // screen-space barycentrics; depth (z / w) is affine in screen space
-      const double l[3] = {static_cast<double>(w[0] + step[0] * n) * inv_area, static_cast<double>(w[1] + step[1] * n) * inv_area,
-                           static_cast<double>(w[2] + step[2] * n) * inv_area};
-      const float z = static_cast<float>(l[0] * v[0].depth + l[1] * v[1].depth + l[2] * v[2].depth);
-      float& stored = depth[row + i];
-      if (!(z > stored)) continue;  // reversed depth: larger is nearer; ties keep what was drawn first
-      stored = z;
-      std::uint8_t* p = image.pixels.data() + (row + i) * C;
-      if (!mode.smooth) {
-        if (mode.blend) blend<C>(p, flat);
-        else store<C>(p, flat);
-        continue;
-      }
-      // perspective-correct weights: interpolate attribute / w and 1 / w, then divide
-      double q[3], sum = 0;
-      for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * v[k].inv_w;
-      for (double& qk : q) qk /= sum;
-      double rgba[4];
-      for (int c = 0; c < 4; ++c) rgba[c] = q[0] * v[0].color[c] + q[1] * v[1].color[c] + q[2] * v[2].color[c];
-      if (op.light_per_pixel) {
-        double nrm[3];
-        for (int c = 0; c < 3; ++c) nrm[c] = q[0] * v[0].normal[c] + q[1] * v[1].normal[c] + q[2] * v[2].normal[c];
-        const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-        const double lambert = len > 0 ? flip * (nrm[0] * list.to_light[0] + nrm[1] * list.to_light[1] + nrm[2] * list.to_light[2]) / len : 0;
-        const double shade = list.ambient + (1 - list.ambient) * std::max(0.0, lambert);
-        for (int c = 0; c < 3; ++c) rgba[c] *= shade;
-      }
-      const Rgba8 c{to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]), to_byte(rgba[3])};
-      if (mode.blend) blend<C>(p, c);
-      else store<C>(p, c);
-    }
-  });
+  for_each_span(
+      xs, ys, clip, sample,
+      [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t(&w)[3],
+          const std::int64_t(&step)[3], const std::int64_t(&)[3], std::int64_t area) {
+        const double inv_area = 1.0 / static_cast<double>(area);
+        const std::size_t row = static_cast<std::size_t>(j) * image.width;
+        for (std::int64_t i = lo; i <= hi; ++i) {
+          const std::int64_t n = i - lo;
+          // screen-space barycentrics; depth (z / w) is affine in screen space
+          const double l[3] = {static_cast<double>(w[0] + step[0] * n) * inv_area,
+                               static_cast<double>(w[1] + step[1] * n) * inv_area,
+                               static_cast<double>(w[2] + step[2] * n) * inv_area};
+          const float z = static_cast<float>(l[0] * v[0].depth + l[1] * v[1].depth + l[2] * v[2].depth);
+          float& stored = depth[row + i];
+          if (!(z > stored)) continue;  // reversed depth: larger is nearer; ties keep what was drawn first
+          stored = z;
+          std::uint8_t* p = image.pixels.data() + (row + i) * C;
+          if (!mode.smooth) {
+            if (mode.blend)
+              blend<C>(p, flat);
+            else
+              store<C>(p, flat);
+            continue;
+          }
+          // perspective-correct weights: interpolate attribute / w and 1 / w, then divide
+          double q[3], sum = 0;
+          for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * v[k].inv_w;
+          for (double& qk : q) qk /= sum;
+          double rgba[4];
+          for (int c = 0; c < 4; ++c)
+            rgba[c] = q[0] * v[0].color[c] + q[1] * v[1].color[c] + q[2] * v[2].color[c];
+          if (op.light_per_pixel) {
+            double nrm[3];
+            for (int c = 0; c < 3; ++c)
+              nrm[c] = q[0] * v[0].normal[c] + q[1] * v[1].normal[c] + q[2] * v[2].normal[c];
+            const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+            const double lambert = len > 0 ? flip *
+                                                 (nrm[0] * list.to_light[0] + nrm[1] * list.to_light[1] +
+                                                  nrm[2] * list.to_light[2]) /
+                                                 len
+                                           : 0;
+            const double shade = list.ambient + (1 - list.ambient) * std::max(0.0, lambert);
+            for (int c = 0; c < 3; ++c) rgba[c] *= shade;
+          }
+          const Rgba8 c{to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]), to_byte(rgba[3])};
+          if (mode.blend)
+            blend<C>(p, c);
+          else
+            store<C>(p, c);
+        }
+      });
 }
 
 // ---- Triangles, exact wide path: vertices beyond the fast range, up to 2^128 px --------------------------
 
 template <int C>
-void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& image, Rect clip, SamplePoint sample) {
+void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& image, Rect clip,
+                        SamplePoint sample) {
   int order[3] = {0, 1, 2};
   Wide x[3], y[3];
   for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(tri.x[k]), y[k] = Wide::from_double(tri.y[k]);
@@ -256,12 +294,15 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
   // per-row spans below decide coverage exactly.
   auto pixel_range = [](double lo_units, double hi_units, int c0, int c1) {
     // widened by one pixel on each side, so the sample's offset within the pixel does not matter here
-    const double lo = std::ceil(lo_units / kSubpixelScale) - 2, hi = std::floor(hi_units / kSubpixelScale) + 1;
+    const double lo = std::ceil(lo_units / kSubpixelScale) - 2,
+                 hi = std::floor(hi_units / kSubpixelScale) + 1;
     return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::max<double>(c0, lo)),
                                                  static_cast<std::int64_t>(std::min<double>(c1 - 1, hi))};
   };
-  const auto [i_lo, i_hi] = pixel_range(std::min({tri.x[0], tri.x[1], tri.x[2]}), std::max({tri.x[0], tri.x[1], tri.x[2]}), clip.x0, clip.x1);
-  const auto [j_lo, j_hi] = pixel_range(std::min({tri.y[0], tri.y[1], tri.y[2]}), std::max({tri.y[0], tri.y[1], tri.y[2]}), clip.y0, clip.y1);
+  const auto [i_lo, i_hi] = pixel_range(std::min({tri.x[0], tri.x[1], tri.x[2]}),
+                                        std::max({tri.x[0], tri.x[1], tri.x[2]}), clip.x0, clip.x1);
+  const auto [j_lo, j_hi] = pixel_range(std::min({tri.y[0], tri.y[1], tri.y[2]}),
+                                        std::max({tri.y[0], tri.y[1], tri.y[2]}), clip.y0, clip.y1);
   if (i_lo > i_hi || j_lo > j_hi) return;
 
   Wide a[3], row_value[3], step_x[3], step_y[3], min_value[3];
@@ -286,9 +327,12 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
     std::int64_t lo = 0, hi = width - 1;  // offsets from i_lo
     for (int k = 0; k < 3; ++k) {
       const Wide slack = row_value[k] - min_value[k];  // E(i_lo) - min; need slack + step * n >= 0
-      if (step_x[k] > Wide(0)) lo = std::max(lo, -floor_div_clamped(slack, step_x[k], -(width + 1), 0));
-      else if (step_x[k] < Wide(0)) hi = std::min(hi, floor_div_clamped(slack, -step_x[k], -1, width));
-      else if (slack.negative()) lo = hi + 1;
+      if (step_x[k] > Wide(0))
+        lo = std::max(lo, -floor_div_clamped(slack, step_x[k], -(width + 1), 0));
+      else if (step_x[k] < Wide(0))
+        hi = std::min(hi, floor_div_clamped(slack, -step_x[k], -1, width));
+      else if (slack.negative())
+        lo = hi + 1;
     }
     if (lo <= hi) {
       double w[3], dw[3];
@@ -300,7 +344,8 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
       shade_span<C>(p, hi - lo + 1, mode, col[0], [&] {
         auto channel = [&](std::uint8_t Rgba8::*m) {
           const double v = w[0] * (col[0].*m) + w[1] * (col[1].*m) + w[2] * (col[2].*m);
-          const double lo_c = std::min({col[0].*m, col[1].*m, col[2].*m}), hi_c = std::max({col[0].*m, col[1].*m, col[2].*m});
+          const double lo_c = std::min({col[0].*m, col[1].*m, col[2].*m}),
+                       hi_c = std::max({col[0].*m, col[1].*m, col[2].*m});
           return to_byte(std::clamp(v, lo_c, hi_c));
         };
         const Rgba8 c{channel(&Rgba8::r), channel(&Rgba8::g), channel(&Rgba8::b), channel(&Rgba8::a)};
@@ -318,8 +363,10 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
 template <int C, typename T>
 void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, float* depth, Rect clip) {
   auto to_t = [](double v) {
-    if constexpr (std::is_same_v<T, Wide>) return Wide::from_double(v);
-    else return static_cast<T>(v);
+    if constexpr (std::is_same_v<T, Wide>)
+      return Wide::from_double(v);
+    else
+      return static_cast<T>(v);
   };
   T x0 = to_t(line.x0), y0 = to_t(line.y0), x1 = to_t(line.x1), y1 = to_t(line.y1);
   Rgba8 c0 = line.c0, c1 = line.c1;
@@ -341,8 +388,10 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, float* 
 
   // Visible columns: [u0, u1] minus the joint pixels owned by neighbouring segments, within the clip.
   auto to_i64 = [](const T& v) -> std::int64_t {
-    if constexpr (std::is_same_v<T, Wide>) return v.low64();
-    else return static_cast<std::int64_t>(v);
+    if constexpr (std::is_same_v<T, Wide>)
+      return v.low64();
+    else
+      return static_cast<std::int64_t>(v);
   };
   const T first = draw_first ? u0 : u0 + T(1), last = draw_last ? u1 : u1 - T(1);
   if (last < T(u_min) || T(u_max) < first || last < first) return;
@@ -383,8 +432,10 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, float* 
     while (a < b) {
       const std::int64_t m = a + (b - a) / 2;
       const std::int64_t v = v_at(m);
-      if (rising ? v < v_min : v > v_max) a = m + 1;
-      else b = m;
+      if (rising ? v < v_min : v > v_max)
+        a = m + 1;
+      else
+        b = m;
     }
     lo = a;
   }
@@ -397,8 +448,10 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, float* 
     std::int64_t a = lo, b = hi;
     while (a < b) {
       const std::int64_t m = a + (b - a + 1) / 2;
-      if (inside(m)) a = m;
-      else b = m - 1;
+      if (inside(m))
+        a = m;
+      else
+        b = m - 1;
     }
     hi = a;
   }
@@ -407,11 +460,14 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, float* 
   std::int64_t v = v_at(lo);
   T r = numerator(lo) - two_du * T(v);
   auto lerp_t = [&](std::int64_t u) {  // (u - u0) / du as a double, for depth only
-    if constexpr (std::is_same_v<T, Wide>) return (T(u) - u0).to_double() / du.to_double();
-    else return static_cast<double>(T(u) - u0) / static_cast<double>(du);
+    if constexpr (std::is_same_v<T, Wide>)
+      return (T(u) - u0).to_double() / du.to_double();
+    else
+      return static_cast<double>(T(u) - u0) / static_cast<double>(du);
   };
   auto lerp = [&](std::uint8_t a, std::uint8_t b, const T& t) {  // a + round((b - a) t / du), exact
-    return static_cast<std::uint8_t>(a + floor_div_clamped(T(2 * (int{b} - int{a})) * t + du, two_du, -255, 255));
+    return static_cast<std::uint8_t>(a +
+                                     floor_div_clamped(T(2 * (int{b} - int{a})) * t + du, two_du, -255, 255));
   };
   for (std::int64_t u = lo; u <= hi; ++u) {
     // 3D lines: z / w is affine along the screen-space line
@@ -421,14 +477,17 @@ void draw_line(const ScreenLine& line, PrimitivePlan mode, Image& image, float* 
       return Rgba8{lerp(c0.r, c1.r, t), lerp(c0.g, c1.g, t), lerp(c0.b, c1.b, t), lerp(c0.a, c1.a, t)};
     });
     r += two_dv;  // step the minor axis when the remainder leaves [0, 2du)
-    if (!(r < two_du)) r -= two_du, ++v;
-    else if (r < T(0)) r += two_du, --v;
+    if (!(r < two_du))
+      r -= two_du, ++v;
+    else if (r < T(0))
+      r += two_du, --v;
   }
 }
 
 bool line_fits_int128(const ScreenLine& l) {
   constexpr double kLimit = 0x1p60;  // keeps 2 dv (u - u0) + 2 du v0 below 2^125
-  return std::fabs(l.x0) <= kLimit && std::fabs(l.y0) <= kLimit && std::fabs(l.x1) <= kLimit && std::fabs(l.y1) <= kLimit;
+  return std::fabs(l.x0) <= kLimit && std::fabs(l.y0) <= kLimit && std::fabs(l.x1) <= kLimit &&
+         std::fabs(l.y1) <= kLimit;
 }
 
 // How often the deadline is checked, in rough work units: a record costs 1 plus the pixel rows its
@@ -450,14 +509,17 @@ std::int64_t rough_work(const DrawList& list, const DrawOp& op, std::uint32_t k)
       const auto& v = list.depth_triangles[k].v;
       return 1 + rows_spanned(v[0].y, v[1].y, v[2].y);
     }
-    case DrawOp::Kind::huge_triangles: return kWorkPerStopCheck;  // rare and possibly image-sized
-    case DrawOp::Kind::lines: return 1;
+    case DrawOp::Kind::huge_triangles:
+      return kWorkPerStopCheck;  // rare and possibly image-sized
+    case DrawOp::Kind::lines:
+      return 1;
   }
   return 1;
 }
 
 template <int C>
-void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop, SamplePoint sample) {
+void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop,
+              SamplePoint sample) {
   std::int64_t work = 0;
   for (const DrawOp& op : list.ops) {
     for (std::uint32_t k = op.first; k < op.first + op.count; ++k) {
@@ -466,12 +528,20 @@ void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const
         if (stop.now()) return;
       }
       switch (op.kind) {
-        case DrawOp::Kind::triangles: fill_triangle<C>(list.triangles[k], op.mode, image, clip, sample); break;
-        case DrawOp::Kind::huge_triangles: fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip, sample); break;
-        case DrawOp::Kind::depth_triangles: fill_depth_triangle<C>(list.depth_triangles[k], op, list, image, depth, clip, sample); break;
+        case DrawOp::Kind::triangles:
+          fill_triangle<C>(list.triangles[k], op.mode, image, clip, sample);
+          break;
+        case DrawOp::Kind::huge_triangles:
+          fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip, sample);
+          break;
+        case DrawOp::Kind::depth_triangles:
+          fill_depth_triangle<C>(list.depth_triangles[k], op, list, image, depth, clip, sample);
+          break;
         case DrawOp::Kind::lines:
-          if (line_fits_int128(list.lines[k])) draw_line<C, __int128>(list.lines[k], op.mode, image, depth, clip);
-          else draw_line<C, Wide>(list.lines[k], op.mode, image, depth, clip);
+          if (line_fits_int128(list.lines[k]))
+            draw_line<C, __int128>(list.lines[k], op.mode, image, depth, clip);
+          else
+            draw_line<C, Wide>(list.lines[k], op.mode, image, depth, clip);
           break;
       }
     }
@@ -482,17 +552,22 @@ void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const
 
 bool Stop::now() const {
   if (stopped->load(std::memory_order_relaxed)) return true;
-  const bool stop = (cancel && cancel->load(std::memory_order_relaxed)) || std::chrono::steady_clock::now() >= deadline;
+  const bool stop =
+      (cancel && cancel->load(std::memory_order_relaxed)) || std::chrono::steady_clock::now() >= deadline;
   if (stop) stopped->store(true, std::memory_order_relaxed);
   return stop;
 }
 
 void draw(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop, SamplePoint sample) {
   switch (image.format) {
-    case PixelFormat::grey8: return draw_all<1>(list, image, depth, clip, stop, sample);
-    case PixelFormat::grey_alpha8: return draw_all<2>(list, image, depth, clip, stop, sample);
-    case PixelFormat::rgb8: return draw_all<3>(list, image, depth, clip, stop, sample);
-    case PixelFormat::rgba8: return draw_all<4>(list, image, depth, clip, stop, sample);
+    case PixelFormat::grey8:
+      return draw_all<1>(list, image, depth, clip, stop, sample);
+    case PixelFormat::grey_alpha8:
+      return draw_all<2>(list, image, depth, clip, stop, sample);
+    case PixelFormat::rgb8:
+      return draw_all<3>(list, image, depth, clip, stop, sample);
+    case PixelFormat::rgba8:
+      return draw_all<4>(list, image, depth, clip, stop, sample);
   }
 }
 
@@ -506,14 +581,33 @@ const std::vector<SamplePoint>& sample_pattern(int samples) {
   };
   static const std::vector<SamplePoint> one{{128, 128}};
   static const std::vector<SamplePoint> four = pattern({{-2, -6}, {6, -2}, {-6, 2}, {2, 6}});
-  static const std::vector<SamplePoint> eight = pattern({{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}});
-  static const std::vector<SamplePoint> sixteen = pattern({{1, 1}, {-1, -3}, {-3, 2}, {4, -1}, {-5, -2}, {2, 5}, {5, 3}, {3, -5},
-                                                           {-2, 6}, {0, -7}, {-4, -6}, {-6, 4}, {-8, 0}, {7, -4}, {6, 7}, {-7, -8}});
+  static const std::vector<SamplePoint> eight =
+      pattern({{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}});
+  static const std::vector<SamplePoint> sixteen = pattern({{1, 1},
+                                                           {-1, -3},
+                                                           {-3, 2},
+                                                           {4, -1},
+                                                           {-5, -2},
+                                                           {2, 5},
+                                                           {5, 3},
+                                                           {3, -5},
+                                                           {-2, 6},
+                                                           {0, -7},
+                                                           {-4, -6},
+                                                           {-6, 4},
+                                                           {-8, 0},
+                                                           {7, -4},
+                                                           {6, 7},
+                                                           {-7, -8}});
   switch (samples) {
-    case 4: return four;
-    case 8: return eight;
-    case 16: return sixteen;
-    default: return one;
+    case 4:
+      return four;
+    case 8:
+      return eight;
+    case 16:
+      return sixteen;
+    default:
+      return one;
   }
 }
 

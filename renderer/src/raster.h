@@ -33,6 +33,7 @@ const std::vector<SamplePoint>& sample_pattern(int samples);
 /// Draws every op of `list`, in order, into the pixels of `image` inside `clip`; 3D ops also test and write
 /// `depth` (row-major like the image; nullptr when the plan has no depth buffer). Pixels outside `clip`
 /// are not read or written, so disjoint clips can run on different threads.
-void draw(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop, SamplePoint sample = {});
+void draw(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop,
+          SamplePoint sample = {});
 
 }  // namespace raster::detail

@@ -51,6 +51,8 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   return image;
 }
 
-Image render(const Scene& scene, const Limits& limits) { return render(scene, plan(scene, limits)); }
+Image render(const Scene& scene, const Limits& limits) {
+  return render(scene, plan(scene, limits));
+}
 
 }  // namespace raster

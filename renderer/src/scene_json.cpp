@@ -1,9 +1,9 @@
 // Scene parsing: JSON text -> Scene. Every rejection names the JSON pointer (or byte offset) it concerns.
 #include <algorithm>
-#include <numbers>
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <numbers>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -32,9 +32,12 @@ class Path {
     std::string out = parent_->str() + "/";
     if (!key_) return out + std::to_string(index_);
     for (const char* c = key_; *c; ++c) {
-      if (*c == '~') out += "~0";
-      else if (*c == '/') out += "~1";
-      else out += *c;
+      if (*c == '~')
+        out += "~0";
+      else if (*c == '/')
+        out += "~1";
+      else
+        out += *c;
     }
     return out;
   }
@@ -51,18 +54,28 @@ const Path kRoot;
   throw SceneError(kind, message, ErrorLocation{at.str(), 0, 0});
 }
 
-[[noreturn]] void invalid(const Path& at, const std::string& message) { fail(ErrorKind::invalid, at, message); }
+[[noreturn]] void invalid(const Path& at, const std::string& message) {
+  fail(ErrorKind::invalid, at, message);
+}
 
 const char* type_name(const json& v) {
   switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::binary: return "binary data";
-    case json::value_t::discarded: return "nothing";
-    default: return "a number";
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return "a boolean";
+    case json::value_t::string:
+      return "a string";
+    case json::value_t::array:
+      return "an array";
+    case json::value_t::object:
+      return "an object";
+    case json::value_t::binary:
+      return "binary data";
+    case json::value_t::discarded:
+      return "nothing";
+    default:
+      return "a number";
   }
 }
 
@@ -93,7 +106,8 @@ void check_keys(const json& obj, const Path& pointer, std::initializer_list<cons
       if (d < best_distance) best_distance = d, best = k;
     }
     std::string message = "unknown field \"" + key + "\"";
-    if (!best.empty()) message += "; did you mean \"" + best + "\"?";
+    if (!best.empty())
+      message += "; did you mean \"" + best + "\"?";
     else {
       message += "; known fields are";
       for (const char* k : known) message += std::string(" \"") + k + "\"";
@@ -135,7 +149,9 @@ int hex_digit(char c) {
   return -1;
 }
 
-std::uint8_t unit_to_byte(double v) { return static_cast<std::uint8_t>(std::floor(v * 255.0 + 0.5)); }
+std::uint8_t unit_to_byte(double v) {
+  return static_cast<std::uint8_t>(std::floor(v * 255.0 + 0.5));
+}
 
 std::string hex_of(const std::vector<double>& bytes) {
   static const char* digits = "0123456789abcdef";
@@ -156,7 +172,8 @@ Rgba8 read_color(const json& v, const Path& pointer) {
     bool ok = n >= 1 && s[0] == '#' && (n == 4 || n == 5 || n == 7 || n == 9);
     for (std::size_t i = 1; ok && i < n; ++i) ok = hex_digit(s[i]) >= 0;
     if (!ok)
-      invalid(pointer, "expected a colour \"#rgb\", \"#rgba\", \"#rrggbb\" or \"#rrggbbaa\", got \"" + s + "\"");
+      invalid(pointer,
+              "expected a colour \"#rgb\", \"#rgba\", \"#rrggbb\" or \"#rrggbbaa\", got \"" + s + "\"");
     std::array<std::uint8_t, 4> c{0, 0, 0, 255};
     const bool short_form = n <= 5;
     const std::size_t count = short_form ? n - 1 : (n - 1) / 2;
@@ -168,7 +185,8 @@ Rgba8 read_color(const json& v, const Path& pointer) {
   }
   if (v.is_array()) {
     if (v.size() != 3 && v.size() != 4)
-      invalid(pointer, "a colour array has 3 or 4 components [r, g, b(, a)], got " + std::to_string(v.size()));
+      invalid(pointer,
+              "a colour array has 3 or 4 components [r, g, b(, a)], got " + std::to_string(v.size()));
     std::vector<double> comp;
     for (std::size_t k = 0; k < v.size(); ++k) comp.push_back(read_number(v[k], Path(pointer, k)));
     for (std::size_t k = 0; k < comp.size(); ++k) {
@@ -187,7 +205,8 @@ Rgba8 read_color(const json& v, const Path& pointer) {
 
 double read_coordinate(const json& v, const Path& pointer) {
   const double d = read_number(v, pointer);
-  if (std::fabs(d) > kMaxCoordinate) invalid(pointer, "coordinate " + v.dump() + " is outside +-3.4e38 (+-2^128)");
+  if (std::fabs(d) > kMaxCoordinate)
+    invalid(pointer, "coordinate " + v.dump() + " is outside +-3.4e38 (+-2^128)");
   return d;
 }
 
@@ -196,7 +215,8 @@ std::array<double, 3> read_point(const json& v, const Path& pointer, std::size_t
   const char* shape = dims == 2 ? "[x, y]" : "[x, y, z]";
   if (!v.is_array()) invalid(pointer, std::string("expected a point ") + shape + ", got " + type_name(v));
   if (v.size() != dims)
-    invalid(pointer, std::string("expected a point ") + shape + " like the first point, got " + std::to_string(v.size()) + " numbers");
+    invalid(pointer, std::string("expected a point ") + shape + " like the first point, got " +
+                         std::to_string(v.size()) + " numbers");
   std::array<double, 3> p{};
   for (std::size_t k = 0; k < dims; ++k) p[k] = read_coordinate(v[k], Path(pointer, k));
   return p;
@@ -209,10 +229,14 @@ Vec3 read_vec3(const json& v, const Path& pointer) {
 
 const char* kind_name(PrimitiveKind k) {
   switch (k) {
-    case PrimitiveKind::triangle: return "triangle";
-    case PrimitiveKind::line: return "line";
-    case PrimitiveKind::polyline: return "polyline";
-    case PrimitiveKind::mesh: return "mesh";
+    case PrimitiveKind::triangle:
+      return "triangle";
+    case PrimitiveKind::line:
+      return "line";
+    case PrimitiveKind::polyline:
+      return "polyline";
+    case PrimitiveKind::mesh:
+      return "mesh";
   }
   return "?";
 }
@@ -243,7 +267,8 @@ Mat4 read_transform(const json& v, const Path& pointer) {
   Mat4 m;
   if (auto it = v.find("matrix"); it != v.end()) {
     if (v.size() != 1) invalid(pointer, "\"matrix\" replaces translate/rotate/scale; give one or the other");
-    if (!it->is_array() || it->size() != 16) invalid(Path(pointer, "matrix"), "expected 16 numbers (a row-major 4x4 matrix)");
+    if (!it->is_array() || it->size() != 16)
+      invalid(Path(pointer, "matrix"), "expected 16 numbers (a row-major 4x4 matrix)");
     for (std::size_t k = 0; k < 16; ++k) m.m[k] = read_number((*it)[k], Path(Path(pointer, "matrix"), k));
     return m;
   }
@@ -285,28 +310,39 @@ constexpr Rgba8 kMeshGrey{204, 204, 204, 255};  // the default colour of meshes 
 void read_mesh_options(const json& v, const Path& pointer, Mesh& mesh) {
   if (auto it = v.find("shading"); it != v.end()) {
     const Path sp(pointer, "shading");
-    if (!it->is_string()) invalid(sp, std::string("expected \"flat\", \"smooth\" or \"unlit\", got ") + type_name(*it));
+    if (!it->is_string())
+      invalid(sp, std::string("expected \"flat\", \"smooth\" or \"unlit\", got ") + type_name(*it));
     const std::string& s = it->get_ref<const std::string&>();
-    if (s == "flat") mesh.shading = Shading::flat;
-    else if (s == "smooth") mesh.shading = Shading::smooth;
-    else if (s == "unlit") mesh.shading = Shading::unlit;
-    else invalid(sp, "expected \"flat\", \"smooth\" or \"unlit\", got \"" + s + "\"");
+    if (s == "flat")
+      mesh.shading = Shading::flat;
+    else if (s == "smooth")
+      mesh.shading = Shading::smooth;
+    else if (s == "unlit")
+      mesh.shading = Shading::unlit;
+    else
+      invalid(sp, "expected \"flat\", \"smooth\" or \"unlit\", got \"" + s + "\"");
   }
   if (auto it = v.find("cull"); it != v.end()) {
     const Path cp(pointer, "cull");
-    if (!it->is_string() || (*it != "none" && *it != "back")) invalid(cp, "expected \"none\" or \"back\", got " + it->dump());
+    if (!it->is_string() || (*it != "none" && *it != "back"))
+      invalid(cp, "expected \"none\" or \"back\", got " + it->dump());
     mesh.cull = *it == "back" ? Cull::back : Cull::none;
   }
-  if (auto it = v.find("wireframe"); it != v.end()) mesh.wireframe = read_bool(*it, Path(pointer, "wireframe"));
-  if (auto it = v.find("transform"); it != v.end()) mesh.transform = read_transform(*it, Path(pointer, "transform"));
+  if (auto it = v.find("wireframe"); it != v.end())
+    mesh.wireframe = read_bool(*it, Path(pointer, "wireframe"));
+  if (auto it = v.find("transform"); it != v.end())
+    mesh.transform = read_transform(*it, Path(pointer, "transform"));
 }
 
 // positions: [[x,y,z], ...] or [x,y,z, x,y,z, ...]; likewise normals.
 std::vector<Vec3> read_vec3_list(const json& v, const Path& pointer) {
-  if (!v.is_array()) invalid(pointer, std::string("expected an array of [x, y, z] or of numbers, got ") + type_name(v));
+  if (!v.is_array())
+    invalid(pointer, std::string("expected an array of [x, y, z] or of numbers, got ") + type_name(v));
   std::vector<Vec3> out;
   if (!v.empty() && v[0].is_number()) {
-    if (v.size() % 3 != 0) invalid(pointer, "a flat list holds x, y, z triples; its length " + std::to_string(v.size()) + " is not a multiple of 3");
+    if (v.size() % 3 != 0)
+      invalid(pointer, "a flat list holds x, y, z triples; its length " + std::to_string(v.size()) +
+                           " is not a multiple of 3");
     out.reserve(v.size() / 3);
     for (std::size_t k = 0; k < v.size(); k += 3)
       out.push_back({read_coordinate(v[k], Path(pointer, k)), read_coordinate(v[k + 1], Path(pointer, k + 1)),
@@ -319,37 +355,46 @@ std::vector<Vec3> read_vec3_list(const json& v, const Path& pointer) {
 }
 
 // indices: [[a,b,c], ...] or [a,b,c, a,b,c, ...], 0-based into positions.
-std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const Path& pointer, std::size_t positions,
-                                                       const Limits& limits) {
-  if (!v.is_array()) invalid(pointer, std::string("expected an array of [a, b, c] or of integers, got ") + type_name(v));
+std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const Path& pointer,
+                                                       std::size_t positions, const Limits& limits) {
+  if (!v.is_array())
+    invalid(pointer, std::string("expected an array of [a, b, c] or of integers, got ") + type_name(v));
   auto index = [&](const json& e, const Path& p) {
     const std::int64_t i = read_integer(e, p);
     if (i < 0 || static_cast<std::size_t>(i) >= positions)
-      invalid(p, "index " + e.dump() + " is outside the " + std::to_string(positions) + " positions (0-based)");
+      invalid(p,
+              "index " + e.dump() + " is outside the " + std::to_string(positions) + " positions (0-based)");
     return static_cast<std::uint32_t>(i);
   };
   const bool flat = !v.empty() && v[0].is_number();
   const std::size_t count = flat ? v.size() / 3 : v.size();
   if (static_cast<std::int64_t>(count) > limits.max_primitives)
-    fail(ErrorKind::limit, pointer, std::to_string(count) + " triangles exceed the limit of " + std::to_string(limits.max_primitives));
+    fail(ErrorKind::limit, pointer,
+         std::to_string(count) + " triangles exceed the limit of " + std::to_string(limits.max_primitives));
   std::vector<std::array<std::uint32_t, 3>> out;
   out.reserve(count);
   if (flat) {
-    if (v.size() % 3 != 0) invalid(pointer, "a flat list holds a, b, c triples; its length " + std::to_string(v.size()) + " is not a multiple of 3");
+    if (v.size() % 3 != 0)
+      invalid(pointer, "a flat list holds a, b, c triples; its length " + std::to_string(v.size()) +
+                           " is not a multiple of 3");
     for (std::size_t k = 0; k < v.size(); k += 3)
-      out.push_back({index(v[k], Path(pointer, k)), index(v[k + 1], Path(pointer, k + 1)), index(v[k + 2], Path(pointer, k + 2))});
+      out.push_back({index(v[k], Path(pointer, k)), index(v[k + 1], Path(pointer, k + 1)),
+                     index(v[k + 2], Path(pointer, k + 2))});
     return out;
   }
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Path p(pointer, k);
     if (!v[k].is_array() || v[k].size() != 3) invalid(p, "expected a triangle [a, b, c]");
-    out.push_back({index(v[k][0], Path(p, std::size_t{0})), index(v[k][1], Path(p, std::size_t{1})), index(v[k][2], Path(p, std::size_t{2}))});
+    out.push_back({index(v[k][0], Path(p, std::size_t{0})), index(v[k][1], Path(p, std::size_t{1})),
+                   index(v[k][2], Path(p, std::size_t{2}))});
   }
   return out;
 }
 
 Mesh read_mesh(const json& v, const Path& pointer, const Limits& limits) {
-  check_keys(v, pointer, {"type", "positions", "indices", "colors", "color", "normals", "shading", "wireframe", "cull", "transform"});
+  check_keys(v, pointer,
+             {"type", "positions", "indices", "colors", "color", "normals", "shading", "wireframe", "cull",
+              "transform"});
   Mesh mesh;
   auto pos = v.find("positions");
   if (pos == v.end()) invalid(pointer, "a mesh needs \"positions\"");
@@ -361,7 +406,8 @@ Mesh read_mesh(const json& v, const Path& pointer, const Limits& limits) {
   if (auto it = v.find("normals"); it != v.end()) {
     mesh.normals = read_vec3_list(*it, Path(pointer, "normals"));
     if (mesh.normals.size() != mesh.positions.size())
-      invalid(Path(pointer, "normals"), "\"normals\" needs one normal per position (" + std::to_string(mesh.positions.size()) + ")");
+      invalid(Path(pointer, "normals"),
+              "\"normals\" needs one normal per position (" + std::to_string(mesh.positions.size()) + ")");
     mesh.normal_triangles = mesh.triangles;
   }
   read_mesh_options(v, pointer, mesh);
@@ -373,24 +419,31 @@ std::string located(const SceneError& e) {
 }
 
 Mesh read_obj(const json& v, const Path& pointer, const Limits& limits, const Uploads& uploads) {
-  check_keys(v, pointer, {"type", "data", "source", "mtl", "mtl_source", "color", "shading", "wireframe", "cull", "transform"});
+  check_keys(
+      v, pointer,
+      {"type", "data", "source", "mtl", "mtl_source", "color", "shading", "wireframe", "cull", "transform"});
   auto text_of = [&](const char* inline_key, const char* source_key, bool required) -> std::string_view {
     auto data = v.find(inline_key);
     auto source = v.find(source_key);
     if (data != v.end() && source != v.end())
       invalid(pointer, std::string("give either \"") + inline_key + "\" or \"" + source_key + "\", not both");
     if (data != v.end()) {
-      if (!data->is_string()) invalid(Path(pointer, inline_key), std::string("expected text, got ") + type_name(*data));
+      if (!data->is_string())
+        invalid(Path(pointer, inline_key), std::string("expected text, got ") + type_name(*data));
       return data->get_ref<const std::string&>();
     }
     if (source != v.end()) {
-      if (!source->is_string()) invalid(Path(pointer, source_key), std::string("expected the name of an uploaded part, got ") + type_name(*source));
+      if (!source->is_string())
+        invalid(Path(pointer, source_key),
+                std::string("expected the name of an uploaded part, got ") + type_name(*source));
       auto part = uploads.find(source->get_ref<const std::string&>());
       if (part == uploads.end())
-        invalid(Path(pointer, source_key), "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
+        invalid(Path(pointer, source_key),
+                "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
       return part->second;
     }
-    if (required) invalid(pointer, "an obj needs \"data\" (OBJ text) or \"source\" (the name of an uploaded part)");
+    if (required)
+      invalid(pointer, "an obj needs \"data\" (OBJ text) or \"source\" (the name of an uploaded part)");
     return {};
   };
   const std::string_view obj_text = text_of("data", "source", true);
@@ -416,8 +469,8 @@ Mesh read_obj(const json& v, const Path& pointer, const Limits& limits, const Up
 }
 
 // A triangle, line or polyline whose points are [x, y, z]: world space, through the camera, unlit.
-Mesh mesh_of_3d_primitive(PrimitiveKind kind, const std::vector<Vec3>& points, std::vector<Rgba8> colors, bool fill,
-                          bool closed) {
+Mesh mesh_of_3d_primitive(PrimitiveKind kind, const std::vector<Vec3>& points, std::vector<Rgba8> colors,
+                          bool fill, bool closed) {
   Mesh mesh;
   mesh.positions = points;
   mesh.colors = std::move(colors);
@@ -432,19 +485,23 @@ Mesh mesh_of_3d_primitive(PrimitiveKind kind, const std::vector<Vec3>& points, s
   return mesh;
 }
 
-void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limits& limits, const Uploads& uploads) {
+void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limits& limits,
+                    const Uploads& uploads) {
   if (!v.is_object()) invalid(pointer, std::string("expected a primitive object, got ") + type_name(v));
   auto type_it = v.find("type");
-  if (type_it == v.end()) invalid(pointer, "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\")");
+  if (type_it == v.end())
+    invalid(pointer, "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\")");
   const Path type_pointer(pointer, "type");
-  if (!type_it->is_string()) invalid(type_pointer, std::string("expected a string, got ") + type_name(*type_it));
+  if (!type_it->is_string())
+    invalid(type_pointer, std::string("expected a string, got ") + type_name(*type_it));
   const std::string& type = type_it->get_ref<const std::string&>();
 
   Primitive p;
   if (type == "mesh" || type == "obj") {
     p.kind = PrimitiveKind::mesh;
     p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
-    scene.meshes.push_back(type == "mesh" ? read_mesh(v, pointer, limits) : read_obj(v, pointer, limits, uploads));
+    scene.meshes.push_back(type == "mesh" ? read_mesh(v, pointer, limits)
+                                          : read_obj(v, pointer, limits, uploads));
     scene.primitives.push_back(p);
     return;
   }
@@ -458,13 +515,15 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
     p.kind = PrimitiveKind::polyline;
     check_keys(v, pointer, {"type", "points", "color", "colors", "closed", "width"});
   } else {
-    invalid(type_pointer, "unknown primitive type \"" + type + "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\"");
+    invalid(type_pointer, "unknown primitive type \"" + type +
+                              "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\"");
   }
 
   auto points_it = v.find("points");
   const Path points_pointer(pointer, "points");
   if (points_it == v.end()) invalid(pointer, std::string("a ") + kind_name(p.kind) + " needs \"points\"");
-  if (!points_it->is_array()) invalid(points_pointer, std::string("expected an array of points, got ") + type_name(*points_it));
+  if (!points_it->is_array())
+    invalid(points_pointer, std::string("expected an array of points, got ") + type_name(*points_it));
   const std::size_t n = points_it->size();
   if (p.kind == PrimitiveKind::triangle && n != 3)
     invalid(points_pointer, "a triangle has exactly 3 points, got " + std::to_string(n));
@@ -472,12 +531,15 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
     invalid(points_pointer, "a line has exactly 2 points, got " + std::to_string(n));
   if (p.kind == PrimitiveKind::polyline && n < 2)
     invalid(points_pointer, "a polyline has at least 2 points, got " + std::to_string(n));
-  if (scene.points.size() + n > UINT32_MAX) fail(ErrorKind::limit, points_pointer, "too many points in the scene");
+  if (scene.points.size() + n > UINT32_MAX)
+    fail(ErrorKind::limit, points_pointer, "too many points in the scene");
   if (auto it = v.find("fill"); it != v.end()) p.fill = read_bool(*it, Path(pointer, "fill"));
   if (auto it = v.find("closed"); it != v.end()) p.closed = read_bool(*it, Path(pointer, "closed"));
   if (auto it = v.find("width"); it != v.end()) {
     const double w = read_number(*it, Path(pointer, "width"));
-    if (!(w > 0 && w <= 4096)) invalid(Path(pointer, "width"), "line \"width\" is in pixels, more than 0 and at most 4096; got " + it->dump());
+    if (!(w > 0 && w <= 4096))
+      invalid(Path(pointer, "width"),
+              "line \"width\" is in pixels, more than 0 and at most 4096; got " + it->dump());
     p.width = static_cast<float>(w);
   }
 
@@ -494,9 +556,10 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
     read_colors(v, pointer, n, Rgba8{255, 255, 255, 255}, colors);
     p.kind = PrimitiveKind::mesh;
     p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
-    scene.meshes.push_back(mesh_of_3d_primitive(
-        type == "triangle" ? PrimitiveKind::triangle : type == "line" ? PrimitiveKind::line : PrimitiveKind::polyline, pts,
-        std::move(colors), p.fill, p.closed));
+    scene.meshes.push_back(mesh_of_3d_primitive(type == "triangle" ? PrimitiveKind::triangle
+                                                : type == "line"   ? PrimitiveKind::line
+                                                                   : PrimitiveKind::polyline,
+                                                pts, std::move(colors), p.fill, p.closed));
     scene.primitives.push_back(p);
     return;
   }
@@ -522,30 +585,40 @@ Camera read_camera(const json& v) {
     c.projection = *it == "orthographic" ? Projection::orthographic : Projection::perspective;
   }
   if (auto it = v.find("eye"); it != v.end()) c.eye = read_vec3(*it, Path(pointer, "eye")), c.has_eye = true;
-  if (auto it = v.find("target"); it != v.end()) c.target = read_vec3(*it, Path(pointer, "target")), c.has_target = true;
+  if (auto it = v.find("target"); it != v.end())
+    c.target = read_vec3(*it, Path(pointer, "target")), c.has_target = true;
   if (auto it = v.find("up"); it != v.end()) {
     c.up = read_vec3(*it, Path(pointer, "up"));
-    if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0) invalid(Path(pointer, "up"), "\"up\" must not be the zero vector");
+    if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0)
+      invalid(Path(pointer, "up"), "\"up\" must not be the zero vector");
   }
   if (auto it = v.find("fov"); it != v.end()) {
     c.fov_deg = read_number(*it, Path(pointer, "fov"));
-    if (!(c.fov_deg > 0 && c.fov_deg < 180)) invalid(Path(pointer, "fov"), "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180; got " + it->dump());
+    if (!(c.fov_deg > 0 && c.fov_deg < 180))
+      invalid(
+          Path(pointer, "fov"),
+          "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180; got " + it->dump());
   }
   if (auto it = v.find("near"); it != v.end()) {
     c.near = read_number(*it, Path(pointer, "near")), c.has_near = true;
-    if (!(c.near > 0)) invalid(Path(pointer, "near"), "\"near\" is a distance in front of the eye and must be > 0; got " + it->dump());
+    if (!(c.near > 0))
+      invalid(Path(pointer, "near"),
+              "\"near\" is a distance in front of the eye and must be > 0; got " + it->dump());
   }
   if (auto it = v.find("far"); it != v.end()) {
     c.far = read_number(*it, Path(pointer, "far")), c.has_far = true;
     if (!(c.far > 0)) invalid(Path(pointer, "far"), "\"far\" must be > 0; got " + it->dump());
   }
-  if (c.has_near && c.has_far && !(c.near < c.far)) invalid(Path(pointer, "far"), "\"far\" must be greater than \"near\"");
+  if (c.has_near && c.has_far && !(c.near < c.far))
+    invalid(Path(pointer, "far"), "\"far\" must be greater than \"near\"");
   if (auto it = v.find("height"); it != v.end()) {
     c.height = read_number(*it, Path(pointer, "height")), c.has_height = true;
-    if (!(c.height > 0)) invalid(Path(pointer, "height"), "\"height\" (orthographic view height) must be > 0");
+    if (!(c.height > 0))
+      invalid(Path(pointer, "height"), "\"height\" (orthographic view height) must be > 0");
   }
   if (c.has_eye && c.has_target && c.eye.x == c.target.x && c.eye.y == c.target.y && c.eye.z == c.target.z)
-    invalid(Path(pointer, "target"), "\"eye\" and \"target\" are the same point: the camera has no view direction");
+    invalid(Path(pointer, "target"),
+            "\"eye\" and \"target\" are the same point: the camera has no view direction");
   return c;
 }
 
@@ -557,11 +630,13 @@ Light read_light(const json& v) {
   if (auto it = v.find("direction"); it != v.end()) {
     l.direction = read_vec3(*it, Path(pointer, "direction"));
     l.headlight = false;
-    if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0) invalid(Path(pointer, "direction"), "the light direction must not be the zero vector");
+    if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0)
+      invalid(Path(pointer, "direction"), "the light direction must not be the zero vector");
   }
   if (auto it = v.find("ambient"); it != v.end()) {
     l.ambient = read_number(*it, Path(pointer, "ambient"));
-    if (!(l.ambient >= 0 && l.ambient <= 1)) invalid(Path(pointer, "ambient"), "\"ambient\" is in 0..1; got " + it->dump());
+    if (!(l.ambient >= 0 && l.ambient <= 1))
+      invalid(Path(pointer, "ambient"), "\"ambient\" is in 0..1; got " + it->dump());
   }
   return l;
 }
@@ -573,8 +648,10 @@ std::size_t depth_violation_offset(std::string_view text, int max_depth) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
     } else if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
@@ -591,7 +668,8 @@ std::size_t depth_violation_offset(std::string_view text, int max_depth) {
 // error, number overflow included, into a SceneError with the byte offset the parser reports.
 class BoundedDomBuilder {
  public:
-  BoundedDomBuilder(json& out, std::string_view text, int max_depth) : dom_(out, true), text_(text), max_depth_(max_depth) {}
+  BoundedDomBuilder(json& out, std::string_view text, int max_depth)
+      : dom_(out, true), text_(text), max_depth_(max_depth) {}
 
   bool null() { return dom_.null(); }
   bool boolean(bool v) { return dom_.boolean(v); }
@@ -627,7 +705,8 @@ class BoundedDomBuilder {
 };
 
 json parse_document(std::string_view text, int max_depth) {
-  if (text.empty()) throw SceneError(ErrorKind::syntax, "the scene is empty (0 bytes); expected a JSON object");
+  if (text.empty())
+    throw SceneError(ErrorKind::syntax, "the scene is empty (0 bytes); expected a JSON object");
   json doc;
   BoundedDomBuilder builder(doc, text, max_depth);
   json::sax_parse(text.begin(), text.end(), &builder);
@@ -649,31 +728,39 @@ Scene parse_scene(std::string_view json_text, const Limits& limits, const Upload
     const std::int64_t side = read_integer(*it, pointer);
     if (side < 1) invalid(pointer, std::string("\"") + key + "\" must be at least 1, got " + it->dump());
     const int cap = std::min(max_side, kMaxImageSide);
-    if (side > cap) fail(ErrorKind::limit, pointer, std::string("\"") + key + "\" " + it->dump() + " exceeds the limit of " + std::to_string(cap));
+    if (side > cap)
+      fail(ErrorKind::limit, pointer,
+           std::string("\"") + key + "\" " + it->dump() + " exceeds the limit of " + std::to_string(cap));
     return static_cast<int>(side);
   };
   scene.width = read_side("width", limits.max_width);
   scene.height = read_side("height", limits.max_height);
   const std::int64_t pixels = static_cast<std::int64_t>(scene.width) * scene.height;
   if (pixels > limits.max_pixels)
-    fail(ErrorKind::limit, kRoot, std::to_string(scene.width) + "x" + std::to_string(scene.height) + " is " +
-                                   std::to_string(pixels) + " pixels, over the limit of " + std::to_string(limits.max_pixels));
+    fail(ErrorKind::limit, kRoot,
+         std::to_string(scene.width) + "x" + std::to_string(scene.height) + " is " + std::to_string(pixels) +
+             " pixels, over the limit of " + std::to_string(limits.max_pixels));
 
   if (auto it = doc.find("antialias"); it != doc.end()) {
     const Path at(kRoot, "antialias");
     const std::int64_t n = read_integer(*it, at);
-    if (n != 1 && n != 4 && n != 8 && n != 16) invalid(at, "\"antialias\" is the samples per pixel: 1, 4, 8 or 16; got " + it->dump());
+    if (n != 1 && n != 4 && n != 8 && n != 16)
+      invalid(at, "\"antialias\" is the samples per pixel: 1, 4, 8 or 16; got " + it->dump());
     scene.samples = static_cast<int>(n);
   }
-  if (auto it = doc.find("background"); it != doc.end()) scene.background = read_color(*it, Path(kRoot, "background"));
+  if (auto it = doc.find("background"); it != doc.end())
+    scene.background = read_color(*it, Path(kRoot, "background"));
 
   if (auto it = doc.find("primitives"); it != doc.end()) {
     const Path primitives(kRoot, "primitives");
     if (!it->is_array()) invalid(primitives, std::string("expected an array, got ") + type_name(*it));
     if (static_cast<std::int64_t>(it->size()) > limits.max_primitives)
-      fail(ErrorKind::limit, primitives, std::to_string(it->size()) + " primitives exceed the limit of " + std::to_string(limits.max_primitives));
+      fail(ErrorKind::limit, primitives,
+           std::to_string(it->size()) + " primitives exceed the limit of " +
+               std::to_string(limits.max_primitives));
     scene.primitives.reserve(it->size());
-    for (std::size_t i = 0; i < it->size(); ++i) read_primitive((*it)[i], Path(primitives, i), scene, limits, uploads);
+    for (std::size_t i = 0; i < it->size(); ++i)
+      read_primitive((*it)[i], Path(primitives, i), scene, limits, uploads);
   }
   if (auto it = doc.find("camera"); it != doc.end()) scene.camera = read_camera(*it);
   if (auto it = doc.find("light"); it != doc.end()) scene.light = read_light(*it);

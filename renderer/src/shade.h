@@ -16,7 +16,9 @@ inline std::uint8_t to_byte(double x) {
 }
 
 /// round(x / 255) for 0 <= x <= 255 * 255 * 2, exact.
-inline std::uint32_t div255(std::uint32_t x) { return (x + 127) / 255; }
+inline std::uint32_t div255(std::uint32_t x) {
+  return (x + 127) / 255;
+}
 
 /// Writes an opaque-or-replacing colour. Grey formats use r (the plan chose grey only if r == g == b).
 template <int C>

@@ -42,7 +42,9 @@ Wide Wide::operator-() const {
   return r + Wide(1);
 }
 
-Wide operator-(const Wide& a, const Wide& b) { return a + (-b); }
+Wide operator-(const Wide& a, const Wide& b) {
+  return a + (-b);
+}
 
 // Schoolbook product modulo 2^384; two's complement makes it right for signed operands too.
 Wide operator*(const Wide& a, const Wide& b) {
@@ -61,9 +63,11 @@ Wide operator*(const Wide& a, const Wide& b) {
 }
 
 std::strong_ordering operator<=>(const Wide& a, const Wide& b) {
-  if (a.negative() != b.negative()) return a.negative() ? std::strong_ordering::less : std::strong_ordering::greater;
+  if (a.negative() != b.negative())
+    return a.negative() ? std::strong_ordering::less : std::strong_ordering::greater;
   for (int i = Wide::kLimbs - 1; i >= 0; --i)
-    if (a.limb_[i] != b.limb_[i]) return a.limb_[i] < b.limb_[i] ? std::strong_ordering::less : std::strong_ordering::greater;
+    if (a.limb_[i] != b.limb_[i])
+      return a.limb_[i] < b.limb_[i] ? std::strong_ordering::less : std::strong_ordering::greater;
   return std::strong_ordering::equal;
 }
 
@@ -79,11 +83,14 @@ namespace {
 // Shared by both integer types: range checks by multiplication, then a floating estimate corrected by
 // exact comparisons. Within [lo, hi] the quotient has at most ~50 bits, so the estimate is off by <= 1.
 template <typename T>
-std::int64_t floor_div_clamped_impl(const T& n, const T& d, std::int64_t lo, std::int64_t hi, double nd, double dd) {
+std::int64_t floor_div_clamped_impl(const T& n, const T& d, std::int64_t lo, std::int64_t hi, double nd,
+                                    double dd) {
   if (n < d * T(lo)) return lo;
   if (!(n < d * (T(hi) + T(1)))) return hi;
   double estimate = std::floor(nd / dd);
-  std::int64_t q = estimate < static_cast<double>(lo) ? lo : estimate > static_cast<double>(hi) ? hi : static_cast<std::int64_t>(estimate);
+  std::int64_t q = estimate < static_cast<double>(lo)   ? lo
+                   : estimate > static_cast<double>(hi) ? hi
+                                                        : static_cast<std::int64_t>(estimate);
   while (n < d * T(q)) --q;
   while (!(n < d * (T(q) + T(1)))) ++q;
   return q;

@@ -17,9 +17,9 @@ enum class ErrorKind {
 
 /// Where a problem is. Fields that do not apply are empty / zero.
 struct ErrorLocation {
-  std::string pointer;      ///< RFC 6901 JSON pointer into the scene, e.g. "/primitives/3/points/1"
-  std::size_t byte = 0;     ///< 1-based byte offset into the input text, 0 when unknown
-  std::size_t line = 0;     ///< 1-based line number (OBJ models), 0 when unknown
+  std::string pointer;   ///< RFC 6901 JSON pointer into the scene, e.g. "/primitives/3/points/1"
+  std::size_t byte = 0;  ///< 1-based byte offset into the input text, 0 when unknown
+  std::size_t line = 0;  ///< 1-based line number (OBJ models), 0 when unknown
 };
 
 /// The single exception type for bad input. what() is a human sentence without the location.

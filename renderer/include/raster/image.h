@@ -14,7 +14,9 @@ enum class PixelFormat : std::uint8_t {
   rgba8 = 4,        ///< R, G, B, A (straight alpha)
 };
 
-inline int channel_count(PixelFormat f) { return static_cast<int>(f); }
+inline int channel_count(PixelFormat f) {
+  return static_cast<int>(f);
+}
 
 /// Pixels row-major, top row first, channels interleaved as PixelFormat says, no row padding.
 struct Image {

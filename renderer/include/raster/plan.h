@@ -14,10 +14,11 @@ namespace raster {
 /// How one primitive is drawn. A culled primitive is skipped before setup.
 struct PrimitivePlan {
   bool visible = true;  ///< false: its bounding box misses the image (culled before setup)
-  bool smooth = false;  ///< interpolate per-vertex values (colours; normals when lit); false: one colour per face
-  bool blend = false;   ///< some colour has alpha < 255: source-over blending; false: plain stores
-  bool depth = false;   ///< 3D: depth-tested and depth-written; 2D overlays are not
-  bool lit = false;     ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
+  bool smooth =
+      false;  ///< interpolate per-vertex values (colours; normals when lit); false: one colour per face
+  bool blend = false;            ///< some colour has alpha < 255: source-over blending; false: plain stores
+  bool depth = false;            ///< 3D: depth-tested and depth-written; 2D overlays are not
+  bool lit = false;              ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
   bool compute_normals = false;  ///< smooth lighting on a mesh without normals: computed, angle-weighted
 };
 
@@ -26,13 +27,13 @@ struct PrimitivePlan {
 /// falls toward 0 at the far plane, which spreads float precision evenly over distance.
 struct ViewPlan {
   Projection projection = Projection::perspective;
-  Vec3 eye, target, up;    ///< world
-  double fov_deg = 45;     ///< vertical, degrees
+  Vec3 eye, target, up;      ///< world
+  double fov_deg = 45;       ///< vertical, degrees
   double near = 1, far = 2;  ///< distances from the eye along the view direction
-  double height = 0;       ///< orthographic: world units visible vertically
-  Mat4 world_to_clip;      ///< projection * view
-  Vec3 to_light;           ///< unit world vector pointing toward the light
-  double ambient = 0.2;    ///< in [0, 1]
+  double height = 0;         ///< orthographic: world units visible vertically
+  Mat4 world_to_clip;        ///< projection * view
+  Vec3 to_light;             ///< unit world vector pointing toward the light
+  double ambient = 0.2;      ///< in [0, 1]
 };
 
 /// Bytes of pixel storage each buffer will take; checked against the limits before allocation.
@@ -51,8 +52,8 @@ struct PngPlan {
 };
 
 struct RenderPlan {
-  int width = 0;   ///< pixels
-  int height = 0;  ///< pixels
+  int width = 0;                           ///< pixels
+  int height = 0;                          ///< pixels
   PixelFormat format = PixelFormat::rgb8;  ///< fewest channels that hold every colour the render can make
   bool depth_buffer = false;               ///< only 3D content needs one; 2D never does
   int samples = 1;                         ///< per pixel; 1 = aliased, no sample storage
@@ -69,7 +70,7 @@ struct RenderPlan {
   ViewPlan view;  ///< meaningful only when depth_buffer is true (the scene has 3D content)
 
   std::int64_t work = 0;  ///< estimated pixel writes that bands split: each visible primitive's clipped box
-  int threads = 1;        ///< 1: everything on the calling thread, no hand-off; >1: that many horizontal bands
+  int threads = 1;  ///< 1: everything on the calling thread, no hand-off; >1: that many horizontal bands
   MemoryPlan memory;
   PngPlan png;
 };

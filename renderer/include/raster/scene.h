@@ -46,10 +46,10 @@ enum class Cull : std::uint8_t { none, back };
 
 /// Triangles and segments in model space, drawn through the camera with a depth test.
 struct Mesh {
-  std::vector<Vec3> positions;                      ///< model units
+  std::vector<Vec3> positions;                          ///< model units
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into positions; counter-clockwise = front
   std::vector<std::array<std::uint32_t, 2>> segments;   ///< indices into positions; drawn with the line rule
-  std::vector<Vec3> normals;       ///< model space, any length; empty: computed when lighting needs them
+  std::vector<Vec3> normals;  ///< model space, any length; empty: computed when lighting needs them
   std::vector<std::array<std::uint32_t, 3>> normal_triangles;  ///< per triangle, indices into normals
   std::vector<Rgba8> colors;       ///< one per position, or exactly one for the whole mesh
   std::vector<Rgba8> face_colors;  ///< empty, or one per triangle (OBJ materials' Kd); wins over colors
@@ -71,12 +71,13 @@ struct Camera {
   double fov_deg = 45;  ///< perspective: vertical field of view in degrees, in (0, 180)
   double near = 0;      ///< distance from the eye along the view direction, > 0
   double far = 0;       ///< > near
-  double height = 0;    ///< orthographic: world units visible vertically; default: what the fov sees at the target
+  double height =
+      0;  ///< orthographic: world units visible vertically; default: what the fov sees at the target
 };
 
 /// One directional light plus ambient. Lambert: ambient + (1 - ambient) * max(0, n . -direction).
 struct Light {
-  bool headlight = true;  ///< true: the light travels along the view direction (from the eye)
+  bool headlight = true;     ///< true: the light travels along the view direction (from the eye)
   Vec3 direction{0, 0, -1};  ///< world direction the light travels (from the light toward the scene)
   double ambient = 0.2;      ///< in [0, 1]
 };
@@ -93,14 +94,14 @@ struct Primitive {
   bool per_vertex_color = false;  ///< true: point_count colours from first_color; false: one flat colour
   bool fill = true;               ///< triangles: false draws the outline with the line rule
   bool closed = false;            ///< polylines: also join the last point to the first
-  float width = 1;                ///< lines, polylines, outlines: pixels; != 1 (or anti-aliasing) draws rectangles
-  std::uint32_t mesh = 0;         ///< mesh (also 3D triangles, lines and OBJ models): index into Scene::meshes
+  float width = 1;         ///< lines, polylines, outlines: pixels; != 1 (or anti-aliasing) draws rectangles
+  std::uint32_t mesh = 0;  ///< mesh (also 3D triangles, lines and OBJ models): index into Scene::meshes
 };
 
 /// The image dimensions, their background and the primitives drawn over it in array order.
 struct Scene {
-  int width = 0;               ///< pixels, >= 1
-  int height = 0;              ///< pixels, >= 1
+  int width = 0;   ///< pixels, >= 1
+  int height = 0;  ///< pixels, >= 1
   Rgba8 background{0, 0, 0, 255};
   std::vector<Primitive> primitives;  ///< drawn in this order; later ones are on top
   std::vector<Point2> points;         ///< all vertices, referenced by Primitive::first_point
@@ -108,7 +109,7 @@ struct Scene {
   std::vector<Mesh> meshes;           ///< 3D content, referenced by mesh primitives
   Camera camera;                      ///< used only when the scene has 3D content
   Light light;
-  int samples = 1;                    ///< "antialias": samples per pixel, 1 (aliased), 4, 8 or 16
+  int samples = 1;  ///< "antialias": samples per pixel, 1 (aliased), 4, 8 or 16
 
   bool has_3d() const { return !meshes.empty(); }
 
@@ -120,11 +121,11 @@ struct Scene {
 
 /// What the service allows; checked while parsing and again by the plan before any allocation.
 struct Limits {
-  int max_width = 8192;                      ///< pixels
-  int max_height = 8192;                     ///< pixels
-  std::int64_t max_pixels = 40'000'000;      ///< width * height
-  std::int64_t max_primitives = 2'000'000;   ///< entries of "primitives"
-  int max_json_depth = 64;                   ///< nesting of arrays and objects
+  int max_width = 8192;                         ///< pixels
+  int max_height = 8192;                        ///< pixels
+  std::int64_t max_pixels = 40'000'000;         ///< width * height
+  std::int64_t max_primitives = 2'000'000;      ///< entries of "primitives"
+  int max_json_depth = 64;                      ///< nesting of arrays and objects
   std::int64_t max_buffer_bytes = 512ll << 20;  ///< all pixel storage of one render (colour, depth, samples)
   std::int64_t max_obj_faces = 5'000'000;       ///< faces of one OBJ model (before triangulation)
 };
