@@ -73,6 +73,28 @@ TEST(Robustness, ManyPrimitivesAreBoundedByTheLimit) {
   }
 }
 
+// One million primitives (half the default limit) render; nothing is allocated per primitive beyond the
+// flat arrays and the draw list.
+TEST(Robustness, OneMillionPrimitivesRender) {
+  test::SceneBuilder s(1000, 1000);
+  for (int i = 0; i < 1'000'000; ++i) {
+    const double x = i % 1000, y = i / 1000;
+    s.triangle({x, y}, {x + 1, y}, {x, y + 1}, raster::Rgba8{static_cast<std::uint8_t>(i), 0, 255, 255});
+  }
+  const auto plan = raster::plan(s.scene);
+  EXPECT_EQ(plan.flat_count, 1'000'000);
+  const auto img = raster::render(s.scene, plan);
+  // each unit right triangle covers exactly its pixel's centre? no: (x+0.5, y+0.5) lies on the hypotenuse,
+  // a right edge, so it is excluded -- every pixel stays background, a million times over
+  EXPECT_EQ(test::count_not(img, test::kBlack), 0);
+  test::SceneBuilder t(1000, 1000);
+  for (int i = 0; i < 1'000'000; ++i) {
+    const double x = i % 1000, y = i / 1000;
+    t.triangle({x, y}, {x + 2, y}, {x, y + 2}, test::kWhite);  // covers its own pixel's centre
+  }
+  EXPECT_EQ(test::count_not(raster::render(t.scene), test::kBlack), 1'000'000);
+}
+
 TEST(Robustness, CoordinatesBeyondTheFloatRangeAreRefused) {
   const auto e = [] {
     try {
