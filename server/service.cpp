@@ -297,7 +297,12 @@ void Service::install(httplib::Server& server) {
   // arrive, and health and metrics must still find one free.
   const std::size_t threads = static_cast<std::size_t>(s.config.workers + s.config.max_queue) + 16;
   server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
-  server.set_keep_alive_timeout(2);  // idle keep-alive connections give their thread back quickly
+  // One request per connection. After a 408 a kept-alive connection goes on reading whatever the client
+  // still drips as its next request line, holding a thread for as long as the client likes; cpp-httplib
+  // 0.11 decides keep-alive from the request, before routing, so a handler cannot close its own
+  // connection. A new connection costs tens of microseconds on a service whose requests cost
+  // milliseconds, and no idle connection holds a thread.
+  server.set_keep_alive_max_count(1);
   const auto read_timeout =
       std::min<std::chrono::milliseconds>(s.config.body_deadline, std::chrono::milliseconds(5000));
   server.set_read_timeout(read_timeout);

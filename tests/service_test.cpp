@@ -101,6 +101,22 @@ TEST(Service, BodyOverTheCapIsRefusedFromItsDeclaredLengthBeforeReading) {
   EXPECT_NE(raw.find("application/problem+json"), std::string::npos);
 }
 
+// A refused body is never read; what is left of it on the wire must not be parsed as a next request
+// (request smuggling). Here the unread body is itself a complete request: exactly one response may come back.
+TEST(Service, UnreadBodyOfARefusalIsNotParsedAsARequest) {
+  TestServer server;
+  RawClient c(server.port());
+  ASSERT_TRUE(c.connected());
+  const std::string smuggled = "GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n";
+  ASSERT_TRUE(c.send("POST /render HTTP/1.1\r\nHost: x\r\nContent-Encoding: gzip\r\nContent-Length: " +
+                     std::to_string(smuggled.size()) + "\r\n\r\n" + smuggled));
+  const std::string raw = c.receive_all();
+  EXPECT_EQ(status_of(raw), 415);
+  std::size_t responses = 0;
+  for (std::size_t at = raw.find("HTTP/1.1 "); at != std::string::npos; at = raw.find("HTTP/1.1 ", at + 1)) ++responses;
+  EXPECT_EQ(responses, 1u) << raw;
+}
+
 TEST(Service, ChunkedBodyIsCutAtTheCap) {
   rasterd::ServiceConfig config;
   config.max_body_bytes = 1000;
@@ -196,20 +212,23 @@ TEST(Service, DrippingBodyIsCutAtTheDeadlineWhileOthersAreServed) {
   RawClient slow(server.port());
   ASSERT_TRUE(slow.connected());
   ASSERT_TRUE(slow.send("POST /render HTTP/1.1\r\nHost: x\r\nContent-Length: 100\r\n\r\n{"));
-  std::atomic<bool> stop{false};
+  std::atomic<bool> stop{false}, dripped_all{false};
   std::thread drip([&] {
     for (int i = 0; i < 99 && !stop; ++i) {  // one byte every 100 ms: 10 s in all
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
       if (!slow.send(" ")) break;
     }
+    dripped_all = !stop;
   });
   auto health = server.client().Get("/healthz");  // someone else is served meanwhile
   ASSERT_TRUE(health);
   EXPECT_EQ(health->status, 200);
-  const std::string raw = slow.receive_all();
+  const std::string raw = slow.receive_all();  // returns when the server closes the connection
+  const bool closed_while_dripping = !dripped_all;
   stop = true;
   drip.join();
   EXPECT_EQ(status_of(raw), 408) << raw.substr(0, 200);
+  EXPECT_TRUE(closed_while_dripping) << "after the 408 the connection is closed, not read on as a next request";
 }
 
 TEST(Service, MetricsAndServerTiming) {
