@@ -3,6 +3,8 @@
 // features they stress: triangle_test, line_test, scene_parse_test, scene3d_test.)
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "support.h"
 
 namespace {
@@ -107,6 +109,23 @@ TEST(Robustness, CoordinatesBeyondTheFloatRangeAreRefused) {
   }();
   EXPECT_EQ(e.kind(), raster::ErrorKind::invalid);
   EXPECT_EQ(e.where().pointer, "/primitives/0/points/1/0");
+}
+
+}  // namespace
+
+namespace {
+
+// Fuzzer findings, kept as regression tests (the sanitizer build runs them with UBSan).
+TEST(Robustness, FuzzFinding3DLineEndpointAt1e30) {
+  // A 3D line with one endpoint at z = 1e30: homogeneous clipping in doubles cancelled catastrophically and
+  // a NaN screen coordinate reached Wide::from_double, an integer conversion. Now the segment is dropped.
+  const std::string text = test::read_file(RASTERD_TESTS_DIR "/data/fuzz-3d-line-at-1e30.json");
+  const auto img = test::render(raster::parse_scene(text));
+  // The same scene without that segment (primitive 2) renders the same pixels: only it was dropped.
+  auto doc = nlohmann::json::parse(text);
+  doc["primitives"].erase(2);
+  EXPECT_EQ(img.pixels, test::render(raster::parse_scene(doc.dump())).pixels);
+  EXPECT_GT(test::count_not(img, raster::Rgba8{0x18, 0x18, 0x20, 255}), 0) << "the small, distant cube is there";
 }
 
 }  // namespace

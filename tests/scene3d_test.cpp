@@ -314,6 +314,18 @@ TEST(Scene3D, InvalidCamerasAreRejectedExtremeOnesRender) {
       100);
 }
 
+// The fitted near plane follows the content near the eye, not the farthest vertex: with the eye inside the
+// content's box and one vertex 1e30 away, a near plane derived from `far` would clip everything.
+TEST(Scene3D, FittedNearPlaneIgnoresAFarOutlier) {
+  const json near_tri = {{"type", "triangle"}, {"points", {{-1, -1, -5}, {1, -1, -5}, {0, 1, -5}}}, {"color", "#ff0000"}};
+  const json outlier = {{"type", "triangle"}, {"points", {{0, 0, -1e30}, {0, 0, 10}, {1, 0, 10}}}, {"color", "#00ff00"}};
+  const json cam = {{"eye", {0, 0, 0}}, {"target", {0, 0, -1}}};
+  const auto scene = raster::parse_scene(json{{"width", 32}, {"height", 32}, {"camera", cam}, {"primitives", {near_tri, outlier}}}.dump());
+  const auto plan = raster::plan(scene);
+  EXPECT_LT(plan.view.near, 5) << "near " << plan.view.near << ", far " << plan.view.far;
+  EXPECT_EQ(test::pixel(test::render(scene), 16, 16), test::kRed);
+}
+
 // Reversed float depth keeps its relative precision: two surfaces 1% apart in distance are ordered
 // correctly at every range from 1e-3 to 1e5 with near = 1e-6 and far = 1e6.
 TEST(Scene3D, DepthOrdersSurfacesOnePercentApartAcrossTheRange) {

@@ -103,6 +103,13 @@ struct Viewport {
   }
 };
 
+// Clipping keeps every vertex inside the guard band in exact arithmetic. In doubles, coordinates near 1e30
+// cancel catastrophically and a clipped vertex can land anywhere, even at w = 0 (found by the fuzzer: a
+// NaN reached an integer conversion). Such a vertex has no trustworthy position: its primitive is dropped.
+bool in_guard_band(double sx, double sy, double inv_w) {
+  return std::isfinite(inv_w) && inv_w > 0 && std::fabs(sx) <= kFastRangePx && std::fabs(sy) <= kFastRangePx;
+}
+
 Rgba8 to_rgba8(const float* c) {
   return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
 }
@@ -203,9 +210,12 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
       }
       const int n = clip_polygon(poly, 3, planes);
       DepthVertex dv[9];
-      for (int k = 0; k < n; ++k) {
+      bool usable = true;
+      for (int k = 0; k < n && usable; ++k) {
         double sx, sy, depth, inv_w;
         viewport.project(poly[k], sx, sy, depth, inv_w);
+        usable = in_guard_band(sx, sy, inv_w);
+        if (!usable) break;
         dv[k].x = static_cast<std::int32_t>(snap(sx));
         dv[k].y = static_cast<std::int32_t>(snap(sy));
         dv[k].depth = static_cast<float>(depth);
@@ -213,7 +223,7 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
         std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
         std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
       }
-      for (int k = 1; k + 1 < n; ++k) list.depth_triangles.push_back({{dv[0], dv[k], dv[k + 1]}, back});
+      for (int k = 1; usable && k + 1 < n; ++k) list.depth_triangles.push_back({{dv[0], dv[k], dv[k + 1]}, back});
     }
     op.count = static_cast<std::uint32_t>(list.depth_triangles.size()) - op.first;
     if (op.count > 0) list.ops.push_back(op);
@@ -252,6 +262,7 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
     double ax, ay, ad, aw, bx, by, bd, bw;
     viewport.project(a, ax, ay, ad, aw);
     viewport.project(b, bx, by, bd, bw);
+    if (!in_guard_band(ax, ay, aw) || !in_guard_band(bx, by, bw)) continue;
     ScreenLine line{std::floor(ax),   std::floor(ay),   std::floor(bx), std::floor(by),
                     to_rgba8(a.attr), to_rgba8(b.attr), true,           true};
     line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
