@@ -129,6 +129,18 @@ TEST(Plan, MemoryIsCheckedBeforeAllocation) {
   EXPECT_EQ(raster::plan(s.scene, limits).memory.total(), 4000ll * 4000 * 4);
 }
 
+TEST(Plan, LinesBecomeRectanglesOnlyWhenWideOrAntialiased) {
+  SceneBuilder s(32, 32);
+  s.line({1, 1}, {30, 20}, test::kRed).line({1, 5}, {30, 25}, test::kRed);
+  s.scene.primitives[1].width = 3;
+  auto p = plan_of(s.scene);
+  EXPECT_FALSE(p.primitives[0].line_rectangles) << "a 1 px aliased line is Bresenham";
+  EXPECT_TRUE(p.primitives[1].line_rectangles);
+  s.scene.samples = 4;
+  p = plan_of(s.scene);
+  EXPECT_TRUE(p.primitives[0].line_rectangles) << "anti-aliased lines are rectangles";
+}
+
 TEST(Plan, ExplainShowsTheDecisions) {
   SceneBuilder s(20, 10);
   s.triangle({1, 1}, {19, 1}, {1, 9}, test::kRed, test::kGreen, test::kBlue)

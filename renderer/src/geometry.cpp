@@ -80,10 +80,10 @@ void add_polyline_rectangles(const Scene& scene, const Primitive& prim, bool clo
   op.mode = mode;
   op.mode.smooth = true;  // endpoint colours may differ; equal ones interpolate to themselves exactly
   if (list.triangles.size() > t0)
-    list.ops.push_back({DrawOp::Kind::triangles, op.mode, false, static_cast<std::uint32_t>(t0),
+    list.ops.push_back({DrawOp::Kind::triangles, op.mode, static_cast<std::uint32_t>(t0),
                         static_cast<std::uint32_t>(list.triangles.size() - t0)});
   if (list.huge_triangles.size() > h0)
-    list.ops.push_back({DrawOp::Kind::huge_triangles, op.mode, false, static_cast<std::uint32_t>(h0),
+    list.ops.push_back({DrawOp::Kind::huge_triangles, op.mode, static_cast<std::uint32_t>(h0),
                         static_cast<std::uint32_t>(list.huge_triangles.size() - h0)});
 }
 
@@ -128,7 +128,7 @@ DrawList build_draw_list(const Scene& scene, const RenderPlan& plan) {
     const bool closed = prim.kind == PrimitiveKind::triangle || prim.closed;
     if (prim.kind == PrimitiveKind::triangle && prim.fill) {
       add_triangle(scene, prim, list, op);
-    } else if (plan.samples > 1 || prim.width != 1) {
+    } else if (mode.line_rectangles) {
       add_polyline_rectangles(scene, prim, closed, mode, list);
       continue;
     } else {

@@ -159,7 +159,7 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   };
 
   if (!mesh.wireframe && !mesh.triangles.empty()) {
-    const bool light_per_pixel = mode.lit && mesh.shading == Shading::smooth;
+    const bool light_per_pixel = mode.light_per_pixel;
     std::vector<Vec3> world(mesh.positions.size());
     for (std::size_t i = 0; i < world.size(); ++i)
       world[i] = transform_point(mesh.transform, mesh.positions[i]);
@@ -177,7 +177,6 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
     DrawOp op;
     op.kind = DrawOp::Kind::depth_triangles;
     op.mode = mode;
-    op.light_per_pixel = light_per_pixel;
     op.first = static_cast<std::uint32_t>(list.depth_triangles.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       const auto& tri = mesh.triangles[t];

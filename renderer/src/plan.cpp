@@ -246,7 +246,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       any_3d = true;
       pp.depth = true;
       pp.lit = draws_triangles && mesh.shading != Shading::unlit;
-      pp.compute_normals = pp.lit && mesh.shading == Shading::smooth && mesh.normals.empty();
+      pp.light_per_pixel = pp.lit && mesh.shading == Shading::smooth;
+      pp.compute_normals = pp.light_per_pixel && mesh.normals.empty();
       const auto& colors = mesh.face_colors.empty() ? mesh.colors : mesh.face_colors;
       bool varied = false;
       for (const Rgba8& c : colors) {
@@ -266,6 +267,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       continue;
     }
     const bool filled = prim.kind == PrimitiveKind::triangle && prim.fill;
+    pp.line_rectangles = !filled && (scene.samples > 1 || prim.width != 1);
     Box b = bounds(scene, prim);
     if (!filled) {  // a wide line reaches half its width beyond its points
       const double pad = prim.width * 0.5;

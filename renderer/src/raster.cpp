@@ -254,7 +254,7 @@ void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawL
           double rgba[4];
           for (int c = 0; c < 4; ++c)
             rgba[c] = q[0] * v[0].color[c] + q[1] * v[1].color[c] + q[2] * v[2].color[c];
-          if (op.light_per_pixel) {
+          if (op.mode.light_per_pixel) {
             double nrm[3];
             for (int c = 0; c < 3; ++c)
               nrm[c] = q[0] * v[0].normal[c] + q[1] * v[1].normal[c] + q[2] * v[2].normal[c];
