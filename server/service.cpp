@@ -190,8 +190,9 @@ struct Service::State {
     bool over = false, late = false;
     auto take = [&](std::string& into, const char* data, std::size_t n) {
       t_request.bytes_in += n;
-      if (t_request.bytes_in > cap) return !(over = true);
-      if (Clock::now() > deadline) return !(late = true);
+      over = t_request.bytes_in > cap;
+      late = !over && Clock::now() > deadline;
+      if (over || late) return false;  // stop reading
       into.append(data, n);
       return true;
     };
@@ -209,12 +210,17 @@ struct Service::State {
       complete = reader([&](const char* data, std::size_t n) { return take(body, data, n); });
     }
     if (over) return too_large();
-    if (late || !complete)
+    if (late)
       return refuse(res,
                     problem(408, "body-timeout", "The request body did not arrive in time",
                             "the whole body must arrive within " +
                                 std::to_string(config.body_deadline.count()) + " ms"),
                     "body_timeout");
+    if (!complete)  // the connection ended early, or the multipart framing is broken
+      return refuse(res,
+                    problem(400, "incomplete-body", "The request body is incomplete or malformed",
+                            "the body ended before its declared length, or its multipart framing is broken"),
+                    "body_incomplete");
     return true;
   }
 

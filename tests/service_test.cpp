@@ -117,6 +117,18 @@ TEST(Service, UnreadBodyOfARefusalIsNotParsedAsARequest) {
   EXPECT_EQ(responses, 1u) << raw;
 }
 
+TEST(Service, MalformedMultipartIsA400NotATimeout) {
+  TestServer server;
+  RawClient c(server.port());
+  ASSERT_TRUE(c.connected());
+  const std::string body = "--b\r\nno part headers here, and no closing boundary";
+  ASSERT_TRUE(c.send("POST /render HTTP/1.1\r\nHost: x\r\nContent-Type: multipart/form-data; boundary=b\r\nContent-Length: " +
+                     std::to_string(body.size()) + "\r\n\r\n" + body));
+  const std::string raw = c.receive_all();
+  EXPECT_EQ(status_of(raw), 400) << raw.substr(0, 300);
+  EXPECT_NE(raw.find("incomplete-body"), std::string::npos);
+}
+
 TEST(Service, ChunkedBodyIsCutAtTheCap) {
   rasterd::ServiceConfig config;
   config.max_body_bytes = 1000;
