@@ -91,7 +91,8 @@ int run_render(const std::vector<std::string>& args) {
     return 1;
   }
   try {
-    const raster::Scene scene = rasterd::scene_from_request(text, uploads, params, raster::Limits{});
+    const raster::Scene scene =
+        rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{});
     const raster::RenderPlan plan = raster::plan(scene);
     if (explain) {
       std::cout << raster::explain_json(plan) << "\n";

@@ -72,7 +72,7 @@ std::string default_scene_json(const Params& params) {
 
 }  // namespace
 
-raster::Scene scene_from_request(std::string_view body, const raster::Uploads& uploads, const Params& params,
+raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
                                  const raster::Limits& limits) {
   if (starts_like_json(body)) return raster::parse_scene(body, limits, uploads);
   if (looks_like_flattened_obj(body))
@@ -83,9 +83,8 @@ raster::Scene scene_from_request(std::string_view body, const raster::Uploads& u
   if (body.find_first_not_of(" \t\r\n") == std::string_view::npos && !uploads.count("model"))
     throw raster::SceneError(raster::ErrorKind::syntax,
                              "the request is empty: send a scene (JSON) or a model (OBJ)");
-  raster::Uploads with_model = uploads;
-  if (!body.empty()) with_model["model"] = std::string(body);
-  return raster::parse_scene(default_scene_json(params), limits, with_model);
+  if (!body.empty()) uploads["model"] = std::move(body);
+  return raster::parse_scene(default_scene_json(params), limits, uploads);
 }
 
 }  // namespace rasterd

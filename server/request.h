@@ -17,7 +17,8 @@ using Params = std::map<std::string, std::string, std::less<>>;
 /// `body` starting with '{' (after whitespace) is a scene; anything else is an OBJ model drawn with the
 /// default scene (512x512, camera framing the model) adjusted by `params`. A body that looks like an OBJ
 /// whose line breaks were stripped (curl -d) is refused with a hint. Throws raster::SceneError.
-raster::Scene scene_from_request(std::string_view body, const raster::Uploads& uploads, const Params& params,
+/// Takes the body and uploads by value: callers move them in, so a large model is never copied.
+raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
                                  const raster::Limits& limits);
 
 }  // namespace rasterd

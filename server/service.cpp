@@ -243,7 +243,8 @@ struct Service::State {
     const Clock::time_point t0 = Clock::now();
     try {
       const Params params(req.params.begin(), req.params.end());
-      const raster::Scene scene = scene_from_request(body, uploads, params, config.limits);
+      const raster::Scene scene =
+          scene_from_request(std::move(body), std::move(uploads), params, config.limits);
       const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
       if (req.get_param_value("explain") == "1") {
         res.set_content(raster::explain_json(plan), "application/json");
