@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <future>
+#include <sstream>
 #include <regex>
 #include <string>
 #include <thread>
@@ -205,6 +207,39 @@ TEST(Service, SaturatedServiceRefusesAtOnceAndStaysHealthy) {
   EXPECT_EQ(b->status, 200);
   const auto m = server.client().Get("/metrics");
   EXPECT_EQ(metric(m->body, "rasterd_rejected_total{reason=\"queue_full\"}"), 1);
+}
+
+// The kernel's count of connections dropped because a listen queue was full (/proc/net/netstat,
+// TcpExt ListenOverflows), or -1 where it cannot be read.
+long listen_overflows() {
+  std::ifstream in("/proc/net/netstat");
+  std::string names, values;
+  while (std::getline(in, names) && std::getline(in, values)) {
+    if (names.rfind("TcpExt:", 0) != 0) continue;
+    std::istringstream n(names), v(values);
+    std::string name, value;
+    while (n >> name && v >> value)
+      if (name == "ListenOverflows") return std::stol(value);
+  }
+  return -1;
+}
+
+// A burst of connections well past cpp-httplib's compiled-in listen backlog (5) and its thread count:
+// every one is answered, and none overflows the listen queue (with the compiled-in backlog, dropped SYNs
+// are retried by the kernel for seconds: measured 31 s for this burst instead of 0.07 s).
+TEST(Service, ABurstOfConnectionsIsQueuedNotReset) {
+  TestServer server;
+  const long overflows_before = listen_overflows();
+  std::vector<std::future<int>> burst;
+  for (int i = 0; i < 200; ++i)
+    burst.push_back(std::async(std::launch::async, [&] {
+      auto r = server.client().Get("/healthz");
+      return r ? r->status : -1;
+    }));
+  int ok = 0;
+  for (auto& f : burst) ok += f.get() == 200;
+  EXPECT_EQ(ok, 200);
+  if (overflows_before >= 0) EXPECT_EQ(listen_overflows(), overflows_before) << "the listen queue overflowed";
 }
 
 TEST(Service, RenderPastItsDeadlineStopsWithA503) {
