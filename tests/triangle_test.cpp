@@ -244,9 +244,9 @@ TEST(Triangle, InvariantUnderVertexOrderWindingAndTranslation) {
   }
 }
 
-// Huge coordinates are clipped to the guard band before fixed point: the visible part is exact
-// (compare with the same triangle cut by hand to image-sized coordinates) and no time is spent off-screen.
-TEST(Triangle, HugeCoordinatesClipToTheRightCoverage) {
+// Vertices beyond the fixed-point range take the exact wide-integer path (no floating-point clipping): the
+// visible part is exact (compare with the same half-plane drawn with image-sized coordinates).
+TEST(Triangle, HugeCoordinatesCoverExactlyTheRightPixels) {
   for (double big : {1e4, 1e6, 1e9, 1e30, 3.4e38}) {
     // A half-plane y >= x (below the diagonal), drawn as one giant triangle.
     auto img =
@@ -257,8 +257,8 @@ TEST(Triangle, HugeCoordinatesClipToTheRightCoverage) {
   }
 }
 
-TEST(Triangle, SharedEdgeCrossingTheGuardBandStaysWatertight) {
-  // Two triangles share the edge A-B, whose far end A lies way outside the guard band; C1 is above the
+TEST(Triangle, SharedEdgeReachingFarOutsideStaysWatertight) {
+  // Two triangles share the edge A-B, whose far end A lies way outside the fixed-point range; C1 is above the
   // edge's line and C2 below it, so they do not overlap and both reach into the image.
   const Point2 a{-5e7, -3e7}, b{70.3, 40.1}, c1{60.5, -10.2}, c2{-10.7, 70.3};
   SceneBuilder s(64, 64);

@@ -111,8 +111,6 @@ struct Scene {
   Light light;
   int samples = 1;  ///< "antialias": samples per pixel, 1 (aliased), 4, 8 or 16
 
-  bool has_3d() const { return !meshes.empty(); }
-
   /// Colour of vertex `k` (0-based within the primitive) of `p`, flat or per-vertex.
   Rgba8 vertex_color(const Primitive& p, std::uint32_t k) const {
     return colors[p.first_color + (p.per_vertex_color ? k : 0)];
