@@ -153,7 +153,10 @@ TEST(Antialias, ResolvedFanShowsNoSeam) {
   for (int k = 0; k < 1000; ++k) {
     const double t0 = 2 * M_PI * k / 1000, t1 = 2 * M_PI * (k + 1) / 1000;
     prims.push_back({{"type", "triangle"},
-                     {"points", {{cx, cy}, {cx + r * std::cos(t0), cy + r * std::sin(t0)}, {cx + r * std::cos(t1), cy + r * std::sin(t1)}}},
+                     {"points",
+                      {{cx, cy},
+                       {cx + r * std::cos(t0), cy + r * std::sin(t0)},
+                       {cx + r * std::cos(t1), cy + r * std::sin(t1)}}},
                      {"color", "#ffffff80"}});
   }
   const auto img = render_json({{"width", 128}, {"height", 128}, {"antialias", 8}, {"primitives", prims}});
@@ -161,7 +164,8 @@ TEST(Antialias, ResolvedFanShowsNoSeam) {
     for (int x = 0; x < 128; ++x) {
       const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
       if (dx * dx + dy * dy < 58 * 58) {
-        ASSERT_EQ(test::pixel(img, x, y).r, 128) << x << "," << y;  // every sample of every inner pixel hit once
+        ASSERT_EQ(test::pixel(img, x, y).r, 128)
+            << x << "," << y;  // every sample of every inner pixel hit once
       }
     }
 }

@@ -125,7 +125,8 @@ TEST(Robustness, FuzzFinding3DLineEndpointAt1e30) {
   auto doc = nlohmann::json::parse(text);
   doc["primitives"].erase(2);
   EXPECT_EQ(img.pixels, test::render(raster::parse_scene(doc.dump())).pixels);
-  EXPECT_GT(test::count_not(img, raster::Rgba8{0x18, 0x18, 0x20, 255}), 0) << "the small, distant cube is there";
+  EXPECT_GT(test::count_not(img, raster::Rgba8{0x18, 0x18, 0x20, 255}), 0)
+      << "the small, distant cube is there";
 }
 
 }  // namespace

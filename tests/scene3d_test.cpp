@@ -317,10 +317,13 @@ TEST(Scene3D, InvalidCamerasAreRejectedExtremeOnesRender) {
 // The fitted near plane follows the content near the eye, not the farthest vertex: with the eye inside the
 // content's box and one vertex 1e30 away, a near plane derived from `far` would clip everything.
 TEST(Scene3D, FittedNearPlaneIgnoresAFarOutlier) {
-  const json near_tri = {{"type", "triangle"}, {"points", {{-1, -1, -5}, {1, -1, -5}, {0, 1, -5}}}, {"color", "#ff0000"}};
-  const json outlier = {{"type", "triangle"}, {"points", {{0, 0, -1e30}, {0, 0, 10}, {1, 0, 10}}}, {"color", "#00ff00"}};
+  const json near_tri = {
+      {"type", "triangle"}, {"points", {{-1, -1, -5}, {1, -1, -5}, {0, 1, -5}}}, {"color", "#ff0000"}};
+  const json outlier = {
+      {"type", "triangle"}, {"points", {{0, 0, -1e30}, {0, 0, 10}, {1, 0, 10}}}, {"color", "#00ff00"}};
   const json cam = {{"eye", {0, 0, 0}}, {"target", {0, 0, -1}}};
-  const auto scene = raster::parse_scene(json{{"width", 32}, {"height", 32}, {"camera", cam}, {"primitives", {near_tri, outlier}}}.dump());
+  const auto scene = raster::parse_scene(
+      json{{"width", 32}, {"height", 32}, {"camera", cam}, {"primitives", {near_tri, outlier}}}.dump());
   const auto plan = raster::plan(scene);
   EXPECT_LT(plan.view.near, 5) << "near " << plan.view.near << ", far " << plan.view.far;
   EXPECT_EQ(test::pixel(test::render(scene), 16, 16), test::kRed);

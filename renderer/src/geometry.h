@@ -64,7 +64,7 @@ struct DepthTriangle {
 struct DrawOp {
   enum class Kind : std::uint8_t { triangles, huge_triangles, lines, depth_triangles } kind = Kind::triangles;
   PrimitivePlan mode;
-  std::uint32_t first = 0;       ///< index into the DrawList vector of that kind
+  std::uint32_t first = 0;  ///< index into the DrawList vector of that kind
   std::uint32_t count = 0;
 };
 

@@ -222,7 +222,8 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
         std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
         std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
       }
-      for (int k = 1; usable && k + 1 < n; ++k) list.depth_triangles.push_back({{dv[0], dv[k], dv[k + 1]}, back});
+      for (int k = 1; usable && k + 1 < n; ++k)
+        list.depth_triangles.push_back({{dv[0], dv[k], dv[k + 1]}, back});
     }
     op.count = static_cast<std::uint32_t>(list.depth_triangles.size()) - op.first;
     if (op.count > 0) list.ops.push_back(op);

@@ -183,7 +183,9 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   // With the eye inside the content's box, content may be arbitrarily close: take a thousandth of the
   // distance to the target, as viewers do (not a fraction of `far`, which an outlying vertex can make
   // astronomically large). Reversed float depth keeps precision for near/far ratios down to ~1e-38.
-  v.near = cam.has_near ? cam.near : (d_min > 0 ? d_min * 0.99 : std::max(length(v.target - v.eye) * 1e-3, v.far * 1e-30));
+  v.near = cam.has_near
+               ? cam.near
+               : (d_min > 0 ? d_min * 0.99 : std::max(length(v.target - v.eye) * 1e-3, v.far * 1e-30));
   if (!cam.has_far && v.near >= v.far) v.far = v.near * 2;
   if (!(v.near < v.far)) camera_error("/camera/near", "\"near\" must be less than \"far\"");
   v.height = cam.has_height ? cam.height : 2 * length(v.target - v.eye) * std::tan(half);

@@ -20,8 +20,10 @@ struct PrimitivePlan {
   bool depth = false;            ///< 3D: depth-tested and depth-written; 2D overlays are not
   bool lit = false;              ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
   bool compute_normals = false;  ///< smooth lighting on a mesh without normals: computed, angle-weighted
-  bool light_per_pixel = false;  ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
-  bool line_rectangles = false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
+  bool light_per_pixel =
+      false;  ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
+  bool line_rectangles =
+      false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
 };
 
 /// The camera after fitting, and the light: everything geometry needs to go from world to clip space.
