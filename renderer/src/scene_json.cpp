@@ -4,51 +4,31 @@
 #include <cmath>
 #include <initializer_list>
 #include <numbers>
+#include <span>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "raster/scene.h"
+#include "scene_json.h"
 #include "vecmath.h"
 
-namespace raster {
-namespace {
+namespace raster::scene_json {
 
-using nlohmann::json;
-
-// A JSON pointer that is spelled out only when an error needs it: a chain of parent links on the stack,
-// so reading a million points builds no strings. Keys must outlive the Path (they always do: literals,
-// or a key of the document being read).
-class Path {
- public:
-  Path() = default;  // the document root, pointer ""
-  Path(const Path& parent, const char* key) : parent_(&parent), key_(key) {}
-  Path(const Path& parent, const std::string& key) : parent_(&parent), key_(key.c_str()) {}
-  Path(const Path& parent, std::size_t index) : parent_(&parent), index_(index) {}
-
-  // RFC 6901: '~' and '/' inside a key are escaped.
-  std::string str() const {
-    if (!parent_) return "";
-    std::string out = parent_->str() + "/";
-    if (!key_) return out + std::to_string(index_);
-    for (const char* c = key_; *c; ++c) {
-      if (*c == '~')
-        out += "~0";
-      else if (*c == '/')
-        out += "~1";
-      else
-        out += *c;
-    }
-    return out;
+std::string Path::str() const {
+  if (!parent_) return "";
+  std::string out = parent_->str() + "/";
+  if (!key_) return out + std::to_string(index_);
+  for (const char* c = key_; *c; ++c) {
+    if (*c == '~')
+      out += "~0";
+    else if (*c == '/')
+      out += "~1";
+    else
+      out += *c;
   }
+  return out;
+}
 
- private:
-  const Path* parent_ = nullptr;
-  const char* key_ = nullptr;
-  std::size_t index_ = 0;
-};
-
-const Path kRoot;
+namespace {
 
 [[noreturn]] void fail(ErrorKind kind, const Path& at, const std::string& message) {
   throw SceneError(kind, message, ErrorLocation{at.str(), 0, 0});
@@ -142,11 +122,19 @@ bool read_bool(const json& v, const Path& pointer) {
   return v.get<bool>();
 }
 
+// Value of each byte as a hex digit, or -1: a table, because big scenes hold a colour per vertex.
+constexpr std::array<std::int8_t, 256> kHexDigit = [] {
+  std::array<std::int8_t, 256> t{};
+  for (int c = 0; c < 256; ++c)
+    t[c] = c >= '0' && c <= '9'   ? static_cast<std::int8_t>(c - '0')
+           : c >= 'a' && c <= 'f' ? static_cast<std::int8_t>(c - 'a' + 10)
+           : c >= 'A' && c <= 'F' ? static_cast<std::int8_t>(c - 'A' + 10)
+                                  : std::int8_t{-1};
+  return t;
+}();
+
 int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
+  return kHexDigit[static_cast<unsigned char>(c)];
 }
 
 std::uint8_t unit_to_byte(double v) {
@@ -164,24 +152,36 @@ std::string hex_of(const std::vector<double>& bytes) {
   return s;
 }
 
+}  // namespace
+
+bool parse_hex_color(std::string_view s, Rgba8& out) {
+  const std::size_t n = s.size();
+  if (n == 0 || s[0] != '#' || (n != 4 && n != 5 && n != 7 && n != 9)) return false;
+  int d[8] = {0, 0, 0, 0, 0, 0, 15, 15};  // absent alpha reads as "ff"
+  int bad = 0;
+  for (std::size_t i = 1; i < n; ++i) bad |= d[i - 1] = hex_digit(s[i]);
+  if (bad < 0) return false;
+  if (n <= 5) {  // "#rgb(a)": each digit doubled
+    out = {static_cast<std::uint8_t>(d[0] * 17), static_cast<std::uint8_t>(d[1] * 17),
+           static_cast<std::uint8_t>(d[2] * 17), static_cast<std::uint8_t>(n == 5 ? d[3] * 17 : 255)};
+    return true;
+  }
+  out = {static_cast<std::uint8_t>(d[0] * 16 + d[1]), static_cast<std::uint8_t>(d[2] * 16 + d[3]),
+         static_cast<std::uint8_t>(d[4] * 16 + d[5]), static_cast<std::uint8_t>(d[6] * 16 + d[7])};
+  return true;
+}
+
+namespace {
+
 // "#rgb", "#rgba", "#rrggbb", "#rrggbbaa", [r,g,b] or [r,g,b,a] with components in 0..1.
 Rgba8 read_color(const json& v, const Path& pointer) {
   if (v.is_string()) {
     const std::string& s = v.get_ref<const std::string&>();
-    const std::size_t n = s.size();
-    bool ok = n >= 1 && s[0] == '#' && (n == 4 || n == 5 || n == 7 || n == 9);
-    for (std::size_t i = 1; ok && i < n; ++i) ok = hex_digit(s[i]) >= 0;
-    if (!ok)
+    Rgba8 c;
+    if (!parse_hex_color(s, c))
       invalid(pointer,
               "expected a colour \"#rgb\", \"#rgba\", \"#rrggbb\" or \"#rrggbbaa\", got \"" + s + "\"");
-    std::array<std::uint8_t, 4> c{0, 0, 0, 255};
-    const bool short_form = n <= 5;
-    const std::size_t count = short_form ? n - 1 : (n - 1) / 2;
-    for (std::size_t k = 0; k < count; ++k) {
-      c[k] = short_form ? static_cast<std::uint8_t>(hex_digit(s[1 + k]) * 17)
-                        : static_cast<std::uint8_t>(hex_digit(s[1 + 2 * k]) * 16 + hex_digit(s[2 + 2 * k]));
-    }
-    return {c[0], c[1], c[2], c[3]};
+    return c;
   }
   if (v.is_array()) {
     if (v.size() != 3 && v.size() != 4)
@@ -241,8 +241,9 @@ const char* kind_name(PrimitiveKind k) {
   return "?";
 }
 
-// Colours of a primitive: "color" (flat), "colors" (one per point), or `fallback`; appended to `out`.
-// Returns true when per point.
+}  // namespace
+
+// Colours of a primitive: "color" (flat), "colors" (one per point), or `fallback`.
 bool read_colors(const json& v, const Path& pointer, std::size_t n, Rgba8 fallback, std::vector<Rgba8>& out) {
   auto color_it = v.find("color");
   auto colors_it = v.find("colors");
@@ -258,6 +259,8 @@ bool read_colors(const json& v, const Path& pointer, std::size_t n, Rgba8 fallba
   out.push_back(color_it != v.end() ? read_color(*color_it, Path(pointer, "color")) : fallback);
   return false;
 }
+
+namespace {
 
 // {"translate": [x,y,z], "rotate": [deg x, deg y, deg z], "scale": s | [sx,sy,sz]} -> T * Rz * Ry * Rx * S
 // (scale first, then rotate about x, y, z, then translate), or {"matrix": [16 numbers, row-major]}.
@@ -304,7 +307,7 @@ Mat4 read_transform(const json& v, const Path& pointer) {
   return m;
 }
 
-constexpr Rgba8 kMeshGrey{204, 204, 204, 255};  // the default colour of meshes and models: light grey
+}  // namespace
 
 // Options shared by "mesh" and "obj": shading, wireframe, cull, transform.
 void read_mesh_options(const json& v, const Path& pointer, Mesh& mesh) {
@@ -333,6 +336,8 @@ void read_mesh_options(const json& v, const Path& pointer, Mesh& mesh) {
   if (auto it = v.find("transform"); it != v.end())
     mesh.transform = read_transform(*it, Path(pointer, "transform"));
 }
+
+namespace {
 
 // positions: [[x,y,z], ...] or [x,y,z, x,y,z, ...]; likewise normals.
 std::vector<Vec3> read_vec3_list(const json& v, const Path& pointer) {
@@ -469,20 +474,53 @@ Mesh read_obj(const json& v, const Path& pointer, const Limits& limits, const Up
 }
 
 // A triangle, line or polyline whose points are [x, y, z]: world space, through the camera, unlit.
-Mesh mesh_of_3d_primitive(PrimitiveKind kind, const std::vector<Vec3>& points, std::vector<Rgba8> colors,
-                          bool fill, bool closed) {
+Mesh mesh_of_3d_primitive(const Primitive& p, std::span<const double> coords, std::span<const Rgba8> colors) {
   Mesh mesh;
-  mesh.positions = points;
-  mesh.colors = std::move(colors);
+  for (std::size_t k = 0; k + 2 < coords.size(); k += 3)
+    mesh.positions.push_back({coords[k], coords[k + 1], coords[k + 2]});
+  mesh.colors.assign(colors.begin(), colors.end());
   mesh.shading = Shading::unlit;
-  const auto n = static_cast<std::uint32_t>(points.size());
-  if (kind == PrimitiveKind::triangle && fill) {
+  const auto n = static_cast<std::uint32_t>(mesh.positions.size());
+  if (p.kind == PrimitiveKind::triangle && p.fill) {
     mesh.triangles.push_back({0, 1, 2});
   } else {
     for (std::uint32_t i = 0; i + 1 < n; ++i) mesh.segments.push_back({i, i + 1});
-    if ((closed || kind == PrimitiveKind::triangle) && n >= 3) mesh.segments.push_back({n - 1, 0});
+    if ((p.closed || p.kind == PrimitiveKind::triangle) && n >= 3) mesh.segments.push_back({n - 1, 0});
   }
   return mesh;
+}
+
+}  // namespace
+
+void add_drawn_primitive(Scene& scene, Primitive p, std::size_t dims, std::span<const double> coords,
+                         std::span<const Rgba8> colors, bool per_vertex) {
+  if (dims == 3) {
+    Mesh mesh = mesh_of_3d_primitive(p, coords, colors);
+    p.kind = PrimitiveKind::mesh;
+    p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
+    scene.meshes.push_back(std::move(mesh));
+    scene.primitives.push_back(p);
+    return;
+  }
+  p.first_point = static_cast<std::uint32_t>(scene.points.size());
+  p.point_count = static_cast<std::uint32_t>(coords.size() / 2);
+  for (std::size_t k = 0; k + 1 < coords.size(); k += 2) scene.points.push_back({coords[k], coords[k + 1]});
+  p.first_color = static_cast<std::uint32_t>(scene.colors.size());
+  p.per_vertex_color = per_vertex;
+  scene.colors.insert(scene.colors.end(), colors.begin(), colors.end());
+  scene.primitives.push_back(p);
+}
+
+void read_line_options(const json& v, const Path& pointer, Primitive& p) {
+  if (auto it = v.find("fill"); it != v.end()) p.fill = read_bool(*it, Path(pointer, "fill"));
+  if (auto it = v.find("closed"); it != v.end()) p.closed = read_bool(*it, Path(pointer, "closed"));
+  if (auto it = v.find("width"); it != v.end()) {
+    const double w = read_number(*it, Path(pointer, "width"));
+    if (!(w > 0 && w <= 4096))
+      invalid(Path(pointer, "width"),
+              "line \"width\" is in pixels, more than 0 and at most 4096; got " + it->dump());
+    p.width = static_cast<float>(w);
+  }
 }
 
 void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limits& limits,
@@ -533,46 +571,23 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
     invalid(points_pointer, "a polyline has at least 2 points, got " + std::to_string(n));
   if (scene.points.size() + n > UINT32_MAX)
     fail(ErrorKind::limit, points_pointer, "too many points in the scene");
-  if (auto it = v.find("fill"); it != v.end()) p.fill = read_bool(*it, Path(pointer, "fill"));
-  if (auto it = v.find("closed"); it != v.end()) p.closed = read_bool(*it, Path(pointer, "closed"));
-  if (auto it = v.find("width"); it != v.end()) {
-    const double w = read_number(*it, Path(pointer, "width"));
-    if (!(w > 0 && w <= 4096))
-      invalid(Path(pointer, "width"),
-              "line \"width\" is in pixels, more than 0 and at most 4096; got " + it->dump());
-    p.width = static_cast<float>(w);
-  }
+  read_line_options(v, pointer, p);
 
   // The first point decides: [x, y] is image space, [x, y, z] world space; all points must agree.
   const json& first = (*points_it)[0];
   const std::size_t dims = first.is_array() && first.size() == 3 ? 3 : 2;
-  if (dims == 3) {
-    std::vector<Vec3> pts;
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto q = read_point((*points_it)[k], Path(points_pointer, k), 3);
-      pts.push_back({q[0], q[1], q[2]});
-    }
-    std::vector<Rgba8> colors;
-    read_colors(v, pointer, n, Rgba8{255, 255, 255, 255}, colors);
-    p.kind = PrimitiveKind::mesh;
-    p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
-    scene.meshes.push_back(mesh_of_3d_primitive(type == "triangle" ? PrimitiveKind::triangle
-                                                : type == "line"   ? PrimitiveKind::line
-                                                                   : PrimitiveKind::polyline,
-                                                pts, std::move(colors), p.fill, p.closed));
-    scene.primitives.push_back(p);
-    return;
-  }
-  p.first_point = static_cast<std::uint32_t>(scene.points.size());
-  p.point_count = static_cast<std::uint32_t>(n);
+  std::vector<double> coords;
+  coords.reserve(n * dims);
   for (std::size_t k = 0; k < n; ++k) {
-    const auto q = read_point((*points_it)[k], Path(points_pointer, k), 2);
-    scene.points.push_back({q[0], q[1]});
+    const auto q = read_point((*points_it)[k], Path(points_pointer, k), dims);
+    coords.insert(coords.end(), q.begin(), q.begin() + static_cast<std::ptrdiff_t>(dims));
   }
-  p.first_color = static_cast<std::uint32_t>(scene.colors.size());
-  p.per_vertex_color = read_colors(v, pointer, n, Rgba8{255, 255, 255, 255}, scene.colors);
-  scene.primitives.push_back(p);
+  std::vector<Rgba8> colors;
+  const bool per_vertex = read_colors(v, pointer, n, Rgba8{255, 255, 255, 255}, colors);
+  add_drawn_primitive(scene, p, dims, coords, colors, per_vertex);
 }
+
+namespace {
 
 Camera read_camera(const json& v) {
   const Path pointer(kRoot, "camera");
@@ -704,6 +719,8 @@ class BoundedDomBuilder {
   int depth_ = 0;
 };
 
+}  // namespace
+
 json parse_document(std::string_view text, int max_depth) {
   if (text.empty())
     throw SceneError(ErrorKind::syntax, "the scene is empty (0 bytes); expected a JSON object");
@@ -713,14 +730,9 @@ json parse_document(std::string_view text, int max_depth) {
   return doc;
 }
 
-}  // namespace
-
-Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
-  const json doc = parse_document(json_text, limits.max_json_depth);
+void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
   if (!doc.is_object()) invalid(kRoot, std::string("a scene is a JSON object, got ") + type_name(doc));
   check_keys(doc, kRoot, {"width", "height", "background", "antialias", "primitives", "camera", "light"});
-
-  Scene scene;
   auto read_side = [&](const char* key, int max_side) {
     auto it = doc.find(key);
     const Path pointer(kRoot, key);
@@ -751,6 +763,14 @@ Scene parse_scene(std::string_view json_text, const Limits& limits, const Upload
   if (auto it = doc.find("background"); it != doc.end())
     scene.background = read_color(*it, Path(kRoot, "background"));
 
+  if (auto it = doc.find("camera"); it != doc.end()) scene.camera = read_camera(*it);
+  if (auto it = doc.find("light"); it != doc.end()) scene.light = read_light(*it);
+}
+
+Scene parse_scene_dom(std::string_view text, const Limits& limits, const Uploads& uploads) {
+  const json doc = parse_document(text, limits.max_json_depth);
+  Scene scene;
+  read_scene_fields(doc, scene, limits);
   if (auto it = doc.find("primitives"); it != doc.end()) {
     const Path primitives(kRoot, "primitives");
     if (!it->is_array()) invalid(primitives, std::string("expected an array, got ") + type_name(*it));
@@ -762,9 +782,16 @@ Scene parse_scene(std::string_view json_text, const Limits& limits, const Upload
     for (std::size_t i = 0; i < it->size(); ++i)
       read_primitive((*it)[i], Path(primitives, i), scene, limits, uploads);
   }
-  if (auto it = doc.find("camera"); it != doc.end()) scene.camera = read_camera(*it);
-  if (auto it = doc.find("light"); it != doc.end()) scene.light = read_light(*it);
   return scene;
+}
+
+}  // namespace raster::scene_json
+
+namespace raster {
+
+Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
+  if (auto scene = scene_json::parse_scene_fast(json_text, limits, uploads)) return std::move(*scene);
+  return scene_json::parse_scene_dom(json_text, limits, uploads);
 }
 
 }  // namespace raster

@@ -25,11 +25,13 @@ struct Rgba8 {
 /// Pixel (i, j) is the square [i, i+1) x [j, j+1); its centre is (i + 0.5, j + 0.5).
 struct Point2 {
   double x = 0, y = 0;
+  friend bool operator==(const Point2&, const Point2&) = default;
 };
 
 /// A point or direction in world space: right-handed, y up; the default camera looks toward -z.
 struct Vec3 {
   double x = 0, y = 0, z = 0;
+  friend bool operator==(const Vec3&, const Vec3&) = default;
 };
 
 /// A 4x4 matrix, row-major, acting on column vectors: p' = M p.
@@ -37,6 +39,7 @@ struct Mat4 {
   std::array<double, 16> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   double operator()(int row, int col) const { return m[row * 4 + col]; }
   double& operator()(int row, int col) { return m[row * 4 + col]; }
+  friend bool operator==(const Mat4&, const Mat4&) = default;
 };
 
 /// How a mesh is lit: "flat" one normal per face, "smooth" normals interpolated per pixel, "unlit" the
@@ -57,6 +60,7 @@ struct Mesh {
   Cull cull = Cull::none;
   bool wireframe = false;  ///< draw the triangles' edges (each once) instead of filling them
   Mat4 transform;          ///< model -> world
+  friend bool operator==(const Mesh&, const Mesh&) = default;
 };
 
 enum class Projection : std::uint8_t { perspective, orthographic };
@@ -73,6 +77,7 @@ struct Camera {
   double far = 0;       ///< > near
   double height =
       0;  ///< orthographic: world units visible vertically; default: what the fov sees at the target
+  friend bool operator==(const Camera&, const Camera&) = default;
 };
 
 /// One directional light plus ambient. Lambert: ambient + (1 - ambient) * max(0, n . -direction).
@@ -80,6 +85,7 @@ struct Light {
   bool headlight = true;     ///< true: the light travels along the view direction (from the eye)
   Vec3 direction{0, 0, -1};  ///< world direction the light travels (from the light toward the scene)
   double ambient = 0.2;      ///< in [0, 1]
+  friend bool operator==(const Light&, const Light&) = default;
 };
 
 enum class PrimitiveKind : std::uint8_t { triangle, line, polyline, mesh };
@@ -96,6 +102,7 @@ struct Primitive {
   bool closed = false;            ///< polylines: also join the last point to the first
   float width = 1;         ///< lines, polylines, outlines: pixels; != 1 (or anti-aliasing) draws rectangles
   std::uint32_t mesh = 0;  ///< mesh (also 3D triangles, lines and OBJ models): index into Scene::meshes
+  friend bool operator==(const Primitive&, const Primitive&) = default;
 };
 
 /// The image dimensions, their background and the primitives drawn over it in array order.
@@ -110,6 +117,8 @@ struct Scene {
   Camera camera;                      ///< used only when the scene has 3D content
   Light light;
   int samples = 1;  ///< "antialias": samples per pixel, 1 (aliased), 4, 8 or 16
+  /// Field by field; the two scene readers are tested to agree by it.
+  friend bool operator==(const Scene&, const Scene&) = default;
 
   /// Colour of vertex `k` (0-based within the primitive) of `p`, flat or per-vertex.
   Rgba8 vertex_color(const Primitive& p, std::uint32_t k) const {

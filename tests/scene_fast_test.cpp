@@ -1,0 +1,343 @@
+// The streaming scene reader against the DOM reader, which defines the format: on every document the
+// streaming reader either gives up or returns exactly the DOM reader's scene, and it never accepts what
+// the DOM reader rejects. Documents are generated from a seed and then mutated byte by byte.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "scene_json.h"
+
+namespace {
+
+using raster::Scene;
+using raster::scene_json::FastStats;
+using raster::scene_json::parse_scene_dom;
+using raster::scene_json::parse_scene_fast;
+
+std::optional<Scene> dom_or_nothing(const std::string& text, const raster::Limits& limits = {}) {
+  try {
+    return parse_scene_dom(text, limits, {});
+  } catch (const raster::SceneError&) {
+    return std::nullopt;
+  }
+}
+
+// Scene equality with coordinates compared bit for bit: == holds -0.0 equal to 0.0.
+bool same(const Scene& a, const Scene& b) {
+  if (!(a == b)) return false;
+  for (std::size_t i = 0; i < a.points.size(); ++i)
+    if (std::bit_cast<std::uint64_t>(a.points[i].x) != std::bit_cast<std::uint64_t>(b.points[i].x) ||
+        std::bit_cast<std::uint64_t>(a.points[i].y) != std::bit_cast<std::uint64_t>(b.points[i].y))
+      return false;
+  return true;
+}
+
+// A random scene document in random layout. Counts the primitives the streaming reader should read
+// itself (the rest it hands to the DOM reader: OBJ models, escaped keys, colours written as arrays).
+class DocumentGenerator {
+ public:
+  explicit DocumentGenerator(std::uint32_t seed) : rng_(seed) {}
+
+  std::string document(std::size_t* streamable) {
+    *streamable = 0;
+    std::vector<std::string> fields = {member("width", integer(1, 300)), member("height", integer(1, 300))};
+    if (chance(0.3)) fields.push_back(member("background", color()));
+    if (chance(0.2)) fields.push_back(member("antialias", pick({"1", "4", "8.0", "16"})));
+    if (chance(0.2))
+      fields.push_back(member("camera", object({member("eye", vec3()), member("fov", integer(10, 90))})));
+    if (chance(0.2)) fields.push_back(member("light", object({member("ambient", "0.25")})));
+    std::vector<std::string> primitives;
+    const int n = integer_value(0, 12);
+    for (int i = 0; i < n; ++i) primitives.push_back(primitive(streamable));
+    fields.push_back(member("primitives", array(primitives)));
+    return space() + object(fields) + space();
+  }
+
+ private:
+  std::string primitive(std::size_t* streamable) {
+    bool streams = true;
+    std::vector<std::string> fields;
+    const int kind = integer_value(0, 4);
+    if (kind == 4) {  // an OBJ model: always the DOM reader's
+      fields = {member("type", "\"obj\""), member("data", "\"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n\"")};
+      streams = false;
+    } else if (kind == 3) {  // a mesh
+      const int positions = integer_value(3, 6);
+      std::vector<std::string> p, idx;
+      const bool flat = chance(0.5);
+      for (int k = 0; k < positions; ++k)
+        p.push_back(flat ? coordinate() + "," + coordinate() + "," + coordinate() : vec3());
+      for (int k = 0; k < integer_value(0, 4); ++k) {
+        const std::string a = std::to_string(integer_value(0, positions - 1)),
+                          b = std::to_string(integer_value(0, positions - 1)),
+                          c = std::to_string(integer_value(0, positions - 1));
+        idx.push_back(flat ? a + "," + b + "," + c : array({a, b, c}));
+      }
+      fields = {member("type", "\"mesh\""), member("positions", array(p)), member("indices", array(idx))};
+      if (chance(0.3))
+        fields.push_back(member("normals", array(std::vector<std::string>(positions, "[0,0,1]"))));
+      if (chance(0.3)) fields.push_back(member("color", color()));
+      if (chance(0.3)) fields.push_back(member("shading", pick({"\"flat\"", "\"smooth\"", "\"unlit\""})));
+      if (chance(0.2)) fields.push_back(member("cull", "\"back\""));
+      if (chance(0.2)) fields.push_back(member("wireframe", "true"));
+      if (chance(0.2)) fields.push_back(member("transform", object({member("rotate", "[0, 90, 0]")})));
+    } else {
+      const char* type = kind == 0 ? "triangle" : kind == 1 ? "line" : "polyline";
+      const int n = kind == 0 ? 3 : kind == 1 ? 2 : integer_value(2, 5);
+      const bool world = chance(0.15);
+      std::vector<std::string> points;
+      for (int k = 0; k < n; ++k) points.push_back(world ? vec3() : array({coordinate(), coordinate()}));
+      fields = {member(chance(0.05) ? "\\u0074ype" : "type", std::string("\"") + type + "\""),
+                member("points", array(points))};
+      if (fields[0].find('\\') != std::string::npos) streams = false;
+      const double colours = uniform();
+      if (colours < 0.4) {
+        std::vector<std::string> list;
+        const bool as_arrays = chance(0.1);
+        for (int k = 0; k < n; ++k) list.push_back(as_arrays ? "[0.5, 0, 1]" : hex_color());
+        if (as_arrays) streams = false;
+        fields.push_back(member("colors", array(list)));
+      } else if (colours < 0.8) {
+        fields.push_back(member("color", color()));
+      }
+      if (kind == 0 && chance(0.3)) fields.push_back(member("fill", pick({"true", "false"})));
+      if (kind == 2 && chance(0.3)) fields.push_back(member("closed", pick({"true", "false"})));
+      if (chance(0.2)) fields.push_back(member("width", pick({"1", "2.5", "0.5", "4096"})));
+    }
+    std::shuffle(fields.begin(), fields.end(), rng_);
+    *streamable += streams;
+    return object(fields);
+  }
+
+  std::string coordinate() {
+    switch (integer_value(0, 7)) {
+      case 0:
+        return std::to_string(integer_value(-50, 300));
+      case 1:
+        return pick({"-0", "-0.0", "0", "0.0", "0e0", "-0E-0"});
+      case 2:
+        return std::to_string(integer_value(-50, 300)) + "." + std::to_string(integer_value(0, 999999));
+      case 3:
+        return pick({"1e2", "1.5E+2", "25e-1", "-3.25e1", "1e-300", "3.4e38", "-3.4e38", "1e-320"});
+      case 4:
+        return pick({"9007199254740993", "18446744073709551615", "18446744073709551616",
+                     "123456789012345678901234567890", "0.1000000000000000055511151231257827",
+                     "100.00000000000000000000000000001", "0.30000000000000004"});
+      default: {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.*f", integer_value(0, 6), uniform() * 300 - 20);
+        return buffer;
+      }
+    }
+  }
+  std::string vec3() { return array({coordinate(), coordinate(), coordinate()}); }
+  std::string hex_color() {
+    static const char* digits = "0123456789abcdefABCDEF";
+    const int length = pick_value<int>({3, 4, 6, 8});
+    std::string s = "\"#";
+    for (int k = 0; k < length; ++k) s += digits[integer_value(0, 21)];
+    return s + "\"";
+  }
+  std::string color() { return chance(0.8) ? hex_color() : pick({"[1, 0.5, 0]", "[0, 0, 0, 0.5]"}); }
+
+  std::string space() { return pick({"", "", " ", "\n", "\t", "\r\n  "}); }
+  std::string member(const std::string& key, const std::string& value) {
+    return space() + "\"" + key + "\"" + space() + ":" + space() + value + space();
+  }
+  std::string object(const std::vector<std::string>& members) { return wrap('{', join(members), '}'); }
+  std::string array(const std::vector<std::string>& values) {
+    std::vector<std::string> spaced;
+    for (const auto& v : values) spaced.push_back(space() + v + space());
+    return wrap('[', join(spaced), ']');
+  }
+  // Appending (not operator+ on literals, where GCC 12 warns falsely with -Wrestrict).
+  static std::string wrap(char open, const std::string& inside, char close) {
+    std::string out(1, open);
+    out += inside;
+    out += close;
+    return out;
+  }
+  static std::string join(const std::vector<std::string>& parts) {
+    std::string out;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      if (i) out += ',';
+      out += parts[i];
+    }
+    return out;
+  }
+
+  bool chance(double p) { return uniform() < p; }
+  double uniform() { return std::uniform_real_distribution<double>(0, 1)(rng_); }
+  int integer_value(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  std::string integer(int lo, int hi) { return std::to_string(integer_value(lo, hi)); }
+  std::string pick(std::initializer_list<const char*> options) { return pick_value(options); }
+  template <class T>
+  T pick_value(std::initializer_list<T> options) {
+    return options.begin()[integer_value(0, static_cast<int>(options.size()) - 1)];
+  }
+
+  std::mt19937 rng_;
+};
+
+TEST(SceneFastPath, ReadsGeneratedScenesExactlyAsTheDomReader) {
+  DocumentGenerator generator(20261121);
+  std::size_t streamed_total = 0, handed_total = 0;
+  for (int i = 0; i < 2000; ++i) {
+    std::size_t streamable = 0;
+    const std::string text = generator.document(&streamable);
+    const auto dom = dom_or_nothing(text);
+    FastStats stats;
+    const auto fast = parse_scene_fast(text, {}, {}, &stats);
+    if (!dom) {  // only out-of-range picks (3.4e38 is within, so nothing here should be rejected)
+      ADD_FAILURE() << "the generator wrote a document the DOM reader rejects: " << text;
+      continue;
+    }
+    ASSERT_TRUE(fast.has_value()) << text;
+    ASSERT_TRUE(same(*fast, *dom)) << text;
+    ASSERT_EQ(stats.streamed, streamable) << text;
+    ASSERT_EQ(stats.streamed + stats.handed, dom->primitives.size()) << text;
+    streamed_total += stats.streamed, handed_total += stats.handed;
+  }
+  EXPECT_GT(streamed_total, 5000u);
+  EXPECT_GT(handed_total, 500u);
+}
+
+TEST(SceneFastPath, NeverAcceptsWhatTheDomReaderRejectsNorReadsItDifferently) {
+  DocumentGenerator generator(7);
+  std::mt19937 rng(11);
+  const std::string alphabet = "{}[],:\"0123456789-+.eE \\#aftnul\x01\xc3";
+  int accepted = 0, rejected = 0, fast_gave_up_on_valid = 0;
+  for (int i = 0; i < 1500; ++i) {
+    std::size_t unused = 0;
+    std::string text = generator.document(&unused);
+    for (int m = std::uniform_int_distribution<int>(1, 3)(rng); m > 0 && !text.empty(); --m) {
+      const std::size_t at = std::uniform_int_distribution<std::size_t>(0, text.size() - 1)(rng);
+      const char c = alphabet[std::uniform_int_distribution<std::size_t>(0, alphabet.size() - 1)(rng)];
+      switch (std::uniform_int_distribution<int>(0, 2)(rng)) {
+        case 0:
+          text.erase(at, 1);
+          break;
+        case 1:
+          text.insert(at, 1, c);
+          break;
+        default:
+          text[at] = c;
+      }
+    }
+    const auto dom = dom_or_nothing(text);
+    const auto fast = parse_scene_fast(text, {}, {});
+    if (fast) {
+      ASSERT_TRUE(dom.has_value()) << "accepted what the DOM reader rejects: " << text;
+      ASSERT_TRUE(same(*fast, *dom)) << "read differently: " << text;
+    }
+    dom ? ++accepted : ++rejected;
+    fast_gave_up_on_valid += dom && !fast;
+  }
+  // Both outcomes occur, so the property is exercised on each side.
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(rejected, 500);
+  EXPECT_LT(fast_gave_up_on_valid, accepted);
+}
+
+TEST(SceneFastPath, NumbersReadBitForBitAsTheDomReaderReadsThem) {
+  for (const char* number : {"0",
+                             "-0",
+                             "-0.0",
+                             "0e5",
+                             "-0e0",
+                             "7",
+                             "-7",
+                             "0.1",
+                             "0.30000000000000004",
+                             "1e5",
+                             "1E+5",
+                             "2.5e-3",
+                             "9007199254740992",
+                             "9007199254740993",
+                             "9223372036854775807",
+                             "9223372036854775808",
+                             "18446744073709551615",
+                             "18446744073709551616",
+                             "-9223372036854775808",
+                             "-9223372036854775809",
+                             "123456789012345678901234567890",
+                             "1.00000000000000011102230246251565404236316680908203125",
+                             "0.0000000000000000000000001",
+                             "1234567890.123456789",
+                             "3.4028236692093846e38",
+                             "4.9e-324",
+                             "2.2250738585072014e-308",
+                             "17976931348623157e292"}) {
+    const std::string text =
+        std::string(R"({"width":1,"height":1,"primitives":[{"type":"line","points":[[)") + number +
+        ",1],[0,0]]}]}";
+    const auto dom = dom_or_nothing(text);
+    const auto fast = parse_scene_fast(text, {}, {});
+    ASSERT_EQ(fast.has_value(), dom.has_value()) << number;
+    if (dom) {
+      EXPECT_TRUE(same(*fast, *dom)) << number;
+    }
+  }
+}
+
+TEST(SceneFastPath, EveryFieldOnEveryKindIsJudgedAsTheDomReaderJudgesIt) {
+  const std::vector<std::pair<std::string, std::string>> kinds = {
+      {"triangle", R"("points":[[0,0],[4,0],[0,4]])"},
+      {"line", R"("points":[[0,0],[4,4]])"},
+      {"polyline", R"("points":[[0,0],[4,4],[8,0]])"},
+      {"triangle", R"("points":[[0,0,0],[1,0,0],[0,1,0]])"},
+      {"mesh", R"("positions":[0,0,0,1,0,0,0,1,0],"indices":[0,1,2])"}};
+  const std::vector<std::string> fields = {R"("points":[[1,1],[2,2]])",
+                                           R"("color":"#f00")",
+                                           R"("color":[1,0,0])",
+                                           R"("colors":["#f00","#0f0","#00f"])",
+                                           R"("fill":false)",
+                                           R"("closed":true)",
+                                           R"("width":2)",
+                                           R"("positions":[0,0,0])",
+                                           R"("indices":[0,0,0])",
+                                           R"("normals":[[0,0,1],[0,0,1],[0,0,1]])",
+                                           R"("shading":"flat")",
+                                           R"("cull":"back")",
+                                           R"("wireframe":true)",
+                                           R"("transform":{"scale":2})",
+                                           R"("data":"v 0 0 0")",
+                                           R"("colr":"#fff")",
+                                           R"("width":0)",
+                                           R"("fill":1)"};
+  int accepted = 0;
+  for (const auto& [type, base] : kinds) {
+    for (const auto& field : fields) {
+      const std::string text =
+          R"({"width":8,"height":8,"primitives":[{"type":")" + type + "\"," + base + "," + field + "}]}";
+      const auto dom = dom_or_nothing(text);
+      const auto fast = parse_scene_fast(text, {}, {});
+      // Plain text: the streaming reader never needs to give up on a document the DOM reader reads.
+      ASSERT_EQ(fast.has_value(), dom.has_value()) << text;
+      if (dom) {
+        ASSERT_TRUE(same(*fast, *dom)) << text;
+        ++accepted;
+      }
+    }
+  }
+  EXPECT_GT(accepted, 20);
+}
+
+TEST(SceneFastPath, GivesUpOnTheDepthLimitAndOnDuplicateKeys) {
+  const std::string scene = R"({"width":2,"height":2,"primitives":[{"type":"line","points":[[0,0],[1,1]]}]})";
+  raster::Limits shallow;
+  shallow.max_json_depth = 4;  // the points of a line are at depth 5
+  EXPECT_FALSE(parse_scene_fast(scene, shallow, {}).has_value());
+  EXPECT_FALSE(dom_or_nothing(scene, shallow).has_value());
+  // nlohmann keeps the last of repeated keys; the streaming reader leaves such documents to it.
+  const std::string repeated = R"({"width":2,"height":2,"width":3})";
+  EXPECT_FALSE(parse_scene_fast(repeated, {}, {}).has_value());
+  EXPECT_EQ(raster::parse_scene(repeated).width, 3);
+}
+
+}  // namespace
