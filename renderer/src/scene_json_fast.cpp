@@ -155,31 +155,35 @@ class Cursor {
   }
 
   // The text of the next value, found by matching brackets outside strings; nlohmann checks the rest.
+  // A number or literal ends at the first byte that cannot be part of one: nlohmann takes a NUL byte for
+  // the end of its input, so "3\0 4" must not reach it as one value.
   template <class E>
   std::string_view value_text() {
     space();
     const char* start = p_;
+    if (p_ == end_) throw E{};
+    if (*p_ != '"' && *p_ != '[' && *p_ != '{') {
+      while (p_ < end_ && (is_digit(*p_) || (*p_ >= 'a' && *p_ <= 'z') || *p_ == '-' || *p_ == '+' ||
+                           *p_ == '.' || *p_ == 'E'))
+        ++p_;
+      if (p_ == start) throw E{};
+      return {start, static_cast<std::size_t>(p_ - start)};
+    }
     int depth = 0;
-    while (p_ < end_) {
+    do {
       const char c = *p_;
       if (c == '"') {
         for (++p_; p_ < end_ && *p_ != '"'; ++p_)
           if (*p_ == '\\' && p_ + 1 < end_) ++p_;
-        if (p_ >= end_) throw E{};
-        ++p_;
+        if (p_ == end_) throw E{};
       } else if (c == '[' || c == '{') {
-        ++depth, ++p_;
+        ++depth;
       } else if (c == ']' || c == '}') {
-        if (depth == 0) break;
-        --depth, ++p_;
-      } else if (depth == 0 && (c == ',' || c == ' ' || c == '\n' || c == '\r' || c == '\t')) {
-        break;
-      } else {
-        ++p_;
+        --depth;
       }
-      if (depth == 0 && (c == '"' || c == ']' || c == '}')) break;
-    }
-    if (depth != 0 || p_ == start) throw E{};
+      ++p_;
+    } while (depth > 0 && p_ < end_);
+    if (depth != 0) throw E{};
     return {start, static_cast<std::size_t>(p_ - start)};
   }
 
