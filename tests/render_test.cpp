@@ -1,6 +1,8 @@
 // Whole renders: determinism across thread counts, PNG round trips, and the examples as golden images.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <random>
 
@@ -53,6 +55,49 @@ TEST(Render, PngRoundTripsEveryFormat) {
     EXPECT_EQ(d.height, 48);
     EXPECT_EQ(d.channels, img.channels());
     EXPECT_EQ(d.pixels, img.pixels);
+  }
+}
+
+// CRC-32 of PNG (ISO 3309), bit by bit: an independent reference (stb_image's decoder skips CRCs).
+std::uint32_t reference_crc32(const std::uint8_t* data, std::size_t size) {
+  std::uint32_t crc = 0xffffffffu;
+  for (std::size_t i = 0; i < size; ++i) {
+    crc ^= data[i];
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+TEST(Render, PngContainerIsWellFormed) {
+  auto be32 = [](const std::uint8_t* p) {
+    return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | p[3];
+  };
+  for (raster::Rgba8 bg :
+       {raster::Rgba8{0, 0, 0, 255}, raster::Rgba8{0, 0, 0, 0}, raster::Rgba8{9, 9, 9, 255}}) {
+    auto scene = random_scene(37, 21, 12, 5);
+    if (bg.r == 9) scene.primitives.clear();  // grey: nothing but the background
+    scene.background = bg;
+    const auto plan = raster::plan(scene);
+    const auto png = raster::encode_png(raster::render(scene, plan), plan.png);
+    const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    ASSERT_GT(png.size(), 8u);
+    ASSERT_TRUE(std::equal(signature, signature + 8, png.begin()));
+    std::vector<std::string> types;
+    for (std::size_t at = 8; at < png.size();) {
+      ASSERT_LE(at + 12, png.size());
+      const std::uint32_t length = be32(&png[at]);
+      ASSERT_LE(at + 12 + length, png.size());
+      types.emplace_back(reinterpret_cast<const char*>(&png[at + 4]), 4);
+      EXPECT_EQ(be32(&png[at + 8 + length]), reference_crc32(&png[at + 4], length + 4)) << types.back();
+      if (types.back() == "IHDR") {
+        EXPECT_EQ(be32(&png[at + 8]), 37u);
+        EXPECT_EQ(be32(&png[at + 12]), 21u);
+        EXPECT_EQ(png[at + 16], 8);  // bits per channel
+        EXPECT_EQ(png[at + 17], plan.png.color_type);
+      }
+      at += 12 + length;
+    }
+    EXPECT_EQ(types, (std::vector<std::string>{"IHDR", "IDAT", "IEND"}));
   }
 }
 

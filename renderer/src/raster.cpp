@@ -158,6 +158,38 @@ inline std::int64_t round_to_int(double x) {
   return static_cast<std::int64_t>(x >= 0 ? x + 0.5 : x - 0.5);
 }
 
+// An affine channel takes its extremes at the ends of a span: when both ends round inside the vertex
+// range, every pixel between does, and the per-pixel clamp can go.
+inline bool affine_span_in_range(const std::int64_t (&value)[4], const std::int64_t (&slope)[4],
+                                 std::int64_t count, const std::uint8_t (&lo)[4],
+                                 const std::uint8_t (&hi)[4]) {
+  for (int ch = 0; ch < 4; ++ch) {
+    const std::int64_t first = value[ch], last = value[ch] + slope[ch] * (count - 1);
+    if (std::min(first, last) < std::int64_t{lo[ch]} << 16 || std::max(first, last) >= (hi[ch] + 1) << 16)
+      return false;
+  }
+  return true;
+}
+
+// The smooth opaque span without clamps: 16.16 values below 2^24 here, so 32-bit lanes hold them.
+template <int C>
+void store_affine_span(std::uint8_t* p, std::int64_t count, const std::int64_t (&value)[4],
+                       const std::int64_t (&slope)[4]) {
+  std::int32_t r = static_cast<std::int32_t>(value[0]), g = static_cast<std::int32_t>(value[1]),
+               b = static_cast<std::int32_t>(value[2]), a = static_cast<std::int32_t>(value[3]);
+  const std::int32_t dr = static_cast<std::int32_t>(slope[0]), dg = static_cast<std::int32_t>(slope[1]),
+                     db = static_cast<std::int32_t>(slope[2]), da = static_cast<std::int32_t>(slope[3]);
+  for (std::uint8_t* const end = p + count * C; p != end; p += C) {
+    p[0] = static_cast<std::uint8_t>(r >> 16), r += dr;
+    if constexpr (C == 2) p[1] = static_cast<std::uint8_t>(a >> 16), a += da;
+    if constexpr (C >= 3) {
+      p[1] = static_cast<std::uint8_t>(g >> 16), g += dg;
+      p[2] = static_cast<std::uint8_t>(b >> 16), b += db;
+    }
+    if constexpr (C == 4) p[3] = static_cast<std::uint8_t>(a >> 16), a += da;
+  }
+}
+
 template <int C>
 void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip,
                    SamplePoint sample) {
@@ -199,7 +231,13 @@ void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, 
           value[ch] =
               round_to_int(static_cast<double>(w[0] * v[0] + w[1] * v[1] + w[2] * v[2]) * scale) + 0x8000;
         }
-        shade_span<C>(image.pixels.data() + (j * image.width + lo) * C, hi - lo + 1, mode, c[0], [&] {
+        std::uint8_t* const p = image.pixels.data() + (j * image.width + lo) * C;
+        const std::int64_t count = hi - lo + 1;
+        if (!mode.blend && affine_span_in_range(value, slope, count, lo_c, hi_c)) {
+          store_affine_span<C>(p, count, value, slope);
+          return;
+        }
+        shade_span<C>(p, count, mode, c[0], [&] {
           std::uint8_t out[4];
           for (int ch = 0; ch < 4; ++ch) {
             out[ch] =

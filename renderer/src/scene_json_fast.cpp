@@ -39,6 +39,24 @@ bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
 
+// How many bytes of text[0, size) equal c: 16 at a time (GCC vector extensions: SSE2 on x86-64).
+std::size_t count_byte(const char* text, std::size_t size, char c) {
+  using Bytes = std::uint8_t __attribute__((vector_size(16)));
+  std::size_t total = 0, i = 0;
+  while (size - i >= 16) {
+    Bytes hits = {};  // per lane, up to 255 blocks before it could wrap
+    const std::size_t end = i + std::min<std::size_t>((size - i) / 16, 255) * 16;
+    for (; i < end; i += 16) {
+      Bytes block;
+      std::memcpy(&block, text + i, 16);
+      hits -= reinterpret_cast<Bytes>(block == static_cast<std::uint8_t>(c));  // a match is -1
+    }
+    for (int k = 0; k < 16; ++k) total += hits[k];
+  }
+  for (; i < size; ++i) total += text[i] == c;
+  return total;
+}
+
 // A cursor over the text. Every method throws E on text it does not accept; E is GiveUp at the document
 // level and HandOver inside a primitive.
 class Cursor {
@@ -254,21 +272,16 @@ class Reader {
   }
 
  private:
-  // Growing the flat arrays by doubling would copy them and fault their pages in twice. Every primitive
-  // is an object and every point an array, so counting brackets (at memchr speed) bounds both; and the
-  // shortest texts of a point, "[0,0]," and of a primitive (a line) cap the count by the text's length.
-  // The unused part of a reservation is address space the kernel never backs.
+  // Growing the flat arrays by doubling would copy them and fault their pages in twice. Every point is an
+  // array, and every primitive holds at least two, so counting '[' bounds both; so does the text's
+  // length, as the shortest point is "[0,0],". The unused part of a reservation is address space the
+  // kernel never backs.
   void reserve(Scene& scene) {
     if (text_size_ < (1 << 16)) return;
-    const auto count = [&](char c, std::size_t shortest) {
-      return std::min(static_cast<std::size_t>(std::count(begin_, begin_ + text_size_, c)),
-                      text_size_ / shortest);
-    };
-    const std::size_t points = count('[', sizeof("[0,0],") - 1);
-    scene.points.reserve(points);
-    scene.colors.reserve(points);
-    scene.primitives.reserve(std::min(count('{', sizeof(R"({"type":"line","points":[[0,0],[0,0]]},)") - 1),
-                                      static_cast<std::size_t>(limits_.max_primitives)));
+    const std::size_t arrays = std::min(count_byte(begin_, text_size_, '['), text_size_ / 6);
+    scene.points.reserve(arrays);
+    scene.colors.reserve(arrays);
+    scene.primitives.reserve(std::min(arrays / 2, static_cast<std::size_t>(limits_.max_primitives)));
   }
 
   // The next value, parsed by nlohmann; `depth` is the nesting of the object or array holding it.

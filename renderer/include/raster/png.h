@@ -9,8 +9,8 @@
 
 namespace raster {
 
-/// Encodes with stb_image_write's PNG writer and libdeflate's compressor. The colour type follows
-/// image.format; `png.deflate_level` is the libdeflate level.
+/// Encodes with the Up row filter and libdeflate's zlib compressor at `png.deflate_level`. The colour type
+/// follows image.format (grey, grey+alpha, RGB or RGBA, 8 bits per channel).
 std::vector<std::uint8_t> encode_png(const Image& image, const PngPlan& png = {});
 
 }  // namespace raster
