@@ -1,5 +1,6 @@
 #include "scenes.h"
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <stdexcept>
@@ -24,6 +25,38 @@ void random_triangles(raster::Scene& s, int count, double radius, std::mt19937& 
 }
 
 }  // namespace
+
+raster::Scene random_scene(int side, int count, double radius, unsigned seed) {
+  std::mt19937 rng(seed);
+  raster::Scene s;
+  s.width = s.height = side;
+  random_triangles(s, count, radius, rng);
+  return s;
+}
+
+std::string flat_mesh_json(int n) {
+  std::mt19937 rng(1);
+  std::string positions, indices, colors;
+  char buf[96];
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = i / double(n) - 0.5, y = j / double(n) - 0.5;
+      std::snprintf(buf, sizeof buf, "%s%.5f,%.5f,%.5f", positions.empty() ? "" : ",", x, y,
+                    0.05 * std::sin(12 * x) * std::cos(9 * y));
+      positions += buf;
+      const raster::Rgba8 c = random_color(rng);
+      std::snprintf(buf, sizeof buf, "%s\"#%02x%02x%02x\"", colors.empty() ? "" : ",", c.r, c.g, c.b);
+      colors += buf;
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      std::snprintf(buf, sizeof buf, "%s%d,%d,%d,%d,%d,%d", indices.empty() ? "" : ",", a, b, d, a, d, c);
+      indices += buf;
+    }
+  return R"({"width":1024,"height":1024,"primitives":[{"type":"mesh","positions":[)" + positions +
+         R"(],"indices":[)" + indices + R"(],"colors":[)" + colors + "]}]}";
+}
 
 void add_triangle(raster::Scene& s, const raster::Point2 (&p)[3], const raster::Rgba8* colors, int ncolors) {
   raster::Primitive prim;

@@ -12,6 +12,14 @@ namespace bench {
 /// (2,000 triangles of about +-30 px on 512x512, the load-test scene). Same seed, same scene.
 raster::Scene make_scene(const std::string& kind, unsigned seed = 1);
 
+/// `count` triangles with vertices within +-radius px of a uniformly random centre on a side x side image,
+/// per-vertex colours: the series of how cost grows with image size and primitive count.
+raster::Scene random_scene(int side, int count, double radius, unsigned seed = 1);
+
+/// A 3D mesh in the flat-array form (positions, indices and colors as flat lists) of an n x n grid of
+/// quads (2 n^2 triangles) on a wavy surface, as JSON text: the big-geometry parse case.
+std::string flat_mesh_json(int n);
+
 /// Appends a triangle with one colour (ncolors 1) or one per vertex (ncolors 3).
 void add_triangle(raster::Scene& scene, const raster::Point2 (&points)[3], const raster::Rgba8* colors,
                   int ncolors);

@@ -1,0 +1,116 @@
+// Google Benchmark micro-benchmarks, one stage at a time: parse (per scene, plus the flat-array mesh),
+// plan, raster (per scene and thread count), encode; and the growth series — raster cost against image
+// side (256..4096) and against primitive count (10^3..10^6). `make bench` runs them after the end-to-end
+// table and keeps their output in docs/performance.md.
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <string>
+
+#include "raster/raster.h"
+#include "scenes.h"
+
+namespace {
+
+const char* const kScenes[] = {"small", "large", "grid"};
+
+// Scenes and their JSON are built once per process, not inside the timed loops.
+const raster::Scene& scene(const std::string& kind) {
+  static std::map<std::string, raster::Scene> cache;
+  auto it = cache.find(kind);
+  if (it == cache.end()) it = cache.emplace(kind, bench::make_scene(kind, 1)).first;
+  return it->second;
+}
+
+const std::string& json(const std::string& kind) {
+  static std::map<std::string, std::string> cache;
+  auto it = cache.find(kind);
+  if (it == cache.end())
+    it = cache.emplace(kind, kind == "mesh" ? bench::flat_mesh_json(400) : bench::scene_json(scene(kind)))
+             .first;
+  return it->second;
+}
+
+raster::RenderPlan plan_for(const raster::Scene& s, int threads) {
+  raster::PlanOptions options;
+  options.max_threads = threads;
+  return raster::plan(s, {}, options);
+}
+
+void parse(benchmark::State& state, const std::string& kind) {
+  const std::string& text = json(kind);
+  for (auto _ : state) benchmark::DoNotOptimize(raster::parse_scene(text));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+}
+
+void plan(benchmark::State& state, const std::string& kind) {
+  const raster::Scene& s = scene(kind);
+  for (auto _ : state) benchmark::DoNotOptimize(plan_for(s, 1));
+}
+
+void render(benchmark::State& state, const raster::Scene& s, int threads) {
+  const raster::RenderPlan p = plan_for(s, threads);
+  for (auto _ : state) benchmark::DoNotOptimize(raster::render(s, p));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * s.primitives.size()));
+}
+
+void encode(benchmark::State& state, const std::string& kind) {
+  const raster::Scene& s = scene(kind);
+  const raster::RenderPlan p = plan_for(s, 1);
+  const raster::Image image = raster::render(s, p);
+  std::size_t size = 0;
+  for (auto _ : state) size = raster::encode_png(image, p.png).size();
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * image.pixels.size()));
+  state.counters["png_KB"] = static_cast<double>(size) / 1024;
+}
+
+// Raster cost against image side: 1,000 triangles about 1/8 of the image across, so covered pixels grow
+// with the square of the side.
+void by_side(benchmark::State& state) {
+  const int side = static_cast<int>(state.range(0));
+  const raster::Scene s = bench::random_scene(side, 1000, side / 16.0);
+  render(state, s, 1);
+  state.counters["Mpx/s"] = benchmark::Counter(static_cast<double>(side) * side / 1e6,
+                                               benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Raster cost against primitive count on 1024x1024: triangles of about +-6 px.
+void by_count(benchmark::State& state) {
+  const raster::Scene s = bench::random_scene(1024, static_cast<int>(state.range(0)), 6);
+  render(state, s, 1);
+}
+
+void register_all() {
+  for (const char* kind : kScenes)
+    benchmark::RegisterBenchmark((std::string("parse/") + kind).c_str(), parse, kind);
+  benchmark::RegisterBenchmark("parse/mesh_flat_320k_triangles", parse, std::string("mesh"));
+  for (const char* kind : kScenes)
+    benchmark::RegisterBenchmark((std::string("plan/") + kind).c_str(), plan, kind);
+  for (const char* kind : kScenes)
+    for (int threads : {1, 2})
+      benchmark::RegisterBenchmark(
+          (std::string("raster/") + kind + "/threads:" + std::to_string(threads)).c_str(),
+          [kind, threads](benchmark::State& state) { render(state, scene(kind), threads); })
+          ->UseRealTime();
+  for (const char* kind : kScenes)
+    benchmark::RegisterBenchmark((std::string("encode/") + kind).c_str(), encode, kind);
+  benchmark::RegisterBenchmark("series/side", by_side)
+      ->RangeMultiplier(2)
+      ->Range(256, 4096)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("series/triangles", by_count)
+      ->RangeMultiplier(10)
+      ->Range(1000, 1'000'000)
+      ->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
