@@ -38,15 +38,22 @@ int usage_error(const std::string& message) {
   return 2;
 }
 
+// The whole file (or stdin for "-"). A file's size is known up front, so its text takes one allocation of
+// exactly that size: growing a string by doubling would hold up to twice the request at its peak.
 bool read_all(const std::string& path, std::string& out) {
-  if (path == "-") {
-    out.assign(std::istreambuf_iterator<char>(std::cin), {});
-    return true;
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  if (path != "-") {
+    file.open(path, std::ios::binary | std::ios::ate);
+    if (!file) return false;
+    if (const std::streamoff size = file.tellg(); size > 0) out.reserve(static_cast<std::size_t>(size));
+    file.seekg(0);
+    in = &file;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  out.assign(std::istreambuf_iterator<char>(in), {});
-  return true;
+  char chunk[1 << 16];
+  while (in->read(chunk, sizeof chunk) || in->gcount() > 0)
+    out.append(chunk, static_cast<std::size_t>(in->gcount()));
+  return !in->bad();
 }
 
 std::string describe(const raster::SceneError& e) {
@@ -91,14 +98,16 @@ int run_render(const std::vector<std::string>& args) {
     return 1;
   }
   try {
-    const raster::Scene scene =
+    raster::Scene scene =
         rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{});
     const raster::RenderPlan plan = raster::plan(scene);
     if (explain) {
       std::cout << raster::explain_json(plan) << "\n";
       return 0;
     }
-    const std::vector<std::uint8_t> png = raster::encode_png(raster::render(scene, plan), plan.png);
+    raster::Image image = raster::render(scene, plan);
+    scene = {};  // as the server does: the scene's memory goes before the PNG's comes
+    const std::vector<std::uint8_t> png = raster::encode_png(std::move(image), plan.png);
     if (output == "-") {
       std::cout.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
       return std::cout ? 0 : 1;

@@ -243,17 +243,18 @@ struct Service::State {
     const Clock::time_point t0 = Clock::now();
     try {
       const Params params(req.params.begin(), req.params.end());
-      const raster::Scene scene =
-          scene_from_request(std::move(body), std::move(uploads), params, config.limits);
+      raster::Scene scene = scene_from_request(std::move(body), std::move(uploads), params, config.limits);
       const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
       if (req.get_param_value("explain") == "1") {
         res.set_content(raster::explain_json(plan), "application/json");
         return;
       }
       const Clock::time_point t1 = Clock::now();
-      const raster::Image image = raster::render(scene, plan, {t0 + config.render_deadline, &cancel});
+      raster::Image image = raster::render(scene, plan, {t0 + config.render_deadline, &cancel});
+      scene = {};  // done with: its memory goes before the PNG's comes
       const Clock::time_point t2 = Clock::now();
-      const std::vector<std::uint8_t> png = raster::encode_png(image, plan.png);
+      // Consumed: filtered in place, so a request never holds two images.
+      const std::vector<std::uint8_t> png = raster::encode_png(std::move(image), plan.png);
       const Clock::time_point t3 = Clock::now();
       metrics.render(ms_between(t0, t3));
       char timing[160];

@@ -101,6 +101,27 @@ TEST(Render, PngContainerIsWellFormed) {
   }
 }
 
+TEST(Render, PngFilteredInPlaceEqualsTheCopyingEncoder) {
+  std::mt19937 rng(3);
+  for (auto format : {raster::PixelFormat::grey8, raster::PixelFormat::grey_alpha8, raster::PixelFormat::rgb8,
+                      raster::PixelFormat::rgba8}) {
+    for (auto [w, h] : {std::pair{1, 1}, {5, 3}, {6, 40}, {17, 9}, {64, 48}, {101, 7}}) {
+      raster::Image image;
+      image.width = w, image.height = h, image.format = format;
+      image.pixels.resize(static_cast<std::size_t>(w) * h * image.channels());
+      for (auto& b : image.pixels) b = static_cast<std::uint8_t>(rng() % 4 ? rng() & 7 : rng());
+      const auto copied = raster::encode_png(image);
+      const auto decoded = test::decode_png(copied);
+      EXPECT_EQ(decoded.pixels, image.pixels) << w << "x" << h << " " << image.channels();
+      raster::Image moved = image;  // no spare capacity: resize reallocates, still the same bytes
+      EXPECT_EQ(raster::encode_png(std::move(moved)), copied) << w << "x" << h << " " << image.channels();
+      raster::Image roomy = image;
+      roomy.pixels.reserve(roomy.pixels.size() + h);  // as the framebuffer allocates: filtered in place
+      EXPECT_EQ(raster::encode_png(std::move(roomy)), copied) << w << "x" << h << " " << image.channels();
+    }
+  }
+}
+
 TEST(Render, AsymmetricImageSurvivesEncodingUnflipped) {
   // Red top-left, green top-right, blue bottom-left: a flip or channel swap in the encoder fails.
   SceneBuilder s(40, 30);

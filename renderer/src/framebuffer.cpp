@@ -10,6 +10,10 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background) {
   image.width = plan.width;
   image.height = plan.height;
   image.format = plan.format;
+  // One byte per row more than the pixels: room for the PNG filter bytes, so encode_png(Image&&) filters
+  // in place instead of allocating a second image.
+  image.pixels.reserve(static_cast<std::size_t>(plan.memory.color_bytes) +
+                       static_cast<std::size_t>(plan.height));
   image.pixels.resize(static_cast<std::size_t>(plan.memory.color_bytes));
   const std::uint8_t all[4] = {background.r, background.g, background.b, background.a};
   std::uint8_t texel[4];

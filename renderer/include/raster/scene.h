@@ -92,18 +92,20 @@ enum class PrimitiveKind : std::uint8_t { triangle, line, polyline, mesh };
 
 /// One drawable. Vertices and colours live in the Scene's flat arrays; a primitive names ranges of them,
 /// so a scene of a million triangles is three vectors, not a million small ones.
+/// (The four one-byte fields lead so the struct packs into 24 bytes: a million triangles are 24 MB here.)
 struct Primitive {
   PrimitiveKind kind = PrimitiveKind::triangle;
-  std::uint32_t first_point = 0;  ///< index into Scene::points of the first vertex
-  std::uint32_t point_count = 0;  ///< triangle: 3; line: 2; polyline: >= 2
-  std::uint32_t first_color = 0;  ///< index into Scene::colors
   bool per_vertex_color = false;  ///< true: point_count colours from first_color; false: one flat colour
   bool fill = true;               ///< triangles: false draws the outline with the line rule
   bool closed = false;            ///< polylines: also join the last point to the first
+  std::uint32_t first_point = 0;  ///< index into Scene::points of the first vertex
+  std::uint32_t point_count = 0;  ///< triangle: 3; line: 2; polyline: >= 2
+  std::uint32_t first_color = 0;  ///< index into Scene::colors
   float width = 1;         ///< lines, polylines, outlines: pixels; != 1 (or anti-aliasing) draws rectangles
   std::uint32_t mesh = 0;  ///< mesh (also 3D triangles, lines and OBJ models): index into Scene::meshes
   friend bool operator==(const Primitive&, const Primitive&) = default;
 };
+static_assert(sizeof(Primitive) == 24);
 
 /// The image dimensions, their background and the primitives drawn over it in array order.
 struct Scene {
