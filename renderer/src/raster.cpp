@@ -1,6 +1,7 @@
 #include "raster.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <type_traits>
 #include <utility>
@@ -91,10 +92,9 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
   std::int64_t area = (std::int64_t{v[1].x} - v[0].x) * (std::int64_t{v[2].y} - v[0].y) -
                       (std::int64_t{v[1].y} - v[0].y) * (std::int64_t{v[2].x} - v[0].x);
   if (area == 0) return 0;  // degenerate: covers nothing
-  int slot[3] = {0, 1, 2};  // slot[k]: which given vertex normalized vertex k is
-  if (area < 0) {           // both windings are drawn: normalize to positive area
+  const bool swapped = area < 0;
+  if (swapped) {  // both windings are drawn: normalize to positive area
     std::swap(v[1], v[2]);
-    std::swap(slot[1], slot[2]);
     area = -area;
   }
 
@@ -108,15 +108,20 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
   const std::int64_t j_hi = std::min<std::int64_t>(clip.y1 - 1, floor_div(max_y - sample.y, kSubpixelScale));
   if (i_lo > i_hi || j_lo > j_hi) return area;
 
-  // Edge k is opposite normalized vertex k, so its value is that vertex's weight times `area`.
-  const Edge e[3] = {make_edge(v[1], v[2]), make_edge(v[2], v[0]), make_edge(v[0], v[1])};
+  // Edge k is opposite normalized vertex k, so its value is that vertex's weight times `area`; reordered
+  // to the given vertex order once here, so the per-row work indexes directly.
+  Edge e[3] = {make_edge(v[1], v[2]), make_edge(v[2], v[0]), make_edge(v[0], v[1])};
   const ScreenVertex* origin[3] = {&v[1], &v[2], &v[0]};
+  if (swapped) {
+    std::swap(e[1], e[2]);
+    std::swap(origin[1], origin[2]);
+  }
   const std::int64_t px = i_lo * kSubpixelScale + sample.x;
   std::int64_t row_value[3], step[3], row_step[3];
   for (int k = 0; k < 3; ++k) {
     row_value[k] = e[k].a * (px - origin[k]->x) + e[k].b * (j_lo * kSubpixelScale + sample.y - origin[k]->y);
-    step[slot[k]] = e[k].a * kSubpixelScale;
-    row_step[slot[k]] = e[k].b * kSubpixelScale;
+    step[k] = e[k].a * kSubpixelScale;
+    row_step[k] = e[k].b * kSubpixelScale;
   }
 
   // The covered span of each row, solved exactly per edge instead of testing every pixel of the box:
@@ -141,7 +146,7 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
     }
     if (lo <= hi) {
       std::int64_t w[3];
-      for (int k = 0; k < 3; ++k) w[slot[k]] = row_value[k] + e[k].a * kSubpixelScale * (lo - i_lo);
+      for (int k = 0; k < 3; ++k) w[k] = row_value[k] + step[k] * (lo - i_lo);
       span(j, lo, hi, w, step, row_step, area);
     }
     for (int k = 0; k < 3; ++k) row_value[k] += e[k].b * kSubpixelScale;
@@ -158,12 +163,23 @@ inline std::int64_t round_to_int(double x) {
   return static_cast<std::int64_t>(x >= 0 ? x + 0.5 : x - 0.5);
 }
 
+// The channels (0 r, 1 g, 2 b, 3 a) a format of C channels stores: grey r, grey+alpha r and a, RGB, RGBA.
+template <int C>
+constexpr int kStoredCount = C == 2 ? 2 : C;
+template <int C>
+constexpr std::array<int, 4> kStored = C == 1   ? std::array<int, 4>{0}
+                                       : C == 2 ? std::array<int, 4>{0, 3}
+                                       : C == 3 ? std::array<int, 4>{0, 1, 2}
+                                                : std::array<int, 4>{0, 1, 2, 3};
+
 // An affine channel takes its extremes at the ends of a span: when both ends round inside the vertex
-// range, every pixel between does, and the per-pixel clamp can go.
-inline bool affine_span_in_range(const std::int64_t (&value)[4], const std::int64_t (&slope)[4],
-                                 std::int64_t count, const std::uint8_t (&lo)[4],
-                                 const std::uint8_t (&hi)[4]) {
-  for (int ch = 0; ch < 4; ++ch) {
+// range, every pixel between does, and the per-pixel clamp can go. Only the channels format C stores
+// are checked.
+template <int C>
+bool affine_span_in_range(const std::int64_t (&value)[4], const std::int64_t (&slope)[4], std::int64_t count,
+                          const std::uint8_t (&lo)[4], const std::uint8_t (&hi)[4]) {
+  for (int k = 0; k < kStoredCount<C>; ++k) {
+    const int ch = kStored<C>[k];
     const std::int64_t first = value[ch], last = value[ch] + slope[ch] * (count - 1);
     if (std::min(first, last) < std::int64_t{lo[ch]} << 16 || std::max(first, last) >= (hi[ch] + 1) << 16)
       return false;
@@ -224,16 +240,19 @@ void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, 
             hi_c[ch] = std::max({v[0], v[1], v[2]});
           }
         }
-        std::int64_t value[4];  // 16.16, with a half added for rounding; exact numerator < 2^58, so the
-                                // double is exact to 2^-29 levels
-        for (int ch = 0; ch < 4; ++ch) {
+        // 16.16, with a half added for rounding; exact numerator < 2^58, so the double is exact to 2^-29
+        // levels. Only the channels the format stores, and alpha when it weighs a blend.
+        std::int64_t value[4] = {};
+        auto start = [&](int ch) {
           const std::uint8_t* v = channels[ch];
           value[ch] =
               round_to_int(static_cast<double>(w[0] * v[0] + w[1] * v[1] + w[2] * v[2]) * scale) + 0x8000;
-        }
+        };
+        for (int k = 0; k < kStoredCount<C>; ++k) start(kStored<C>[k]);
+        if ((C == 1 || C == 3) && mode.blend) start(3);
         std::uint8_t* const p = image.pixels.data() + (j * image.width + lo) * C;
         const std::int64_t count = hi - lo + 1;
-        if (!mode.blend && affine_span_in_range(value, slope, count, lo_c, hi_c)) {
+        if (!mode.blend && affine_span_in_range<C>(value, slope, count, lo_c, hi_c)) {
           store_affine_span<C>(p, count, value, slope);
           return;
         }
