@@ -11,7 +11,7 @@ RUN make build BUILD=/build
 # non-root user.
 FROM debian:bookworm-slim
 RUN apt-get update -qq \
- && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libdeflate0 libtinyobjloader2rc10 curl ca-certificates \
+ && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libisal2 libtinyobjloader2rc10 curl ca-certificates \
  && rm -rf /var/lib/apt/lists/* \
  && useradd --system --no-create-home --uid 10001 rasterd
 COPY --from=build /build/rasterd /usr/local/bin/rasterd

@@ -1,11 +1,12 @@
-// PNG encoding: the Up row filter, libdeflate's zlib compressor and CRC, written straight into one buffer.
+// PNG encoding: the Up row filter, ISA-L's deflate (igzip) and CRC, written straight into one buffer.
 //
 // A PNG is a signature and three chunks here (IHDR, one IDAT, IEND), so the container is a few lines; the
-// cost is all in filtering and compressing. This used to be stb_image_write with libdeflate hooked in as
-// its zlib: stb's byte-at-a-time CRC over the compressed data and its two copies of the output took a
-// sixth of the encode (perf, bench/micro encode/*), and its filter choice and our deflate level had to
-// reach it through a process-wide setting and a thread-local. The bytes are the ones that writer produced
-// with filter Up forced (tests/render_test.cpp checks them against stb_image's decoder).
+// cost is all in filtering and compressing. The compressor was chosen by measurement (bench/micro
+// encode/*, and the sweep kept in docs/performance.md): on the benchmark renders igzip level 1 takes 14 /
+// 6.3 / 2.8 ms where libdeflate's fastest level took 28 / 13 / 10.6 ms, for files 2-12% larger than
+// libdeflate's and still 15-22% smaller than stb_image_write's. (Before that, stb_image_write itself
+// wrote the file, with libdeflate hooked in: its bytewise CRC and two copies of the output took a sixth
+// of the encode, and the filter and level reached it through process-wide settings.)
 #include "raster/png.h"
 
 #include <cstring>
@@ -13,27 +14,82 @@
 #include <new>
 #include <stdexcept>
 
-#include <libdeflate.h>
+#include <isa-l/crc.h>
+#include <isa-l/igzip_lib.h>
 
 namespace raster {
 namespace {
 
-// One compressor per thread and level, kept: allocating one (hundreds of KB of tables) costs more than
-// compressing a small image. A cache, not a setting: every call names its level.
-libdeflate_compressor* compressor_for(int level) {
+// igzip's state for one level: the stream (large: it holds the history window) and the level's hash
+// buffer. One per thread and level, kept: setting one up costs more than compressing a small image. A
+// cache, not a setting: every call names its level.
+struct Deflater {
+  isal_zstream stream;
+  std::unique_ptr<std::uint8_t[]> level_buffer;
+  std::uint32_t level_buffer_size = 0;
+};
+
+std::uint32_t level_buffer_size(int level) {
+  switch (level) {
+    case 0:
+      return ISAL_DEF_LVL0_DEFAULT;
+    case 1:
+      return ISAL_DEF_LVL1_DEFAULT;
+    case 2:
+      return ISAL_DEF_LVL2_DEFAULT;
+    default:
+      return ISAL_DEF_LVL3_DEFAULT;
+  }
+}
+
+Deflater& deflater_for(int level) {
   struct Cache {
     int level = -1;
-    libdeflate_compressor* c = nullptr;
-    ~Cache() { libdeflate_free_compressor(c); }
+    std::unique_ptr<Deflater> d;
   };
   thread_local Cache cache;
-  if (cache.level != level) {
-    libdeflate_free_compressor(cache.c);
-    cache.c = libdeflate_alloc_compressor(level);
-    cache.level = cache.c ? level : -1;
+  if (cache.level != level || !cache.d) {
+    auto d = std::make_unique<Deflater>();
+    d->level_buffer_size = level_buffer_size(level);
+    if (d->level_buffer_size) d->level_buffer = std::make_unique<std::uint8_t[]>(d->level_buffer_size);
+    cache.d = std::move(d);
+    cache.level = level;
   }
-  if (!cache.c) throw std::bad_alloc();
-  return cache.c;
+  return *cache.d;
+}
+
+// zlib stream (header, deflate, Adler-32) of `in` at igzip `level` (0..3) into a buffer that grows only if
+// the data does not compress: its untouched tail gets no memory pages. Returns the buffer and the size.
+std::pair<std::unique_ptr<std::uint8_t[]>, std::size_t> zlib_compress(const std::vector<std::uint8_t>& in,
+                                                                      int level) {
+  Deflater& d = deflater_for(level);
+  isal_zstream& s = d.stream;
+  isal_deflate_init(&s);
+  s.level = static_cast<std::uint32_t>(level);
+  s.level_buf = d.level_buffer.get();
+  s.level_buf_size = d.level_buffer_size;
+  s.gzip_flag = IGZIP_ZLIB;
+  s.flush = NO_FLUSH;
+  s.end_of_stream = 1;
+  s.next_in = const_cast<std::uint8_t*>(in.data());  // igzip's API is not const-correct; it only reads
+  s.avail_in = static_cast<std::uint32_t>(in.size());
+
+  std::size_t capacity = in.size() + in.size() / 64 + 4096;  // stored blocks' overhead is 5 per 65535
+  auto out = std::unique_ptr<std::uint8_t[]>(new std::uint8_t[capacity]);
+  s.next_out = out.get();
+  s.avail_out = static_cast<std::uint32_t>(capacity);
+  for (;;) {
+    if (isal_deflate(&s) != COMP_OK) throw std::runtime_error("PNG encoding failed: igzip rejected its input");
+    if (s.internal_state.state == ZSTATE_END) return {std::move(out), s.total_out};
+    if (s.avail_out == 0) {  // out of room: grow and go on where it stopped
+      auto bigger = std::unique_ptr<std::uint8_t[]>(new std::uint8_t[capacity * 2]);
+      std::memcpy(bigger.get(), out.get(), capacity);
+      out = std::move(bigger);
+      s.next_out = out.get() + capacity;
+      s.avail_out = static_cast<std::uint32_t>(capacity);
+      capacity *= 2;
+    }
+  }
 }
 
 void put_u32(std::uint8_t* p, std::uint32_t v) {
@@ -47,21 +103,15 @@ std::size_t finish_chunk(std::vector<std::uint8_t>& out, std::size_t at, const c
                          std::size_t length) {
   put_u32(out.data() + at, static_cast<std::uint32_t>(length));
   std::memcpy(out.data() + at + 4, type, 4);
-  const auto crc = static_cast<std::uint32_t>(libdeflate_crc32(0, out.data() + at + 4, length + 4));
+  const std::uint32_t crc = crc32_gzip_refl(0, out.data() + at + 4, length + 4);  // PNG's CRC-32
   put_u32(out.data() + at + 8 + length, crc);
   return at + 12 + length;
 }
 
-// The PNG of filtered rows (a filter byte, then the row, per row). The compressed data goes to a buffer
-// of libdeflate's bound, of which only what is written gets memory pages; the rows are released before
-// the file is assembled, so at most the rows and the compressed data exist at once.
+// The PNG of filtered rows (a filter byte, then the row, per row). The rows are released before the file
+// is assembled, so at most the rows and the compressed data exist at once.
 std::vector<std::uint8_t> write_png(const Image& image, std::vector<std::uint8_t>&& filtered, int level) {
-  libdeflate_compressor* compressor = compressor_for(level);
-  const std::size_t bound = libdeflate_zlib_compress_bound(compressor, filtered.size());
-  const std::unique_ptr<std::uint8_t[]> compressed(new std::uint8_t[bound]);  // not zeroed: not touched
-  const std::size_t size =
-      libdeflate_zlib_compress(compressor, filtered.data(), filtered.size(), compressed.get(), bound);
-  if (size == 0) throw std::runtime_error("PNG encoding failed: compressed data exceeded its bound");
+  const auto [compressed, size] = zlib_compress(filtered, level);
   std::vector<std::uint8_t>().swap(filtered);
 
   static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -87,7 +137,7 @@ std::vector<std::uint8_t> write_png(const Image& image, std::vector<std::uint8_t
 std::vector<std::uint8_t> encode_png(const Image& image, const PngPlan& png) {
   // Filter "Up" on every row (the first has a row of zeros above it, so its bytes go as they are): one
   // fixed filter instead of trying all five per row. Measured on the benchmark scenes: 2-3x faster than
-  // stb's heuristic and smaller files at libdeflate level 1 (2270/580/268 KB against 2436/578/325 KB).
+  // stb's heuristic, and smaller files (at libdeflate level 1: 2270/580/268 KB against 2436/578/325 KB).
   const std::size_t stride = static_cast<std::size_t>(image.width) * image.channels();
   const std::size_t height = static_cast<std::size_t>(image.height);
   std::vector<std::uint8_t> filtered(height * (stride + 1));

@@ -52,7 +52,9 @@ struct MemoryPlan {
 /// always filtered with "Up" (see png.cpp for the measurement).
 struct PngPlan {
   int color_type = 2;     ///< PNG IHDR colour type
-  int deflate_level = 1;  ///< libdeflate level, 1 (fast) .. 12 (small); 1 already beats stock stb's size
+  /// igzip (ISA-L) level, 0 (fastest) .. 3 (smallest); 1 is the fastest whose files stay smaller than
+  /// stb_image_write's on the benchmark scenes (docs/performance.md).
+  int deflate_level = 1;
 };
 
 struct RenderPlan {

@@ -9,7 +9,7 @@
 
 namespace raster {
 
-/// Encodes with the Up row filter and libdeflate's zlib compressor at `png.deflate_level`. The colour type
+/// Encodes with the Up row filter and ISA-L's deflate (igzip) at `png.deflate_level`. The colour type
 /// follows image.format (grey, grey+alpha, RGB or RGBA, 8 bits per channel).
 std::vector<std::uint8_t> encode_png(const Image& image, const PngPlan& png = {});
 
