@@ -9,6 +9,7 @@
 // stream, a wrong count, malformed text — it hands that primitive, or the whole document, back to the DOM
 // reader, which then either reads it or reports the error with its pointer. See scene_json.h.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -39,6 +40,13 @@ bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
 
+// Bytes a string this reader takes may hold: printable ASCII except the quote and the backslash.
+constexpr std::array<bool, 256> kPlainStringByte = [] {
+  std::array<bool, 256> t{};
+  for (int c = 0x20; c < 0x80; ++c) t[c] = c != '"' && c != '\\';
+  return t;
+}();
+
 // How many bytes of text[0, size) equal c: 16 at a time (GCC vector extensions: SSE2 on x86-64).
 std::size_t count_byte(const char* text, std::size_t size, char c) {
   using Bytes = std::uint8_t __attribute__((vector_size(16)));
@@ -66,8 +74,11 @@ class Cursor {
   const char* pos() const { return p_; }
   void seek(const char* p) { p_ = p; }
 
+  // Machine-written JSON has little whitespace: one compare decides most calls.
   void space() {
-    while (p_ < end_ && (*p_ == ' ' || *p_ == '\n' || *p_ == '\r' || *p_ == '\t')) ++p_;
+    while (p_ < end_ && static_cast<unsigned char>(*p_) <= ' ' &&
+           (*p_ == ' ' || *p_ == '\n' || *p_ == '\r' || *p_ == '\t'))
+      ++p_;
   }
   bool at_end() {
     space();
@@ -75,6 +86,7 @@ class Cursor {
   }
   template <class E>
   bool consume(char c) {
+    if (p_ < end_ && *p_ == c) return ++p_, true;  // the usual case: no whitespace before it
     space();
     if (p_ < end_ && *p_ == c) return ++p_, true;
     return false;
@@ -95,13 +107,9 @@ class Cursor {
   std::string_view string() {
     expect<E>('"');
     const char* start = p_;
-    while (p_ < end_) {
-      const auto c = static_cast<unsigned char>(*p_);
-      if (c == '"') return {start, static_cast<std::size_t>(p_++ - start)};
-      if (c == '\\' || c < 0x20 || c >= 0x80) throw E{};
-      ++p_;
-    }
-    throw E{};
+    while (p_ < end_ && kPlainStringByte[static_cast<unsigned char>(*p_)]) ++p_;
+    if (p_ == end_ || *p_ != '"') throw E{};
+    return {start, static_cast<std::size_t>(p_++ - start)};
   }
 
   // A JSON number as nlohmann reads it into a double (strtod, correctly rounded; integer syntax through an
