@@ -1,12 +1,13 @@
 // PNG encoding: the Up row filter, ISA-L's deflate (igzip) and CRC, written straight into one buffer.
 //
 // A PNG is a signature and three chunks here (IHDR, one IDAT, IEND), so the container is a few lines; the
-// cost is all in filtering and compressing. The compressor was chosen by measurement (bench/micro
-// encode/*, and the sweep kept in docs/performance.md): on the benchmark renders igzip level 1 takes 14 /
-// 6.3 / 2.8 ms where libdeflate's fastest level took 28 / 13 / 10.6 ms, for files 2-12% larger than
-// libdeflate's and still 15-22% smaller than stb_image_write's. (Before that, stb_image_write itself
-// wrote the file, with libdeflate hooked in: its bytewise CRC and two copies of the output took a sixth
-// of the encode, and the filter and level reached it through process-wide settings.)
+// cost is all in filtering and compressing. Both were chosen by measurement (bench/png_sweep, run by
+// make bench into docs/performance.md): on the benchmark renders igzip level 1 compresses the Up-filtered
+// rows in 10.5 / 6.5 / 2.8 ms where libdeflate's fastest level takes 28 / 16 / 12 ms, for files 2-12%
+// larger than libdeflate's and 11-22% smaller than stb_image_write's; level 0 saves at most a tenth of the
+// time and its small-scene file exceeds stb's. (Before, stb_image_write wrote the file with libdeflate hooked
+// in: its bytewise CRC and copies took a sixth of the encode, and the filter and level reached it through
+// process-wide settings.)
 #include "raster/png.h"
 
 #include <cstring>
@@ -79,7 +80,8 @@ std::pair<std::unique_ptr<std::uint8_t[]>, std::size_t> zlib_compress(const std:
   s.next_out = out.get();
   s.avail_out = static_cast<std::uint32_t>(capacity);
   for (;;) {
-    if (isal_deflate(&s) != COMP_OK) throw std::runtime_error("PNG encoding failed: igzip rejected its input");
+    if (isal_deflate(&s) != COMP_OK)
+      throw std::runtime_error("PNG encoding failed: igzip rejected its input");
     if (s.internal_state.state == ZSTATE_END) return {std::move(out), s.total_out};
     if (s.avail_out == 0) {  // out of room: grow and go on where it stopped
       auto bigger = std::unique_ptr<std::uint8_t[]>(new std::uint8_t[capacity * 2]);
@@ -136,8 +138,8 @@ std::vector<std::uint8_t> write_png(const Image& image, std::vector<std::uint8_t
 
 std::vector<std::uint8_t> encode_png(const Image& image, const PngPlan& png) {
   // Filter "Up" on every row (the first has a row of zeros above it, so its bytes go as they are): one
-  // fixed filter instead of trying all five per row. Measured on the benchmark scenes: 2-3x faster than
-  // stb's heuristic, and smaller files (at libdeflate level 1: 2270/580/268 KB against 2436/578/325 KB).
+  // fixed filter instead of trying all five per row. In bench/png_sweep it gives the smallest grid file
+  // by 19% and is within 1-6% of "Sub" on the other scenes; "None" is larger everywhere.
   const std::size_t stride = static_cast<std::size_t>(image.width) * image.channels();
   const std::size_t height = static_cast<std::size_t>(image.height);
   std::vector<std::uint8_t> filtered(height * (stride + 1));
