@@ -1,0 +1,92 @@
+// End to end through the real binary: `rasterd render scene.json -o /dev/null` (process start, file read,
+// parse, render, encode, write) and POST /render to `rasterd serve` over loopback (request upload,
+// parse, render, encode, response download), wall-clock medians. Both use every core, so e2e compares
+// them with llvmpipe at the same thread count.
+#include "wall.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <httplib.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace bench {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+pid_t spawn(const std::vector<std::string>& args) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_WRONLY);  // the server's log lines are not the bench's output
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  if (pid < 0) throw std::runtime_error("fork failed");
+  return pid;
+}
+
+}  // namespace
+
+WallTimes wall_times(const std::string& rasterd, const std::string& scene_json, int runs) {
+  const std::string path = "/tmp/rasterd-wall-" + std::to_string(getpid()) + ".json";
+  std::ofstream(path, std::ios::binary) << scene_json;
+  WallTimes out;
+
+  std::vector<double> cli;
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    int status = 0;
+    waitpid(spawn({rasterd, "render", path, "-o", "/dev/null"}), &status, 0);
+    cli.push_back(ms_since(t0));
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw std::runtime_error("rasterd render failed");
+  }
+  out.cli_ms = median(cli);
+  std::remove(path.c_str());
+
+  const int port = 20000 + static_cast<int>(getpid() % 20000);
+  const pid_t server = spawn({rasterd, "serve", "--host", "127.0.0.1", "--port", std::to_string(port)});
+  httplib::Client client("127.0.0.1", port);
+  client.set_read_timeout(30, 0);
+  for (int tries = 0; !client.Get("/healthz") && tries < 200; ++tries)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  std::vector<double> http;
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto res = client.Post("/render", scene_json, "application/json");
+    http.push_back(ms_since(t0));
+    if (!res || res->status != 200) {
+      kill(server, SIGKILL);
+      waitpid(server, nullptr, 0);
+      throw std::runtime_error("POST /render failed");
+    }
+    out.png_bytes = res->body.size();
+  }
+  out.http_ms = median(http);
+  kill(server, SIGTERM);
+  waitpid(server, nullptr, 0);
+  return out;
+}
+
+}  // namespace bench
