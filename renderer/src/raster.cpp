@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 #include <utility>
 
@@ -187,7 +188,10 @@ bool affine_span_in_range(const std::int64_t (&value)[4], const std::int64_t (&s
   return true;
 }
 
-// The smooth opaque span without clamps: 16.16 values below 2^24 here, so 32-bit lanes hold them.
+// The smooth opaque span without clamps: 16.16 values below 2^24 here, so 32-bit lanes hold them. RGB and
+// RGBA go four pixels per step (GCC vector extensions: SSE2 on x86-64): each lane packs one pixel's
+// bytes into a word. RGB stores 4 bytes per 3-byte pixel, the spare byte overwritten by the next pixel,
+// so the last pixel of the span is always left to the scalar loop and nothing past the span is written.
 template <int C>
 void store_affine_span(std::uint8_t* p, std::int64_t count, const std::int64_t (&value)[4],
                        const std::int64_t (&slope)[4]) {
@@ -195,6 +199,31 @@ void store_affine_span(std::uint8_t* p, std::int64_t count, const std::int64_t (
                b = static_cast<std::int32_t>(value[2]), a = static_cast<std::int32_t>(value[3]);
   const std::int32_t dr = static_cast<std::int32_t>(slope[0]), dg = static_cast<std::int32_t>(slope[1]),
                      db = static_cast<std::int32_t>(slope[2]), da = static_cast<std::int32_t>(slope[3]);
+  if constexpr (C >= 3) {
+    using Lanes = std::int32_t __attribute__((vector_size(16)));
+    using Words = std::uint32_t __attribute__((vector_size(16)));
+    const Lanes lane = {0, 1, 2, 3};
+    Lanes vr = r + dr * lane, vg = g + dg * lane, vb = b + db * lane, va = a + da * lane;
+    const std::int64_t blocks_end = C == 3 ? count - 1 : count;
+    std::int64_t n = 0;
+    for (; n + 4 <= blocks_end; n += 4, p += 4 * C) {
+      Words word = reinterpret_cast<Words>(vr >> 16) | reinterpret_cast<Words>(vg >> 16) << 8 |
+                   reinterpret_cast<Words>(vb >> 16) << 16;
+      if constexpr (C == 4) {
+        word |= reinterpret_cast<Words>(va >> 16) << 24;
+        std::memcpy(p, &word, 16);
+      } else {
+        for (int k = 0; k < 4; ++k) {
+          const std::uint32_t w = word[k];
+          std::memcpy(p + 3 * k, &w, 4);
+        }
+      }
+      vr += 4 * dr, vg += 4 * dg, vb += 4 * db, va += 4 * da;
+    }
+    const auto done = static_cast<std::int32_t>(n);  // the value at pixel n is in range, so this fits
+    r += dr * done, g += dg * done, b += db * done, a += da * done;
+    count -= n;
+  }
   for (std::uint8_t* const end = p + count * C; p != end; p += C) {
     p[0] = static_cast<std::uint8_t>(r >> 16), r += dr;
     if constexpr (C == 2) p[1] = static_cast<std::uint8_t>(a >> 16), a += da;
