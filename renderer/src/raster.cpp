@@ -181,6 +181,10 @@ bool affine_span_in_range(const std::int64_t (&value)[4], const std::int64_t (&s
                           const std::uint8_t (&lo)[4], const std::uint8_t (&hi)[4]) {
   for (int k = 0; k < kStoredCount<C>; ++k) {
     const int ch = kStored<C>[k];
+    // A slope of 2^24 or more (a sliver's) leaves the range within one pixel; checking it first also keeps
+    // the product below from overflowing.
+    if (count > 1 && (slope[ch] >= std::int64_t{1} << 24 || slope[ch] <= -(std::int64_t{1} << 24)))
+      return false;
     const std::int64_t first = value[ch], last = value[ch] + slope[ch] * (count - 1);
     if (std::min(first, last) < std::int64_t{lo[ch]} << 16 || std::max(first, last) >= (hi[ch] + 1) << 16)
       return false;
@@ -188,50 +192,60 @@ bool affine_span_in_range(const std::int64_t (&value)[4], const std::int64_t (&s
   return true;
 }
 
-// The smooth opaque span without clamps: 16.16 values below 2^24 here, so 32-bit lanes hold them. RGB and
-// RGBA go four pixels per step (GCC vector extensions: SSE2 on x86-64): each lane packs one pixel's
-// bytes into a word. RGB stores 4 bytes per 3-byte pixel, the spare byte overwritten by the next pixel,
-// so the last pixel of the span is always left to the scalar loop and nothing past the span is written.
+// The smooth opaque span without clamps. RGB and RGBA go four pixels per step (GCC vector extensions:
+// SSE2 on x86-64), each lane packing one pixel's bytes into a word; RGB stores 4 bytes per 3-byte pixel,
+// the spare byte rewritten by the next pixel, so the span's last pixel always goes to the scalar loop and
+// nothing past the span is written. 32-bit lanes hold the 16.16 values: in a span of two or more pixels
+// whose ends are in range, each stored channel stays below 2^24 and its slope below 2^24 per pixel
+// (affine_span_in_range). A one-pixel span's slope is unbounded, so the scalar loop steps in 64 bits.
 template <int C>
 void store_affine_span(std::uint8_t* p, std::int64_t count, const std::int64_t (&value)[4],
                        const std::int64_t (&slope)[4]) {
-  std::int32_t r = static_cast<std::int32_t>(value[0]), g = static_cast<std::int32_t>(value[1]),
-               b = static_cast<std::int32_t>(value[2]), a = static_cast<std::int32_t>(value[3]);
-  const std::int32_t dr = static_cast<std::int32_t>(slope[0]), dg = static_cast<std::int32_t>(slope[1]),
-                     db = static_cast<std::int32_t>(slope[2]), da = static_cast<std::int32_t>(slope[3]);
+  std::int64_t n = 0;
   if constexpr (C >= 3) {
-    using Lanes = std::int32_t __attribute__((vector_size(16)));
-    using Words = std::uint32_t __attribute__((vector_size(16)));
-    const Lanes lane = {0, 1, 2, 3};
-    Lanes vr = r + dr * lane, vg = g + dg * lane, vb = b + db * lane, va = a + da * lane;
-    const std::int64_t blocks_end = C == 3 ? count - 1 : count;
-    std::int64_t n = 0;
-    for (; n + 4 <= blocks_end; n += 4, p += 4 * C) {
-      Words word = reinterpret_cast<Words>(vr >> 16) | reinterpret_cast<Words>(vg >> 16) << 8 |
-                   reinterpret_cast<Words>(vb >> 16) << 16;
-      if constexpr (C == 4) {
-        word |= reinterpret_cast<Words>(va >> 16) << 24;
-        std::memcpy(p, &word, 16);
-      } else {
-        for (int k = 0; k < 4; ++k) {
-          const std::uint32_t w = word[k];
-          std::memcpy(p + 3 * k, &w, 4);
+    if (count >= 5) {
+      using Lanes = std::int32_t __attribute__((vector_size(16)));
+      using Words = std::uint32_t __attribute__((vector_size(16)));
+      const Lanes lane = {0, 1, 2, 3};
+      auto lanes = [&](int ch) {
+        return static_cast<std::int32_t>(value[ch]) + static_cast<std::int32_t>(slope[ch]) * lane;
+      };
+      auto step = [&](int ch) { return static_cast<std::int32_t>(4 * slope[ch]); };
+      Lanes vr = lanes(0), vg = lanes(1), vb = lanes(2);
+      const std::int32_t sr = step(0), sg = step(1), sb = step(2);
+      [[maybe_unused]] Lanes va;
+      [[maybe_unused]] std::int32_t sa = 0;
+      if constexpr (C == 4) va = lanes(3), sa = step(3);
+      const std::int64_t blocks_end = C == 3 ? count - 1 : count;
+      for (; n + 4 <= blocks_end; n += 4, p += 4 * C) {
+        Words word = reinterpret_cast<Words>(vr >> 16) | reinterpret_cast<Words>(vg >> 16) << 8 |
+                     reinterpret_cast<Words>(vb >> 16) << 16;
+        if constexpr (C == 4) {
+          word |= reinterpret_cast<Words>(va >> 16) << 24;
+          va += sa;
+          std::memcpy(p, &word, 16);
+        } else {
+          for (int k = 0; k < 4; ++k) {
+            const std::uint32_t w = word[k];
+            std::memcpy(p + 3 * k, &w, 4);
+          }
         }
+        vr += sr, vg += sg, vb += sb;
       }
-      vr += 4 * dr, vg += 4 * dg, vb += 4 * db, va += 4 * da;
     }
-    const auto done = static_cast<std::int32_t>(n);  // the value at pixel n is in range, so this fits
-    r += dr * done, g += dg * done, b += db * done, a += da * done;
-    count -= n;
   }
-  for (std::uint8_t* const end = p + count * C; p != end; p += C) {
-    p[0] = static_cast<std::uint8_t>(r >> 16), r += dr;
-    if constexpr (C == 2) p[1] = static_cast<std::uint8_t>(a >> 16), a += da;
+  // Only the stored channels are advanced: the others' slopes are not bounded by any check.
+  std::int64_t r = value[0] + slope[0] * n, g = 0, b = 0, a = 0;
+  if constexpr (C >= 3) g = value[1] + slope[1] * n, b = value[2] + slope[2] * n;
+  if constexpr (C == 2 || C == 4) a = value[3] + slope[3] * n;
+  for (std::uint8_t* const end = p + (count - n) * C; p != end; p += C) {
+    p[0] = static_cast<std::uint8_t>(r >> 16), r += slope[0];
+    if constexpr (C == 2) p[1] = static_cast<std::uint8_t>(a >> 16), a += slope[3];
     if constexpr (C >= 3) {
-      p[1] = static_cast<std::uint8_t>(g >> 16), g += dg;
-      p[2] = static_cast<std::uint8_t>(b >> 16), b += db;
+      p[1] = static_cast<std::uint8_t>(g >> 16), g += slope[1];
+      p[2] = static_cast<std::uint8_t>(b >> 16), b += slope[2];
     }
-    if constexpr (C == 4) p[3] = static_cast<std::uint8_t>(a >> 16), a += da;
+    if constexpr (C == 4) p[3] = static_cast<std::uint8_t>(a >> 16), a += slope[3];
   }
 }
 

@@ -511,7 +511,8 @@ class Reader {
     if (colors(pointer, t.positions.size(), kMeshGrey, mesh.colors)) mesh.colors = t.colors;
     mesh.positions = std::move(t.positions);
     mesh.triangles.resize(count);
-    std::memcpy(mesh.triangles.data(), t.indices.data(), count * sizeof(mesh.triangles[0]));
+    for (std::size_t k = 0; k < count; ++k)
+      mesh.triangles[k] = {t.indices[3 * k], t.indices[3 * k + 1], t.indices[3 * k + 2]};
     if (t.has_normals) {
       mesh.normals = std::move(t.normals);
       mesh.normal_triangles = mesh.triangles;
