@@ -178,7 +178,8 @@ int main(int argc, char** argv) {
       "per-triangle setup and per-row span starts dominate on triangles of ~44 px (callgrind: ~3,700 "
       "instructions per triangle); llvmpipe rasterizes 4x4 blocks with SIMD");
   row("raster ≥ 1× llvmpipe, large", fmt("%.2fx", large_r), large_r >= 1,
-      "smooth spans are stepped one pixel at a time; llvmpipe shades 4-16 pixels per instruction");
+      "smooth spans step 4 pixels per instruction (SSE2, the x86-64 baseline this build targets); llvmpipe's "
+      "JIT uses the host's widest SIMD (AVX2 on this machine)");
   row("raster ≥ 1× llvmpipe, grid", fmt("%.2fx", grid_r), grid_r >= 1, "flat spans are plain stores");
   double enc = 1e9;
   bool smaller = true;
@@ -193,8 +194,9 @@ int main(int argc, char** argv) {
   double mbs = 1e9;
   for (const char* k : {"small", "grid"}) mbs = std::min(mbs, results[k][1].parse_mbs);
   row("parsing ≥ 500 MB/s", fmt("%.0f MB/s (worst of small, grid)", mbs), mbs >= 500,
-      "decimal-to-double conversion and per-key dispatch in the streaming reader, and page faults as the "
-      "scene's arrays are first written");
+      "the streaming reader is one scalar pass at ~19 instructions per byte (callgrind, parse/small: digit "
+      "loops 21%, string scans and hex colours 23%, punctuation 16%, storing into the scene 14%); more "
+      "needs SIMD scanning (simdjson's structural index, allocated at 4 bytes per input byte)");
   // End to end: the worst scene, and which of our stages costs most there.
   double e2e = 1e9;
   std::string worst_kind;
