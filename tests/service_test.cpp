@@ -298,13 +298,16 @@ TEST(Service, MetricsAndServerTiming) {
       << timing;
   EXPECT_TRUE(parse >= 0 && raster_ms >= 0 && encode >= 0) << timing;
   server.client().Get("/nope");
-  // cpp-httplib calls the logger, which counts the request, just after writing the response: a fast
-  // client can ask for /metrics before the previous request is counted. Wait (bounded) for it.
+  // cpp-httplib calls the logger, which counts the request, just after writing the response, on the
+  // connection's own worker: a fast client can ask for /metrics before either earlier request is counted,
+  // and the two may be counted in either order. Wait (bounded) for both.
   std::string body, content_type;
   for (int i = 0; i < 500; ++i) {
     if (auto m = server.client().Get("/metrics")) {
       body = m->body, content_type = m->get_header_value("Content-Type");
-      if (metric(body, R"(rasterd_requests_total{route="other",status="404"})") == 1) break;
+      if (metric(body, R"(rasterd_requests_total{route="other",status="404"})") == 1 &&
+          metric(body, R"(rasterd_requests_total{route="/render",status="200"})") == 1)
+        break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }

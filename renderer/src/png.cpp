@@ -10,6 +10,7 @@
 // process-wide settings.)
 #include "raster/png.h"
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <new>
@@ -63,6 +64,7 @@ Deflater& deflater_for(int level) {
 // the data does not compress: its untouched tail gets no memory pages. Returns the buffer and the size.
 std::pair<std::unique_ptr<std::uint8_t[]>, std::size_t> zlib_compress(const std::vector<std::uint8_t>& in,
                                                                       int level) {
+  level = std::clamp(level, 0, 3);  // igzip's levels
   Deflater& d = deflater_for(level);
   isal_zstream& s = d.stream;
   isal_deflate_init(&s);
@@ -158,9 +160,10 @@ std::vector<std::uint8_t> encode_png(const Image& image, const PngPlan& png) {
 }
 
 std::vector<std::uint8_t> encode_png(Image&& image, const PngPlan& png) {
-  // The same rows, filtered where they lie: each row moves y + 1 bytes up to make room for the filter
-  // bytes, so rows go bottom to top (the row above is still unfiltered when a row needs it), and within
-  // a row 16 bytes are read before they are written, from the end down, so no unread byte is overwritten.
+  // The same rows, filtered where they lie: row y moves y + 1 bytes further into the buffer to make room
+  // for the filter bytes, so rows go bottom to top (the row above is still unfiltered when a row needs it),
+  // and within a row 16 bytes are read before they are written, from the end down, so no unread byte is
+  // overwritten.
   using Bytes = std::uint8_t __attribute__((vector_size(16)));
   const std::size_t stride = static_cast<std::size_t>(image.width) * image.channels();
   const std::size_t height = static_cast<std::size_t>(image.height);

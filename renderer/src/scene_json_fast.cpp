@@ -84,7 +84,6 @@ class Cursor {
     space();
     return p_ == end_;
   }
-  template <class E>
   bool consume(char c) {
     if (p_ < end_ && *p_ == c) return ++p_, true;  // the usual case: no whitespace before it
     space();
@@ -93,7 +92,7 @@ class Cursor {
   }
   template <class E>
   void expect(char c) {
-    if (!consume<E>(c)) throw E{};
+    if (!consume(c)) throw E{};
   }
   template <class E>
   char peek() {
@@ -113,9 +112,9 @@ class Cursor {
   }
 
   // A JSON number as nlohmann reads it into a double (strtod, correctly rounded; integer syntax through an
-  // integer, so "-0" is +0). `integral` tells whether it was written without fraction or exponent.
+  // integer, so "-0" is +0).
   template <class E>
-  double number(bool* integral = nullptr) {
+  double number() {
     space();
     const char* start = p_;
     const bool negative = p_ < end_ && *p_ == '-';
@@ -146,7 +145,6 @@ class Cursor {
       while (p_ < end_ && is_digit(*p_)) ++p_;
     }
     const bool is_integral = !has_fraction && !has_exponent;
-    if (integral) *integral = is_integral;
     // Clinger's fast path: mantissa and power of ten are exact doubles, so the one IEEE division rounds
     // correctly, as strtod does.
     if (!has_exponent && digit_count <= 19 && mantissa <= (std::uint64_t{1} << 53) && fraction <= 22) {
@@ -259,7 +257,7 @@ class Reader {
     json fields = json::object();  // the root's fields other than "primitives"
     bool seen_primitives = false;
     in_.expect<GiveUp>('{');
-    if (!in_.consume<GiveUp>('}')) {
+    if (!in_.consume('}')) {
       do {
         const std::string_view key = in_.string<GiveUp>();
         in_.expect<GiveUp>(':');
@@ -271,7 +269,7 @@ class Reader {
           if (fields.contains(key)) throw GiveUp{};
           fields[std::string(key)] = value(1);
         }
-      } while (in_.consume<GiveUp>(','));
+      } while (in_.consume(','));
       in_.expect<GiveUp>('}');
     }
     if (!in_.at_end()) throw GiveUp{};
@@ -281,9 +279,9 @@ class Reader {
 
  private:
   // Growing the flat arrays by doubling would copy them and fault their pages in twice. Every point is an
-  // array, and every primitive holds at least two, so counting '[' bounds both; so does the text's
-  // length, as the shortest point is "[0,0],". The unused part of a reservation is address space the
-  // kernel never backs.
+  // array and a triangle, line or mesh holds at least two, so counting '[' bounds the points and (models
+  // aside) the primitives; the shortest point, "[0,0],", caps the count by the text's length. A
+  // reservation that proves short just grows; its unused part is address space the kernel never backs.
   void reserve(Scene& scene) {
     if (text_size_ < (1 << 16)) return;
     const std::size_t arrays = std::min(count_byte(begin_, text_size_, '['), text_size_ / 6);
@@ -306,7 +304,7 @@ class Reader {
   void read_primitives(Scene& scene) {
     const Path pointer(kRoot, "primitives");
     in_.expect<GiveUp>('[');
-    if (in_.consume<GiveUp>(']')) return;
+    if (in_.consume(']')) return;
     std::size_t i = 0;
     do {
       if (static_cast<std::int64_t>(i) >= limits_.max_primitives) throw GiveUp{};
@@ -318,11 +316,12 @@ class Reader {
       } catch (const HandOver&) {
         in_.seek(start);
         const json v = value(kPrimitiveDepth - 1);
-        read_primitive(v, Path(pointer, i), scene, limits_, uploads_);  // throws its error: GiveUp below
+        // A SceneError from here ends the streaming read; the DOM reader then reports it in document order.
+        read_primitive(v, Path(pointer, i), scene, limits_, uploads_);
         ++stats_.handed;
       }
       ++i;
-    } while (in_.consume<GiveUp>(','));
+    } while (in_.consume(','));
     in_.expect<GiveUp>(']');
   }
 
@@ -330,7 +329,7 @@ class Reader {
     PrimitiveText& t = text_;
     t.clear();
     in_.expect<HandOver>('{');
-    if (in_.consume<HandOver>('}')) throw HandOver{};
+    if (in_.consume('}')) throw HandOver{};
     do {
       const std::string_view key = in_.string<HandOver>();
       in_.expect<HandOver>(':');
@@ -368,25 +367,25 @@ class Reader {
       } else {
         throw HandOver{};  // "obj" fields, or an unknown field (an error the DOM reader words)
       }
-    } while (in_.consume<HandOver>(','));
+    } while (in_.consume(','));
     in_.expect<HandOver>('}');
   }
 
   // [[x, y], ...] or [[x, y, z], ...]: the first point decides, like the DOM reader.
   void read_points(PrimitiveText& t) {
     in_.expect<HandOver>('[');
-    if (in_.consume<HandOver>(']')) throw HandOver{};
+    if (in_.consume(']')) throw HandOver{};
     do {
       in_.expect<HandOver>('[');
       std::size_t k = 0;
       do {
         if (++k > 3) throw HandOver{};
         t.points.push_back(coordinate());
-      } while (in_.consume<HandOver>(','));
+      } while (in_.consume(','));
       in_.expect<HandOver>(']');
       if (t.dims == 0) t.dims = k == 3 ? 3 : 2;
       if (k != t.dims) throw HandOver{};
-    } while (in_.consume<HandOver>(','));
+    } while (in_.consume(','));
     in_.expect<HandOver>(']');
   }
 
@@ -398,19 +397,19 @@ class Reader {
 
   void read_color_list(std::vector<Rgba8>& out) {
     in_.expect<HandOver>('[');
-    if (in_.consume<HandOver>(']')) return;
+    if (in_.consume(']')) return;
     do {
       Rgba8 c;
       if (!parse_hex_color(in_.string<HandOver>(), c)) throw HandOver{};
       out.push_back(c);
-    } while (in_.consume<HandOver>(','));
+    } while (in_.consume(','));
     in_.expect<HandOver>(']');
   }
 
   // [x, y, z, x, y, z, ...] or [[x, y, z], ...]: the first entry decides, like the DOM reader.
   void read_vec3_list(std::vector<Vec3>& out) {
     in_.expect<HandOver>('[');
-    if (in_.consume<HandOver>(']')) return;
+    if (in_.consume(']')) return;
     if (in_.peek<HandOver>() == '[') {
       do {
         in_.expect<HandOver>('[');
@@ -422,7 +421,7 @@ class Reader {
         v.z = coordinate();
         in_.expect<HandOver>(']');
         out.push_back(v);
-      } while (in_.consume<HandOver>(','));
+      } while (in_.consume(','));
     } else {
       do {
         Vec3 v;
@@ -432,7 +431,7 @@ class Reader {
         in_.expect<HandOver>(',');
         v.z = coordinate();
         out.push_back(v);
-      } while (in_.consume<HandOver>(','));
+      } while (in_.consume(','));
     }
     in_.expect<HandOver>(']');
   }
@@ -440,7 +439,7 @@ class Reader {
   // [a, b, c, ...] or [[a, b, c], ...].
   void read_index_list(std::vector<std::uint32_t>& out) {
     in_.expect<HandOver>('[');
-    if (in_.consume<HandOver>(']')) return;
+    if (in_.consume(']')) return;
     const bool nested = in_.peek<HandOver>() == '[';
     do {
       if (nested) in_.expect<HandOver>('[');
@@ -450,7 +449,7 @@ class Reader {
       in_.expect<HandOver>(',');
       out.push_back(in_.index<HandOver>());
       if (nested) in_.expect<HandOver>(']');
-    } while (in_.consume<HandOver>(','));
+    } while (in_.consume(','));
     in_.expect<HandOver>(']');
   }
 
