@@ -13,20 +13,10 @@
 #include "raster/raster.h"
 #include "scenes.h"
 #include "stb_stock.h"
+#include "timing.h"
 #include "wall.h"
 
 namespace {
-
-double median_ms(int runs, const std::function<void()>& fn) {
-  std::vector<double> ms;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    fn();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  }
-  std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-  return ms[ms.size() / 2];
-}
 
 // LP_NUM_THREADS=t osmesa_peer: llvmpipe reads its thread count once per process.
 std::map<std::string, double> peer_ms(const std::string& peer, int threads, int runs) {
@@ -71,21 +61,19 @@ int main(int argc, char** argv) {
     raster::Scene scene;
     std::vector<double> parse_runs;
     for (int r = 0; r < runs; ++r) {
-      const auto p0 = std::chrono::steady_clock::now();
+      const auto start = std::chrono::steady_clock::now();
       raster::Scene parsed = raster::parse_scene(json);
-      parse_runs.push_back(
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p0).count());
+      parse_runs.push_back(bench::ms_since(start));
       if (r == 0) scene = std::move(parsed);
     }
-    std::nth_element(parse_runs.begin(), parse_runs.begin() + runs / 2, parse_runs.end());
-    const double parse = parse_runs[runs / 2];
+    const double parse = bench::median(parse_runs);
     if (!rasterd.empty()) wall[kind] = bench::wall_times(rasterd, json, std::max(3, runs / 2));
     for (int threads : {1, 2}) {
       raster::PlanOptions options;
       options.max_threads = threads;
       raster::Image image;
       raster::RenderPlan plan;
-      const double raster_ms = median_ms(runs, [&] {
+      const double raster_ms = bench::median_ms(runs, [&] {
         plan = raster::plan(scene, {}, options);
         image = raster::render(scene, plan);
       });
@@ -98,16 +86,14 @@ int main(int argc, char** argv) {
         consumed.width = image.width, consumed.height = image.height, consumed.format = image.format;
         consumed.pixels.reserve(image.pixels.size() + static_cast<std::size_t>(image.height));
         consumed.pixels = image.pixels;
-        const auto e0 = std::chrono::steady_clock::now();
+        const auto start = std::chrono::steady_clock::now();
         png = raster::encode_png(std::move(consumed), plan.png);
-        encode_runs.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count());
+        encode_runs.push_back(bench::ms_since(start));
       }
-      std::nth_element(encode_runs.begin(), encode_runs.begin() + runs / 2, encode_runs.end());
-      const double encode = encode_runs[runs / 2];
+      const double encode = bench::median(encode_runs);
       std::size_t stb_size = 0;
       const double stb =
-          median_ms(std::max(3, runs / 3), [&] { stb_size = bench::stb_stock_png_size(image); });
+          bench::median_ms(std::max(3, runs / 3), [&] { stb_size = bench::stb_stock_png_size(image); });
       const double total = parse + raster_ms + encode;
       const double peer_raster =
           llvmpipe.count(threads) && llvmpipe[threads].count(kind) ? llvmpipe[threads][kind] : 0;

@@ -6,7 +6,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -15,6 +14,7 @@
 
 #include "raster/raster.h"
 #include "scenes.h"
+#include "timing.h"
 
 namespace {
 
@@ -36,10 +36,9 @@ long peak_kib(const std::string& rasterd, const std::string& scene_path) {
 }
 
 long median_peak_kib(const std::string& rasterd, const std::string& path, int runs) {
-  std::vector<long> peaks;
-  for (int r = 0; r < runs; ++r) peaks.push_back(peak_kib(rasterd, path));
-  std::sort(peaks.begin(), peaks.end());
-  return peaks[peaks.size() / 2];
+  std::vector<double> peaks;
+  for (int r = 0; r < runs; ++r) peaks.push_back(static_cast<double>(peak_kib(rasterd, path)));
+  return static_cast<long>(bench::median(peaks));
 }
 
 std::string write_temp(const std::string& name, const std::string& text) {

@@ -6,10 +6,8 @@
 #include <libdeflate.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,19 +15,9 @@
 #include "raster/raster.h"
 #include "scenes.h"
 #include "stb_stock.h"
+#include "timing.h"
 
 namespace {
-
-double median_ms(int runs, const std::function<void()>& fn) {
-  std::vector<double> ms;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    fn();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  }
-  std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-  return ms[ms.size() / 2];
-}
 
 // PNG filter bytes + rows with one fixed filter for every row: 0 None, 1 Sub, 2 Up.
 std::vector<std::uint8_t> filter_rows(const raster::Image& image, int filter) {
@@ -90,9 +78,9 @@ int main(int argc, char** argv) {
       std::printf("| %s | %s | %s | %.2f | %zu |\n", kind, filter, compressor.c_str(), ms, bytes / 1024);
     };
     std::size_t size = 0;
-    double ms = median_ms(runs, [&] { size = raster::encode_png(image, plan.png).size(); });
+    double ms = bench::median_ms(runs, [&] { size = raster::encode_png(image, plan.png).size(); });
     row("Up", "**rasterd encode_png (whole encode)**", ms, size);
-    ms = median_ms(std::max(3, runs / 2), [&] { size = bench::stb_stock_png_size(image); });
+    ms = bench::median_ms(std::max(3, runs / 2), [&] { size = bench::stb_stock_png_size(image); });
     row("stb's heuristic", "stb_image_write as shipped (whole encode)", ms, size);
     std::vector<std::uint8_t> out(image.pixels.size() * 2 + 65536);
     const char* filter_names[] = {"None", "Sub", "Up"};
@@ -100,12 +88,12 @@ int main(int argc, char** argv) {
       const std::vector<std::uint8_t> rows = filter_rows(image, filter);
       for (int level = 0; level <= 3; ++level) {
         if (filter != 2 && level != 1) continue;  // filters compared at the chosen level only
-        ms = median_ms(runs, [&] { size = igzip(rows, level, out); });
+        ms = bench::median_ms(runs, [&] { size = igzip(rows, level, out); });
         row(filter_names[filter], "igzip (ISA-L) level " + std::to_string(level), ms, size);
       }
       if (filter != 2) continue;
       for (int level : {1, 6}) {
-        ms = median_ms(runs, [&] { size = deflate(rows, level, out); });
+        ms = bench::median_ms(runs, [&] { size = deflate(rows, level, out); });
         row(filter_names[filter], "libdeflate level " + std::to_string(level), ms, size);
       }
     }

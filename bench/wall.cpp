@@ -11,7 +11,8 @@
 
 #include <httplib.h>
 
-#include <algorithm>
+#include "timing.h"
+
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -21,15 +22,6 @@
 
 namespace bench {
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
 
 pid_t spawn(const std::vector<std::string>& args) {
   const pid_t pid = fork();

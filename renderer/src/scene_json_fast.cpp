@@ -408,31 +408,23 @@ class Reader {
 
   // [x, y, z, x, y, z, ...] or [[x, y, z], ...]: the first entry decides, like the DOM reader.
   void read_vec3_list(std::vector<Vec3>& out) {
+    auto xyz = [&] {
+      Vec3 v;
+      v.x = coordinate();
+      in_.expect<HandOver>(',');
+      v.y = coordinate();
+      in_.expect<HandOver>(',');
+      v.z = coordinate();
+      return v;
+    };
     in_.expect<HandOver>('[');
     if (in_.consume(']')) return;
-    if (in_.peek<HandOver>() == '[') {
-      do {
-        in_.expect<HandOver>('[');
-        Vec3 v;
-        v.x = coordinate();
-        in_.expect<HandOver>(',');
-        v.y = coordinate();
-        in_.expect<HandOver>(',');
-        v.z = coordinate();
-        in_.expect<HandOver>(']');
-        out.push_back(v);
-      } while (in_.consume(','));
-    } else {
-      do {
-        Vec3 v;
-        v.x = coordinate();
-        in_.expect<HandOver>(',');
-        v.y = coordinate();
-        in_.expect<HandOver>(',');
-        v.z = coordinate();
-        out.push_back(v);
-      } while (in_.consume(','));
-    }
+    const bool nested = in_.peek<HandOver>() == '[';
+    do {
+      if (nested) in_.expect<HandOver>('[');
+      out.push_back(xyz());
+      if (nested) in_.expect<HandOver>(']');
+    } while (in_.consume(','));
     in_.expect<HandOver>(']');
   }
 
