@@ -51,7 +51,7 @@ struct MemoryPlan {
 /// PNG settings: the colour type follows the pixel format (0 grey, 4 grey+alpha, 2 RGB, 6 RGBA). Rows are
 /// always filtered with "Up" (see png.cpp for the measurement).
 struct PngPlan {
-  int color_type = 2;     ///< PNG IHDR colour type
+  int color_type = 2;  ///< PNG IHDR colour type
   /// igzip (ISA-L) level, 0 (fastest) .. 3 (smallest); 1 is the fastest whose files stay smaller than
   /// stb_image_write's on the benchmark scenes (docs/performance.md).
   int deflate_level = 1;
