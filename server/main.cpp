@@ -1,5 +1,7 @@
 // rasterd: `rasterd render scene.json -o out.png` and `rasterd serve --port 8080`.
+#include <fcntl.h>
 #include <signal.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <condition_variable>
@@ -146,6 +148,24 @@ int run_serve(const std::vector<std::string>& args) {
   sigaddset(&signals, SIGINT);
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every thread started below
+
+  // Tests only (tests/service_test.cpp): each admitted render first reads one byte from this FIFO, so a
+  // test holds renders in flight, sends a signal, and releases them when it chooses. Opened read-write so
+  // that opening never blocks and the FIFO stays open between the test's writes.
+  int gate = -1;
+  if (const char* path = std::getenv("RASTERD_TEST_RENDER_GATE")) {
+    gate = ::open(path, O_RDWR | O_CLOEXEC);
+    if (gate < 0) {
+      std::cerr << "rasterd: cannot open RASTERD_TEST_RENDER_GATE " << path << ": " << std::strerror(errno)
+                << "\n";
+      return 1;
+    }
+    config.after_admission = [gate] {
+      char byte;
+      while (::read(gate, &byte, 1) < 0 && errno == EINTR) {
+      }
+    };
+  }
 
   httplib::Server server;
   rasterd::Service service(config);

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "raster/utf8.h"
+
 namespace rasterd {
 
 Problem problem(int status, std::string slug, std::string title, std::string detail) {
@@ -28,9 +30,13 @@ Problem problem_from(const raster::SceneError& error) {
     case raster::ErrorKind::model:
       p = problem(422, "invalid-model", "The model cannot be used", error.what());
       break;
+    case raster::ErrorKind::encoding:
+      p = problem(400, "invalid-encoding", "The text is not valid UTF-8", error.what());
+      break;
   }
   const raster::ErrorLocation& where = error.where();
-  // Semantic errors are located by pointer (possibly "" = the whole document); syntax errors by byte.
+  // Semantic errors are located by pointer (possibly "" = the whole document); syntax and encoding errors
+  // by byte (of the text the detail names: the body, a model, a parameter) and, in a model, by line.
   if (error.kind() == raster::ErrorKind::invalid || error.kind() == raster::ErrorKind::limit)
     p.pointer = where.pointer;
   p.byte = where.byte;
@@ -39,9 +45,13 @@ Problem problem_from(const raster::SceneError& error) {
 }
 
 void write_problem(httplib::Response& res, const Problem& p) {
-  nlohmann::ordered_json body = {
-      {"type", p.type}, {"title", p.title}, {"status", p.status}, {"detail", p.detail}};
-  if (p.pointer) body["pointer"] = *p.pointer;
+  // Details and pointers may quote client text (a header, a path, a key): escaped here, in the one place
+  // every problem passes, so no byte a client sends can make the JSON writer throw.
+  nlohmann::ordered_json body = {{"type", p.type},
+                                 {"title", p.title},
+                                 {"status", p.status},
+                                 {"detail", raster::escape_for_display(p.detail)}};
+  if (p.pointer) body["pointer"] = raster::escape_for_display(*p.pointer);
   if (p.byte != 0) body["byte"] = p.byte;
   if (p.line != 0) body["line"] = p.line;
   res.status = p.status;

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "raster/utf8.h"
+
 namespace rasterd {
 namespace {
 
@@ -74,6 +76,11 @@ std::string default_scene_json(const Params& params) {
 
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
                                  const raster::Limits& limits) {
+  // Parameters become JSON text below and are quoted in errors: their bytes must be UTF-8 first.
+  for (const auto& [name, value] : params) {
+    raster::require_utf8(name, "the name of a query parameter");
+    raster::require_utf8(value, "query parameter \"" + name + "\"");
+  }
   if (starts_like_json(body)) return raster::parse_scene(body, limits, uploads);
   if (looks_like_flattened_obj(body))
     throw raster::SceneError(

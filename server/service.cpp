@@ -158,6 +158,11 @@ struct Service::State {
 
   explicit State(ServiceConfig c) : config(c), admission(c.workers, c.max_queue) {}
 
+  // How long a connection may stay silent: the body deadline, at most 5 s (also between requests' headers).
+  std::chrono::milliseconds read_timeout() const {
+    return std::min<std::chrono::milliseconds>(config.body_deadline, std::chrono::milliseconds(5000));
+  }
+
   bool refuse(httplib::Response& res, const Problem& p, const std::string& reason) {
     metrics.rejected(reason);
     write_problem(res, p);
@@ -188,7 +193,9 @@ struct Service::State {
 
     const Clock::time_point deadline = t_request.start + config.body_deadline;
     bool over = false, late = false;
+    Clock::time_point last_arrival = Clock::now();
     auto take = [&](std::string& into, const char* data, std::size_t n) {
+      last_arrival = Clock::now();
       t_request.bytes_in += n;
       over = t_request.bytes_in > cap;
       late = !over && Clock::now() > deadline;
@@ -199,17 +206,32 @@ struct Service::State {
     bool complete;
     if (req.is_multipart_form_data()) {
       std::string* current = nullptr;
+      std::string bad_name;  // a part name that is not UTF-8: the names are echoed in errors
       complete = reader(
           [&](const httplib::MultipartFormData& part) {
+            if (raster::first_invalid_utf8(part.name) != std::string_view::npos) {
+              bad_name = part.name;
+              return false;
+            }
             current = part.name == "scene" ? &body : &uploads[part.name];
             return true;
           },
           [&](const char* data, std::size_t n) { return take(*current, data, n); });
+      if (!bad_name.empty()) {
+        try {
+          raster::require_utf8(bad_name, "a multipart part name");
+        } catch (const raster::SceneError& e) {
+          return refuse(res, problem_from(e), "encoding");
+        }
+      }
     } else {
       if (const auto declared = req.get_header_value<std::uint64_t>("Content-Length")) body.reserve(declared);
       complete = reader([&](const char* data, std::size_t n) { return take(body, data, n); });
     }
     if (over) return too_large();
+    // A client that went quiet for the socket's read timeout also failed to deliver its body in time;
+    // one whose connection ended is past answering anyway.
+    if (!complete && Clock::now() - last_arrival >= read_timeout()) late = true;
     if (late)
       return refuse(res,
                     problem(408, "body-timeout", "The request body did not arrive in time",
@@ -239,6 +261,7 @@ struct Service::State {
       Admission& a;
       ~Leave() { a.leave(); }
     } leave{admission};
+    if (config.after_admission) config.after_admission();
 
     const Clock::time_point t0 = Clock::now();
     try {
@@ -250,7 +273,10 @@ struct Service::State {
         return;
       }
       const Clock::time_point t1 = Clock::now();
-      raster::Image image = raster::render(scene, plan, {t0 + config.render_deadline, &cancel});
+      raster::RenderControl control;
+      control.deadline = t0 + config.render_deadline;
+      control.cancel = &cancel;
+      raster::Image image = raster::render(scene, plan, control);
       scene = {};  // done with: its memory goes before the PNG's comes
       const Clock::time_point t2 = Clock::now();
       // Consumed: filtered in place, so a request never holds two images.
@@ -311,9 +337,7 @@ void Service::install(httplib::Server& server) {
   // connection. A new connection costs tens of microseconds on a service whose requests cost
   // milliseconds, and no idle connection holds a thread.
   server.set_keep_alive_max_count(1);
-  const auto read_timeout =
-      std::min<std::chrono::milliseconds>(s.config.body_deadline, std::chrono::milliseconds(5000));
-  server.set_read_timeout(read_timeout);
+  server.set_read_timeout(s.read_timeout());
   server.set_socket_options([&s](socket_t sock) {
     httplib::default_socket_options(sock);
     if (s.listen_socket < 0)
@@ -362,7 +386,8 @@ void Service::install(httplib::Server& server) {
         } catch (...) {
         }
         std::fprintf(stderr, "error id=%s %s %s: %s\n", res.get_header_value("X-Request-Id").c_str(),
-                     req.method.c_str(), req.path.c_str(), what.c_str());
+                     req.method.c_str(), raster::escape_for_display(req.path).c_str(),
+                     raster::escape_for_display(what).c_str());
         write_problem(res, problem(500, "internal", "Internal server error",
                                    "the request failed unexpectedly; quote request id " +
                                        res.get_header_value("X-Request-Id")));
@@ -371,9 +396,10 @@ void Service::install(httplib::Server& server) {
   server.set_logger([&s](const httplib::Request& req, const httplib::Response& res) {
     const std::size_t in = t_request.bytes_in ? t_request.bytes_in : req.body.size();
     s.metrics.request(route_label(req.path), res.status, in, res.body.size());
-    std::fprintf(stderr, "%s %s %d in=%zu out=%zu ms=%.1f id=%s\n", req.method.c_str(), req.path.c_str(),
-                 res.status, in, res.body.size(), ms_between(t_request.start, Clock::now()),
-                 res.get_header_value("X-Request-Id").c_str());
+    // The path is the client's (percent-decoded): escaped so that it cannot forge or split a log line.
+    std::fprintf(stderr, "%s %s %d in=%zu out=%zu ms=%.1f id=%s\n", req.method.c_str(),
+                 raster::escape_for_display(req.path).c_str(), res.status, in, res.body.size(),
+                 ms_between(t_request.start, Clock::now()), res.get_header_value("X-Request-Id").c_str());
   });
 }
 

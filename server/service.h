@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -23,6 +24,9 @@ struct ServiceConfig {
   std::chrono::milliseconds render_deadline{10'000};  ///< parse + render + encode; 503 past it
   std::chrono::milliseconds body_deadline{10'000};    ///< reading the body, whatever its pace; 408 past it
   std::chrono::milliseconds shutdown_grace{20'000};   ///< after SIGTERM, how long renders may finish
+  /// Tests only (empty in service): runs on the request's thread once a render is admitted, before its
+  /// scene is read. A test holds renders in flight on a latch here, or throws to force an internal error.
+  std::function<void()> after_admission;
 };
 
 /// Reads the configuration from `--flag value` arguments over environment variables over defaults.

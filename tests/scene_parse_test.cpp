@@ -116,10 +116,11 @@ TEST(SceneParse, ColourComponentsOutsideUnitRangeHintAtHex) {
             "/background/1");
 }
 
+// (Text that is not UTF-8 is its own kind, ErrorKind::encoding, also with a byte offset: utf8_test.cpp.)
 TEST(SceneParse, MalformedJsonIsASyntaxErrorWithAByteOffset) {
-  for (const std::string text : {"", "{", R"({"width": 8, "height": 8)", R"({"width": NaN, "height": 8})",
-                                 R"({"width": Infinity})", R"({"width": 1e400, "height": 8})",
-                                 "{\"width\": 8, \"height\": 8, \"x\": \"\xff\xfe\"}", "{} trailing"}) {
+  for (const std::string text :
+       {"", "{", R"({"width": 8, "height": 8)", R"({"width": NaN, "height": 8})", R"({"width": Infinity})",
+        R"({"width": 1e400, "height": 8})", "{} trailing"}) {
     const auto e = parse_error(text);
     EXPECT_EQ(e.kind(), ErrorKind::syntax) << text;
     if (!text.empty()) {

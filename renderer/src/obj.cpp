@@ -9,6 +9,7 @@
 #include <tiny_obj_loader.h>
 
 #include "raster/scene.h"
+#include "raster/utf8.h"
 
 namespace raster {
 namespace {
@@ -130,6 +131,9 @@ std::uint8_t unit_byte(double v) {
 }  // namespace
 
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits) {
+  // Checked first: names and tokens of the model are quoted in its errors.
+  require_utf8(obj_text, "the model (OBJ)", true);
+  require_utf8(mtl_text, "the materials (MTL)", true);
   const Counts counts = prescan(obj_text, limits);
   if (counts.v == 0) model_error(0, "the model is empty: it defines no vertices");
   if (counts.faces == 0 && counts.segments == 0)

@@ -87,7 +87,7 @@ Edge make_edge(const ScreenVertex& from, const ScreenVertex& to) {
 // Returns the doubled area (0: degenerate, nothing covered).
 template <typename Span>
 std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)[3], Rect clip,
-                           SamplePoint sample, Span&& span) {
+                           SamplePoint sample, StopMeter& meter, Span&& span) {
   ScreenVertex v[3];
   for (int k = 0; k < 3; ++k) v[k].x = xs[k], v[k].y = ys[k];
   std::int64_t area = (std::int64_t{v[1].x} - v[0].x) * (std::int64_t{v[2].y} - v[0].y) -
@@ -151,6 +151,8 @@ std::int64_t for_each_span(const std::int32_t (&xs)[3], const std::int32_t (&ys)
       span(j, lo, hi, w, step, row_step, area);
     }
     for (int k = 0; k < 3; ++k) row_value[k] += e[k].b * kSubpixelScale;
+    // deadline: a triangle as large as the image is checked every few dozen rows
+    if (meter.add(StopMeter::kRowWork + std::max<std::int64_t>(0, hi - lo + 1))) break;
   }
   return area;
 }
@@ -250,13 +252,13 @@ void store_affine_span(std::uint8_t* p, std::int64_t count, const std::int64_t (
 }
 
 template <int C>
-void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip,
-                   SamplePoint sample) {
+void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, Rect clip, SamplePoint sample,
+                   StopMeter& meter) {
   const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x},
                      ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
   const Rgba8 c[3] = {tri.v[0].color, tri.v[1].color, tri.v[2].color};
   if (!mode.smooth) {
-    for_each_span(xs, ys, clip, sample,
+    for_each_span(xs, ys, clip, sample, meter,
                   [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t(&)[3],
                       const std::int64_t(&)[3], const std::int64_t(&)[3], std::int64_t) {
                     shade_span<C>(image.pixels.data() + (j * image.width + lo) * C, hi - lo + 1, mode, c[0],
@@ -270,7 +272,7 @@ void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, 
   std::uint8_t lo_c[4], hi_c[4];
   double scale = 0;
   for_each_span(
-      xs, ys, clip, sample,
+      xs, ys, clip, sample, meter,
       [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t(&w)[3],
           const std::int64_t(&step)[3], const std::int64_t(&)[3], std::int64_t area) {
         if (scale == 0) {  // once per triangle: depends on the triangle only
@@ -315,7 +317,7 @@ void fill_triangle(const ScreenTriangle& tri, PrimitivePlan mode, Image& image, 
 
 template <int C>
 void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawList& list, Image& image,
-                         float* depth, Rect clip, SamplePoint sample) {
+                         float* depth, Rect clip, SamplePoint sample, StopMeter& meter) {
   const std::int32_t xs[3] = {tri.v[0].x, tri.v[1].x, tri.v[2].x},
                      ys[3] = {tri.v[0].y, tri.v[1].y, tri.v[2].y};
   const DepthVertex* v = tri.v;
@@ -324,7 +326,7 @@ void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawL
                    to_byte(v[0].color[3])};
   const double flip = tri.back_facing ? -1.0 : 1.0;  // two-sided lighting
   for_each_span(
-      xs, ys, clip, sample,
+      xs, ys, clip, sample, meter,
       [&](std::int64_t j, std::int64_t lo, std::int64_t hi, const std::int64_t(&w)[3],
           const std::int64_t(&step)[3], const std::int64_t(&)[3], std::int64_t area) {
         const double inv_area = 1.0 / static_cast<double>(area);
@@ -380,7 +382,7 @@ void fill_depth_triangle(const DepthTriangle& tri, const DrawOp& op, const DrawL
 
 template <int C>
 void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& image, Rect clip,
-                        SamplePoint sample) {
+                        SamplePoint sample, StopMeter& meter) {
   int order[3] = {0, 1, 2};
   Wide x[3], y[3];
   for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(tri.x[k]), y[k] = Wide::from_double(tri.y[k]);
@@ -454,6 +456,7 @@ void fill_huge_triangle(const HugeTriangle& tri, PrimitivePlan mode, Image& imag
       });
     }
     for (int k = 0; k < 3; ++k) row_value[k] += step_y[k];
+    if (meter.add(StopMeter::kRowWork + std::max<std::int64_t>(0, hi - lo + 1))) return;  // deadline
   }
 }
 
@@ -590,58 +593,35 @@ bool line_fits_int128(const ScreenLine& l) {
          std::fabs(l.y1) <= kLimit;
 }
 
-// How often the deadline is checked, in rough work units: a record costs 1 plus the pixel rows its
-// bounding box spans, so a check (~20 ns) comes every few big triangles or every few thousand small ones,
-// i.e. within milliseconds either way.
-constexpr std::int64_t kWorkPerStopCheck = 4096;
-
-std::int64_t rows_spanned(std::int64_t y0, std::int64_t y1, std::int64_t y2) {
-  return (std::max({y0, y1, y2}) - std::min({y0, y1, y2})) >> kSubpixelBits;
-}
-
-std::int64_t rough_work(const DrawList& list, const DrawOp& op, std::uint32_t k) {
-  switch (op.kind) {
-    case DrawOp::Kind::triangles: {
-      const auto& v = list.triangles[k].v;
-      return 1 + rows_spanned(v[0].y, v[1].y, v[2].y);
-    }
-    case DrawOp::Kind::depth_triangles: {
-      const auto& v = list.depth_triangles[k].v;
-      return 1 + rows_spanned(v[0].y, v[1].y, v[2].y);
-    }
-    case DrawOp::Kind::huge_triangles:
-      return kWorkPerStopCheck;  // rare and possibly image-sized
-    case DrawOp::Kind::lines:
-      return 1;
-  }
-  return 1;
+// A 1-px line steps one pixel per column (or row) of its longer axis, clipped to the band first.
+std::int64_t line_work(const ScreenLine& l, Rect clip) {
+  const double steps = std::max(std::fabs(l.x1 - l.x0), std::fabs(l.y1 - l.y0));  // pixels
+  const double most = std::max(clip.x1 - clip.x0, clip.y1 - clip.y0);
+  return 1 + static_cast<std::int64_t>(std::min(steps, most));
 }
 
 template <int C>
-void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop,
+void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, StopMeter& meter,
               SamplePoint sample) {
-  std::int64_t work = 0;
   for (const DrawOp& op : list.ops) {
     for (std::uint32_t k = op.first; k < op.first + op.count; ++k) {
-      if ((work += rough_work(list, op, k)) >= kWorkPerStopCheck) {
-        work = 0;
-        if (stop.now()) return;
-      }
+      if (meter.add(StopMeter::kPrimitiveWork)) return;
       switch (op.kind) {
         case DrawOp::Kind::triangles:
-          fill_triangle<C>(list.triangles[k], op.mode, image, clip, sample);
+          fill_triangle<C>(list.triangles[k], op.mode, image, clip, sample, meter);
           break;
         case DrawOp::Kind::huge_triangles:
-          fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip, sample);
+          fill_huge_triangle<C>(list.huge_triangles[k], op.mode, image, clip, sample, meter);
           break;
         case DrawOp::Kind::depth_triangles:
-          fill_depth_triangle<C>(list.depth_triangles[k], op, list, image, depth, clip, sample);
+          fill_depth_triangle<C>(list.depth_triangles[k], op, list, image, depth, clip, sample, meter);
           break;
-        case DrawOp::Kind::lines:
+        case DrawOp::Kind::lines:  // clipped to the image, so at most one pixel per column or row of it
           if (line_fits_int128(list.lines[k]))
             draw_line<C, __int128>(list.lines[k], op.mode, image, depth, clip);
           else
             draw_line<C, Wide>(list.lines[k], op.mode, image, depth, clip);
+          meter.add(line_work(list.lines[k], clip));
           break;
       }
     }
@@ -652,22 +632,22 @@ void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, const
 
 bool Stop::now() const {
   if (stopped->load(std::memory_order_relaxed)) return true;
-  const bool stop =
-      (cancel && cancel->load(std::memory_order_relaxed)) || std::chrono::steady_clock::now() >= deadline;
+  const bool stop = (cancel && cancel->load(std::memory_order_relaxed)) ||
+                    (clock && *clock ? (*clock)() : std::chrono::steady_clock::now()) >= deadline;
   if (stop) stopped->store(true, std::memory_order_relaxed);
   return stop;
 }
 
-void draw(const DrawList& list, Image& image, float* depth, Rect clip, const Stop& stop, SamplePoint sample) {
+void draw(const DrawList& list, Image& image, float* depth, Rect clip, StopMeter& meter, SamplePoint sample) {
   switch (image.format) {
     case PixelFormat::grey8:
-      return draw_all<1>(list, image, depth, clip, stop, sample);
+      return draw_all<1>(list, image, depth, clip, meter, sample);
     case PixelFormat::grey_alpha8:
-      return draw_all<2>(list, image, depth, clip, stop, sample);
+      return draw_all<2>(list, image, depth, clip, meter, sample);
     case PixelFormat::rgb8:
-      return draw_all<3>(list, image, depth, clip, stop, sample);
+      return draw_all<3>(list, image, depth, clip, meter, sample);
     case PixelFormat::rgba8:
-      return draw_all<4>(list, image, depth, clip, stop, sample);
+      return draw_all<4>(list, image, depth, clip, meter, sample);
   }
 }
 

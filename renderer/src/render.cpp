@@ -2,6 +2,7 @@
 // applies every op in scene order, so the image is the same bytes for any number of bands.
 #include "raster/render.h"
 
+#include <algorithm>
 #include <thread>
 #include <vector>
 
@@ -14,7 +15,7 @@ namespace raster {
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control) {
   const detail::DrawList list = detail::build_draw_list(scene, plan);
   std::atomic<bool> stopped{false};  // set by whichever band first sees the deadline or the cancel flag
-  const detail::Stop stop{control.deadline, control.cancel, &stopped};
+  const detail::Stop stop{control.deadline, control.cancel, &stopped, &control.clock};
   Image image = detail::make_color_buffer(plan, scene.background);
 
   // Anti-aliasing: one colour plane (and depth plane) per sample position, drawn like an aliased image
@@ -32,11 +33,21 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     control.stats->pixel_bytes = bytes;
   }
   auto draw_band = [&](detail::Rect rows) {
+    detail::StopMeter meter(stop);
+    if (meter.check()) return;  // a deadline already past stops even the smallest render
     for (std::size_t s = 0; s < pattern.size(); ++s) {
       Image& target = planes.empty() ? image : planes[s];
-      detail::draw(list, target, depth[s].empty() ? nullptr : depth[s].data(), rows, stop, pattern[s]);
+      detail::draw(list, target, depth[s].empty() ? nullptr : depth[s].data(), rows, meter, pattern[s]);
+      if (meter.stopped()) return;
     }
-    if (!planes.empty()) detail::resolve(planes, image, rows);
+    if (planes.empty()) return;
+    // The resolve reads every sample plane: up to the whole pixel-storage limit, so it is metered too.
+    const int rows_per_check = std::max(
+        1, static_cast<int>(detail::StopMeter::kWorkPerCheck / (std::int64_t{image.width} * plan.samples)));
+    for (int y = rows.y0; y < rows.y1; y += rows_per_check) {
+      if (y > rows.y0 && meter.check()) return;
+      detail::resolve(planes, image, {rows.x0, y, rows.x1, std::min(rows.y1, y + rows_per_check)});
+    }
   };
   const int bands = plan.threads;
   if (bands <= 1) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "raster/scene.h"
+#include "raster/utf8.h"
 #include "scene_json.h"
 #include "vecmath.h"
 
@@ -461,7 +462,9 @@ Mesh read_obj(const json& v, const Path& pointer, const Limits& limits, const Up
   try {
     mesh = parse_obj(obj_text, mtl_text, limits);
   } catch (const SceneError& e) {
-    throw SceneError(e.kind(), located(e), ErrorLocation{pointer.str(), 0, e.where().line});
+    // An encoding error keeps its byte: the offset into the model's own text, which the message names.
+    const std::size_t byte = e.kind() == ErrorKind::encoding ? e.where().byte : 0;
+    throw SceneError(e.kind(), located(e), ErrorLocation{pointer.str(), byte, e.where().line});
   }
   if (auto it = v.find("color"); it != v.end()) {  // an explicit colour wins over the model's own
     mesh.colors = {read_color(*it, Path(pointer, "color"))};
@@ -790,6 +793,8 @@ Scene parse_scene_dom(std::string_view text, const Limits& limits, const Uploads
 namespace raster {
 
 Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
+  // JSON text is UTF-8 (RFC 8259 8.1): checked first, so no reader and no message ever holds a bad byte.
+  require_utf8(json_text, "the scene");
   if (auto scene = scene_json::parse_scene_fast(json_text, limits, uploads)) return std::move(*scene);
   return scene_json::parse_scene_dom(json_text, limits, uploads);
 }

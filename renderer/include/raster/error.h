@@ -9,10 +9,11 @@ namespace raster {
 
 /// What kind of problem the input has; the HTTP layer maps each kind to one status in one place.
 enum class ErrorKind {
-  syntax,   ///< not well-formed (bad JSON, truncated, too deeply nested): HTTP 400
-  invalid,  ///< well-formed but not a valid scene (wrong type, unknown field, bad colour): HTTP 400
-  limit,    ///< valid but over a configured limit (image size, primitive count): HTTP 422
-  model,    ///< an uploaded model is unusable (bad index, no faces): HTTP 422
+  syntax,    ///< not well-formed (bad JSON, truncated, too deeply nested): HTTP 400
+  invalid,   ///< well-formed but not a valid scene (wrong type, unknown field, bad colour): HTTP 400
+  limit,     ///< valid but over a configured limit (image size, primitive count): HTTP 422
+  model,     ///< an uploaded model is unusable (bad index, no faces): HTTP 422
+  encoding,  ///< text (a scene, a model, a name) that is not well-formed UTF-8: HTTP 400, with its byte
 };
 
 /// Where a problem is. Fields that do not apply are empty / zero.

@@ -7,3 +7,4 @@
 #include "raster/png.h"
 #include "raster/render.h"
 #include "raster/scene.h"
+#include "raster/utf8.h"

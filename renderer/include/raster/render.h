@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 
 #include "raster/image.h"
@@ -17,12 +18,19 @@ struct RenderStats {
   std::int64_t pixel_bytes = 0;  ///< bytes allocated for pixel storage: output, sample planes, depth
 };
 
-/// Per-render control from the caller: a deadline and a cancel flag, checked between batches of
-/// primitives in every band. Nothing here is process-wide.
+/// Per-render control from the caller: a deadline and a cancel flag. Both are looked at when each band
+/// starts and then after every ~64k pixels of work (inside a primitive too, so one image-sized triangle is
+/// checked every few dozen rows), so a render stops within a bounded time of its deadline however its work
+/// is split (docs/robustness.md has the measured bound). Nothing here is process-wide.
 struct RenderControl {
-  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point deadline = Clock::time_point::max();  ///< the render stops once clock() >= deadline
   const std::atomic<bool>* cancel = nullptr;  ///< optional; true stops the render (e.g. on shutdown)
   RenderStats* stats = nullptr;               ///< optional; filled in by render()
+  /// Optional; the time source for `deadline` (empty: steady_clock::now). Tests inject one to decide
+  /// when the deadline passes without depending on how fast the machine is. Called from every band's
+  /// thread, so it must be thread-safe.
+  std::function<Clock::time_point()> clock;
 };
 
 /// Thrown by render() when the deadline passed or the cancel flag was set; no image is returned.

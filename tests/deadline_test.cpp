@@ -1,0 +1,124 @@
+// The render deadline and cancel flag, with an injected clock: when they are looked at is a property of the
+// work done, not of how fast the machine does it, so these verdicts hold on any machine.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+
+#include "raster.h"
+#include "raster/raster.h"
+#include "support.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A scene of `count` triangles that each cover the whole `side` x `side` image, smooth-shaded.
+raster::Scene covering_triangles(int side, int count, int samples = 1) {
+  test::SceneBuilder b(side, side);
+  const double s = side;
+  for (int i = 0; i < count; ++i)
+    b.triangle({-s, -s}, {3 * s, -s}, {-s, 3 * s}, test::kRed, test::kGreen, test::kBlue);
+  b.scene.samples = samples;
+  return b.scene;
+}
+
+// A clock that reads `t0` until its `expire_at`-th reading (1-based), and one hour later from then on; it
+// counts its readings. Thread-safe: every band reads it.
+struct FakeClock {
+  const Clock::time_point t0 = Clock::now();
+  std::atomic<int> readings{0};
+  int expire_at = 1 << 30;
+  std::function<Clock::time_point()> fn() {
+    return [this] { return ++readings >= expire_at ? t0 + std::chrono::hours(1) : t0; };
+  }
+};
+
+// The plan, with exactly `threads` bands (the planner would keep small work on one).
+raster::RenderPlan plan_with_threads(const raster::Scene& scene, int threads) {
+  raster::RenderPlan plan = raster::plan(scene);
+  plan.threads = threads;
+  return plan;
+}
+
+TEST(Deadline, APastDeadlineStopsEvenATinyRender) {
+  raster::Scene scene = covering_triangles(1, 1);
+  raster::RenderControl control;
+  control.deadline = Clock::now() - std::chrono::seconds(1);
+  EXPECT_THROW(raster::render(scene, raster::plan(scene), control), raster::RenderCancelled);
+}
+
+TEST(Deadline, ACancelFlagAlreadySetStopsTheRender) {
+  raster::Scene scene = covering_triangles(8, 1);
+  std::atomic<bool> cancel{true};
+  raster::RenderControl control;
+  control.cancel = &cancel;
+  EXPECT_THROW(raster::render(scene, raster::plan(scene), control), raster::RenderCancelled);
+}
+
+// One primitive, as large as a 2048x2048 image: the deadline is looked at while it is drawn, every
+// StopMeter::kWorkPerCheck pixels, not only before and after it.
+TEST(Deadline, OneImageSizedTriangleIsCheckedWhileItIsDrawn) {
+  const raster::Scene scene = covering_triangles(2048, 1);
+  const raster::RenderPlan plan = plan_with_threads(scene, 1);
+  FakeClock clock;
+  raster::RenderControl control;
+  control.deadline = clock.t0 + std::chrono::seconds(1);
+  control.clock = clock.fn();
+  raster::render(scene, plan, control);
+  const int pixels = 2048 * 2048;
+  EXPECT_GE(clock.readings, pixels / raster::detail::StopMeter::kWorkPerCheck)
+      << "the deadline was not looked at inside the triangle";
+  EXPECT_LE(clock.readings, 2 * pixels / raster::detail::StopMeter::kWorkPerCheck + 2)
+      << "looked at far more often than the meter says (a clock read per row or per pixel costs time)";
+
+  // The deadline passes at the 5th look: the render stops there, with no look after it.
+  FakeClock expiring;
+  expiring.expire_at = 5;
+  control.clock = expiring.fn();
+  control.deadline = expiring.t0 + std::chrono::seconds(1);
+  EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled);
+  EXPECT_EQ(expiring.readings, 5);
+}
+
+// Anti-aliasing draws each sample plane and then reads them all in the resolve: both are metered, and
+// a deadline passing in the middle stops every band, whatever the thread count.
+TEST(Deadline, AntialiasedRendersStopInsideAPlaneOrTheResolve) {
+  const raster::Scene scene = covering_triangles(1024, 1, 16);
+  for (int threads : {1, 2, 3}) {
+    const raster::RenderPlan plan = plan_with_threads(scene, threads);
+    FakeClock counting;
+    raster::RenderControl control;
+    control.deadline = counting.t0 + std::chrono::seconds(1);
+    control.clock = counting.fn();
+    raster::render(scene, plan, control);
+    const int looks = counting.readings;
+    // 16 planes of 1024^2 pixels, plus the resolve reading them again
+    EXPECT_GE(looks, 16 * 1024 * 1024 / raster::detail::StopMeter::kWorkPerCheck) << threads << " threads";
+
+    for (int expire_at : {3, looks / 2, looks - 1}) {
+      FakeClock expiring;
+      expiring.expire_at = expire_at;
+      control.clock = expiring.fn();
+      control.deadline = expiring.t0 + std::chrono::seconds(1);
+      EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled)
+          << threads << " threads, expiring at look " << expire_at;
+      // Each band stops at its next look after the first one that saw the deadline.
+      EXPECT_LE(expiring.readings, expire_at + threads) << threads << " threads";
+    }
+  }
+}
+
+// A deadline that does not pass changes nothing: the same bytes as a render without one.
+TEST(Deadline, AFutureDeadlineDoesNotChangeTheImage) {
+  const raster::Scene scene = covering_triangles(300, 3, 4);
+  const raster::RenderPlan plan = plan_with_threads(scene, 2);
+  FakeClock clock;
+  raster::RenderControl control;
+  control.deadline = clock.t0 + std::chrono::seconds(1);
+  control.clock = clock.fn();
+  EXPECT_EQ(raster::render(scene, plan, control).pixels, raster::render(scene, plan).pixels);
+}
+
+}  // namespace
