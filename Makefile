@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy clean
+.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker clean
 
 deps:
 	@scripts/install-deps
@@ -61,6 +61,11 @@ loadtest: bench-build
 # examples/nginx.conf in front of rasterd, checked (installs nginx).
 test-proxy: build
 	@scripts/test-proxy
+
+# Builds the Dockerfile and checks the image: runtime libraries, HEALTHCHECK, renders identical to
+# $(BUILD)/rasterd's, non-root, clean SIGTERM; prints its size. docker where an engine runs, else podman.
+test-docker: build
+	@BUILD=$(BUILD) scripts/test-docker
 
 clean:
 	rm -rf build build-asan build-bench build-fuzz fuzz-out
