@@ -6,7 +6,9 @@
 #include <chrono>
 #include <functional>
 
+#include <nlohmann/json.hpp>
 #include "raster.h"
+
 #include "raster/raster.h"
 #include "support.h"
 
@@ -108,6 +110,42 @@ TEST(Deadline, AntialiasedRendersStopInsideAPlaneOrTheResolve) {
       EXPECT_LE(expiring.readings, expire_at + threads) << threads << " threads";
     }
   }
+}
+
+// Geometry is metered too: a mesh of 180,000 triangles that are all behind the camera costs no pixel, yet
+// transforming and clipping it is looked at every kWorkPerCheck / kPrimitiveWork triangles.
+TEST(Deadline, MeshGeometryIsCheckedWhileItIsTransformed) {
+  const int n = 300;  // n x n quads, 2 n^2 triangles
+  nlohmann::json positions = nlohmann::json::array(), indices = nlohmann::json::array();
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) positions.insert(positions.end(), {x, y, 0});
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const int a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+      indices.insert(indices.end(), {a, b, d, a, d, c});
+    }
+  const nlohmann::json doc = {
+      {"width", 64},
+      {"height", 64},
+      {"camera", {{"eye", {0, 0, 10}}, {"target", {0, 0, 20}}}},  // looking away from the mesh at z = 0
+      {"primitives", {{{"type", "mesh"}, {"positions", positions}, {"indices", indices}}}}};
+  const raster::Scene scene = raster::parse_scene(doc.dump());
+  const raster::RenderPlan plan = plan_with_threads(scene, 1);
+  FakeClock clock;
+  raster::RenderControl control;
+  control.deadline = clock.t0 + std::chrono::seconds(1);
+  control.clock = clock.fn();
+  const raster::Image image = raster::render(scene, plan, control);
+  EXPECT_EQ(test::count_not(image, test::kBlack), 0) << "the mesh is behind the camera";
+  EXPECT_GE(clock.readings,
+            2 * n * n * raster::detail::StopMeter::kPrimitiveWork / raster::detail::StopMeter::kWorkPerCheck);
+
+  FakeClock expiring;
+  expiring.expire_at = 3;
+  control.clock = expiring.fn();
+  control.deadline = expiring.t0 + std::chrono::seconds(1);
+  EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled);
+  EXPECT_EQ(expiring.readings, 3);
 }
 
 // A deadline that does not pass changes nothing: the same bytes as a render without one.

@@ -107,7 +107,7 @@ double snap(double px) {
   return std::fabs(units) >= 0x1p52 ? units : std::floor(units + 0.5);
 }
 
-DrawList build_draw_list(const Scene& scene, const RenderPlan& plan) {
+DrawList build_draw_list(const Scene& scene, const RenderPlan& plan, StopMeter& meter) {
   DrawList list;
   if (plan.depth_buffer) {
     list.to_light[0] = plan.view.to_light.x, list.to_light[1] = plan.view.to_light.y,
@@ -116,11 +116,12 @@ DrawList build_draw_list(const Scene& scene, const RenderPlan& plan) {
   }
   list.ops.reserve(scene.primitives.size() - static_cast<std::size_t>(plan.culled_count));
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    if (meter.add(StopMeter::kPrimitiveWork)) break;
     const PrimitivePlan& mode = plan.primitives[i];
     if (!mode.visible) continue;
     const Primitive& prim = scene.primitives[i];
     if (prim.kind == PrimitiveKind::mesh) {
-      add_mesh(scene.meshes[prim.mesh], mode, plan, list);
+      add_mesh(scene.meshes[prim.mesh], mode, plan, list, meter);
       continue;
     }
     DrawOp op;

@@ -9,6 +9,7 @@
 
 #include "raster/plan.h"
 #include "raster/scene.h"
+#include "stop.h"
 
 namespace raster::detail {
 
@@ -79,13 +80,15 @@ struct DrawList {
   double ambient = 0.2;            ///< in [0, 1]
 };
 
-/// Builds the draw list of the plan's visible primitives.
-DrawList build_draw_list(const Scene& scene, const RenderPlan& plan);
+/// Builds the draw list of the plan's visible primitives. Stops early, with the list incomplete, once
+/// `meter` says the render must stop (a record costs StopMeter::kPrimitiveWork).
+DrawList build_draw_list(const Scene& scene, const RenderPlan& plan, StopMeter& meter);
 
 /// The 3D part (geometry3d.cpp): a mesh through the plan's camera into depth triangles and 3D lines,
 /// clipped in homogeneous space (near, far and a guard band) so that w > 0 everywhere and every snapped
 /// coordinate stays in the fast range. Appends one op per kind it produces.
-void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& plan, DrawList& list);
+void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& plan, DrawList& list,
+              StopMeter& meter);
 
 /// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
 /// whole pixels translates the result exactly.

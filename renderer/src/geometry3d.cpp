@@ -116,9 +116,10 @@ Rgba8 to_rgba8(const float* c) {
 
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
 // the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
-std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& world) {
+std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& world, StopMeter& meter) {
   std::vector<Vec3> normals(world.size());
   for (const auto& t : mesh.triangles) {
+    if (meter.add(StopMeter::kPrimitiveWork)) break;  // the caller sees meter.stopped() and draws nothing
     const Vec3 p[3] = {world[t[0]], world[t[1]], world[t[2]]};
     const Vec3 face = normalize(cross(p[1] - p[0], p[2] - p[0]));
     for (int k = 0; k < 3; ++k) {
@@ -133,7 +134,8 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& worl
 
 }  // namespace
 
-void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& plan, DrawList& list) {
+void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& plan, DrawList& list,
+              StopMeter& meter) {
   const ViewPlan& view = plan.view;
   const Mat4 model_to_clip = view.world_to_clip * mesh.transform;
   const Planes planes{1 + 2 * kGuardPx / plan.width, 1 + 2 * kGuardPx / plan.height};
@@ -142,6 +144,7 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   std::vector<Vec4> clip(mesh.positions.size());
   std::vector<bool> finite(mesh.positions.size());
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (meter.add(StopMeter::kRowWork)) return;  // deadline: a model can have millions of vertices
     clip[i] = transform(model_to_clip, mesh.positions[i]);
     finite[i] = std::isfinite(clip[i].x) && std::isfinite(clip[i].y) && std::isfinite(clip[i].z) &&
                 std::isfinite(clip[i].w);
@@ -161,13 +164,15 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   if (!mesh.wireframe && !mesh.triangles.empty()) {
     const bool light_per_pixel = mode.light_per_pixel;
     std::vector<Vec3> world(mesh.positions.size());
-    for (std::size_t i = 0; i < world.size(); ++i)
+    for (std::size_t i = 0; i < world.size(); ++i) {
+      if (meter.add(StopMeter::kRowWork)) return;
       world[i] = transform_point(mesh.transform, mesh.positions[i]);
+    }
     std::vector<Vec3> normals;  // world space, per position (computed) or per OBJ normal index (given)
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
     if (light_per_pixel) {
       if (mode.compute_normals)
-        normals = vertex_normals(mesh, world);
+        normals = vertex_normals(mesh, world, meter);
       else
         for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
     }
@@ -179,6 +184,7 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
     op.mode = mode;
     op.first = static_cast<std::uint32_t>(list.depth_triangles.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      if (meter.add(StopMeter::kPrimitiveWork)) break;  // deadline: a mesh can be millions of triangles
       const auto& tri = mesh.triangles[t];
       // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
       // front when the counter-clockwise normal points toward the eye.
@@ -235,12 +241,14 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   for (const auto& s : mesh.segments) segment_colors.push_back({vertex_color(s[0]), vertex_color(s[1])});
   if (mesh.wireframe) {
     std::vector<std::tuple<std::uint32_t, std::uint32_t, std::size_t>> edges;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      if (meter.add(StopMeter::kPrimitiveWork)) return;
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
         edges.emplace_back(std::min(a, b), std::max(a, b), t);
       }
-    std::sort(edges.begin(), edges.end());
+    }
+    std::sort(edges.begin(), edges.end());  // not interruptible: n log n of the model's edges
     for (std::size_t i = 0; i < edges.size(); ++i) {
       const auto [a, b, t] = edges[i];
       if (i > 0 && std::get<0>(edges[i - 1]) == a && std::get<1>(edges[i - 1]) == b) continue;
@@ -255,6 +263,7 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
   op.mode.smooth = true;  // endpoint colours may differ after per-face colouring
   op.first = static_cast<std::uint32_t>(list.lines.size());
   for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (meter.add(StopMeter::kPrimitiveWork)) break;
     if (!finite[segments[s][0]] || !finite[segments[s][1]]) continue;
     ClipVertex a = clip_vertex(segments[s][0], segment_colors[s][0]),
                b = clip_vertex(segments[s][1], segment_colors[s][1]);

@@ -630,14 +630,6 @@ void draw_all(const DrawList& list, Image& image, float* depth, Rect clip, StopM
 
 }  // namespace
 
-bool Stop::now() const {
-  if (stopped->load(std::memory_order_relaxed)) return true;
-  const bool stop = (cancel && cancel->load(std::memory_order_relaxed)) ||
-                    (clock && *clock ? (*clock)() : std::chrono::steady_clock::now()) >= deadline;
-  if (stop) stopped->store(true, std::memory_order_relaxed);
-  return stop;
-}
-
 void draw(const DrawList& list, Image& image, float* depth, Rect clip, StopMeter& meter, SamplePoint sample) {
   switch (image.format) {
     case PixelFormat::grey8:

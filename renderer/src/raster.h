@@ -11,45 +11,9 @@
 #include "framebuffer.h"
 #include "geometry.h"
 #include "raster/image.h"
+#include "stop.h"
 
 namespace raster::detail {
-
-/// When a render must stop: the caller's deadline and cancel flag. `stopped` is shared by all bands so
-/// that one band's discovery stops the others at their next check.
-struct Stop {
-  std::chrono::steady_clock::time_point deadline;
-  const std::atomic<bool>* cancel;
-  std::atomic<bool>* stopped;
-  const std::function<std::chrono::steady_clock::time_point()>* clock;  ///< empty: steady_clock::now
-  bool now() const;
-};
-
-/// One band's account of work done since it last asked `Stop`: a pixel written or tested is 1 unit, a row
-/// of a primitive kRowWork, a primitive kPrimitiveWork. Every kWorkPerCheck units it asks again, so the
-/// time between two checks is bounded by what ~64k pixels cost (under a millisecond with full shading),
-/// whether the work is a million small triangles or one that covers the image.
-class StopMeter {
- public:
-  static constexpr std::int64_t kWorkPerCheck = 1 << 16;
-  static constexpr std::int64_t kRowWork = 16;
-  static constexpr std::int64_t kPrimitiveWork = 64;
-
-  explicit StopMeter(const Stop& stop) : stop_(stop) {}
-  /// Counts `work`; true once the render must stop (and from then on).
-  bool add(std::int64_t work) {
-    if ((work_ += work) < kWorkPerCheck) return stopped_;
-    work_ = 0;
-    return stopped_ = stop_.now();
-  }
-  /// Asks now, whatever the count: at the start of a band, so an expired deadline stops even a tiny render.
-  bool check() { return stopped_ = stop_.now(); }
-  bool stopped() const { return stopped_; }
-
- private:
-  const Stop& stop_;
-  std::int64_t work_ = 0;
-  bool stopped_ = false;
-};
 
 /// Where in each pixel coverage is tested: 1/256 px from the pixel's top-left corner; (128, 128) is the
 /// centre. Anti-aliasing draws the list once per sample position of the standard patterns.

@@ -13,18 +13,26 @@
 namespace raster {
 
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control) {
-  const detail::DrawList list = detail::build_draw_list(scene, plan);
   std::atomic<bool> stopped{false};  // set by whichever band first sees the deadline or the cancel flag
   const detail::Stop stop{control.deadline, control.cancel, &stopped, &control.clock};
-  Image image = detail::make_color_buffer(plan, scene.background);
+  const auto cancelled = [] { return RenderCancelled("render stopped: deadline passed or cancelled"); };
+  detail::StopMeter meter(stop);  // the calling thread's, for geometry and allocation
+  const detail::DrawList list = detail::build_draw_list(scene, plan, meter);
+  if (meter.stopped()) throw cancelled();
 
+  // Each buffer is cleared as it is allocated, which is not interruptible: the deadline is looked at
+  // between buffers, so the longest wait is one buffer's clear (at most 4 bytes x 40 MP).
+  Image image = detail::make_color_buffer(plan, scene.background);
   // Anti-aliasing: one colour plane (and depth plane) per sample position, drawn like an aliased image
   // whose coverage is tested at that position, then resolved into `image`. Aliased: `image` itself.
   const std::vector<detail::SamplePoint>& pattern = detail::sample_pattern(plan.samples);
   std::vector<Image> planes;
   std::vector<std::vector<float>> depth;
-  if (plan.samples > 1) planes.assign(pattern.size(), image);
-  for (std::size_t s = 0; s < pattern.size(); ++s) depth.push_back(detail::make_depth_buffer(plan));
+  for (std::size_t s = 0; s < pattern.size(); ++s) {
+    if (meter.check()) throw cancelled();
+    if (plan.samples > 1) planes.push_back(detail::make_color_buffer(plan, scene.background));
+    depth.push_back(detail::make_depth_buffer(plan));
+  }
 
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
@@ -58,8 +66,16 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     for (int b = 1; b < bands; ++b) workers.emplace_back([&, b] { draw_band(detail::band(plan, b, bands)); });
     draw_band(detail::band(plan, 0, bands));
   }  // jthreads join here
-  if (stopped) throw RenderCancelled("render stopped: deadline passed or cancelled");
+  if (stopped) throw cancelled();
   return image;
+}
+
+bool detail::Stop::now() const {
+  if (stopped->load(std::memory_order_relaxed)) return true;
+  const bool stop = (cancel && cancel->load(std::memory_order_relaxed)) ||
+                    (clock && *clock ? (*clock)() : std::chrono::steady_clock::now()) >= deadline;
+  if (stop) stopped->store(true, std::memory_order_relaxed);
+  return stop;
 }
 
 Image render(const Scene& scene, const Limits& limits) {
