@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker clean
+.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker test-repeat clean
 
 deps:
 	@scripts/install-deps
@@ -61,6 +61,13 @@ loadtest: bench-build
 # examples/nginx.conf in front of rasterd, checked (installs nginx).
 test-proxy: build
 	@scripts/test-proxy
+
+# The suite REPEAT times (default 20) under make test and make test-asan, with stress-ng loading every
+# core unless STRESS=0: no verdict may depend on machine speed.
+REPEAT ?= 20
+STRESS ?= 1
+test-repeat:
+	@REPEAT=$(REPEAT) STRESS=$(STRESS) scripts/test-repeat
 
 # Builds the Dockerfile and checks the image: runtime libraries, HEALTHCHECK, renders identical to
 # $(BUILD)/rasterd's, non-root, clean SIGTERM; prints its size. docker where an engine runs, else podman.

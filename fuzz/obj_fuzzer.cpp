@@ -2,6 +2,7 @@
 // Any crash, sanitizer report, or exception other than SceneError is a finding.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <string_view>
 
 #include "raster/raster.h"
@@ -26,8 +27,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.max_threads = 1;
     const raster::RenderPlan plan = raster::plan(scene, limits, options);
     raster::encode_png(raster::render(scene, plan), plan.png);
-  } catch (const raster::SceneError&) {
-    // rejected model: expected for most inputs
+  } catch (const raster::SceneError& e) {
+    // rejected model: expected for most inputs; its message (echoed to clients) must be UTF-8
+    if (raster::first_invalid_utf8(e.what()) != std::string_view::npos) std::abort();
   }
   return 0;
 }

@@ -39,8 +39,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const raster::RenderPlan plan = raster::plan(scene, limits, options);
     const raster::Image image = raster::render(scene, plan);
     raster::encode_png(image, plan.png);
-  } catch (const raster::SceneError&) {
-    // rejected input: the expected outcome for most of the corpus
+  } catch (const raster::SceneError& e) {
+    // rejected input: the expected outcome for most of the corpus. Its message is echoed to clients, so
+    // it must be UTF-8 whatever bytes the input held.
+    if (raster::first_invalid_utf8(e.what()) != std::string_view::npos) std::abort();
   }
   return 0;
 }
