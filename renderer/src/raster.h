@@ -2,10 +2,6 @@
 // functions with the top-left rule; 1-px lines by clipped, symmetric Bresenham.
 #pragma once
 
-#include <atomic>
-#include <chrono>
-#include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "framebuffer.h"

@@ -41,19 +41,19 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     control.stats->pixel_bytes = bytes;
   }
   auto draw_band = [&](detail::Rect rows) {
-    detail::StopMeter meter(stop);
-    if (meter.check()) return;  // a deadline already past stops even the smallest render
+    detail::StopMeter band_meter(stop);  // each band counts its own work
+    if (band_meter.check()) return;      // a deadline already past stops even the smallest render
     for (std::size_t s = 0; s < pattern.size(); ++s) {
       Image& target = planes.empty() ? image : planes[s];
-      detail::draw(list, target, depth[s].empty() ? nullptr : depth[s].data(), rows, meter, pattern[s]);
-      if (meter.stopped()) return;
+      detail::draw(list, target, depth[s].empty() ? nullptr : depth[s].data(), rows, band_meter, pattern[s]);
+      if (band_meter.stopped()) return;
     }
     if (planes.empty()) return;
     // The resolve reads every sample plane: up to the whole pixel-storage limit, so it is metered too.
     const int rows_per_check = std::max(
         1, static_cast<int>(detail::StopMeter::kWorkPerCheck / (std::int64_t{image.width} * plan.samples)));
     for (int y = rows.y0; y < rows.y1; y += rows_per_check) {
-      if (y > rows.y0 && meter.check()) return;
+      if (y > rows.y0 && band_meter.check()) return;
       detail::resolve(planes, image, {rows.x0, y, rows.x1, std::min(rows.y1, y + rows_per_check)});
     }
   };

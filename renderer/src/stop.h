@@ -1,5 +1,5 @@
 // Stop: when a render must end early (its deadline passed, or the caller cancelled it), and the meter
-// through which every stage that does long work (geometry, clearing, drawing, resolving) asks.
+// through which every stage that does long work (geometry, drawing, resolving) asks.
 #pragma once
 
 #include <atomic>
