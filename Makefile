@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker test-repeat clean
+.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker test-repeat test-browser clean
 
 deps:
 	@scripts/install-deps
@@ -73,6 +73,12 @@ test-repeat:
 # $(BUILD)/rasterd's, non-root, clean SIGTERM; prints its size. docker where an engine runs, else podman.
 test-docker: build
 	@BUILD=$(BUILD) scripts/test-docker
+
+# The playground (GET /) in headless Chromium: every example's pixels equal the CLI's, errors shown on
+# their line, OBJ uploads, copy as curl; rewrites docs/images/playground.png. Installs chromium (heavy).
+test-browser: build
+	@scripts/install-deps browser
+	@/usr/bin/python3 scripts/test-browser --binary $(BUILD)/rasterd --screenshot docs/images/playground.png
 
 clean:
 	rm -rf build build-asan build-bench build-fuzz fuzz-out

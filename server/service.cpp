@@ -12,6 +12,7 @@
 #include <mutex>
 #include <thread>
 
+#include "playground.h"
 #include "problem.h"
 #include "raster/raster.h"
 #include "request.h"
@@ -358,6 +359,8 @@ void Service::install(httplib::Server& server) {
     const auto [running, waiting] = s.admission.load();
     res.set_content(s.metrics.text(running, waiting), "text/plain; version=0.0.4");
   });
+  // GET / (the playground page) and GET /examples[/<name>.json]: server/playground.cpp.
+  install_playground(server);
 
   // Any error response without a body of ours (404, 405, ...) still gets a problem body.
   server.set_error_handler(
