@@ -20,19 +20,18 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const detail::DrawList list = detail::build_draw_list(scene, plan, meter);
   if (meter.stopped()) throw cancelled();
 
-  // Each buffer is cleared as it is allocated, which is not interruptible: the deadline is looked at
-  // between buffers, so the longest wait is one buffer's clear (at most 4 bytes x 40 MP).
-  Image image = detail::make_color_buffer(plan, scene.background);
+  // Buffers are cleared as they are allocated, looking at the deadline every megabyte.
+  Image image = detail::make_color_buffer(plan, scene.background, meter);
   // Anti-aliasing: one colour plane (and depth plane) per sample position, drawn like an aliased image
   // whose coverage is tested at that position, then resolved into `image`. Aliased: `image` itself.
   const std::vector<detail::SamplePoint>& pattern = detail::sample_pattern(plan.samples);
   std::vector<Image> planes;
   std::vector<std::vector<float>> depth;
   for (std::size_t s = 0; s < pattern.size(); ++s) {
-    if (meter.check()) throw cancelled();
-    if (plan.samples > 1) planes.push_back(detail::make_color_buffer(plan, scene.background));
-    depth.push_back(detail::make_depth_buffer(plan));
+    if (plan.samples > 1) planes.push_back(detail::make_color_buffer(plan, scene.background, meter, false));
+    depth.push_back(detail::make_depth_buffer(plan, meter));
   }
+  if (meter.stopped()) throw cancelled();
 
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
