@@ -80,6 +80,20 @@ TEST(Utf8, ASceneWithABadByteIsAnEncodingErrorAtThatByte) {
   EXPECT_EQ(raster::first_invalid_utf8(e.what()), std::string_view::npos) << "the message itself is UTF-8";
 }
 
+// The message says what is wrong with the byte, for each class of ill-formed sequence.
+TEST(Utf8, TheMessageNamesWhyTheByteIsWrong) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"\x80", "continuation byte"}, {"\xC0\xAF", "overlong"},         {"\xE0\x80\xAF", "overlong"},
+      {"\xED\xA0\x80", "surrogate"}, {"\xF4\x90\x80\x80", "U+10FFFF"}, {"\xF5\x80", "U+10FFFF"},
+      {"\xFF", "never occurs"},      {"\xE2\x82", "cut short"},        {"\xE2\x28\xA1", "cut short"},
+  };
+  for (const auto& [bytes, why] : cases) {
+    const auto e = error_of([&] { raster::require_utf8(bytes, "the text"); });
+    EXPECT_EQ(e.kind(), raster::ErrorKind::encoding);
+    EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+  }
+}
+
 TEST(Utf8, AModelWithABadByteNamesItsLine) {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\ng caf\xE9\nf 1 2 3\n";  // Latin-1, not UTF-8
   const auto e = error_of([&] { raster::parse_obj(obj); });

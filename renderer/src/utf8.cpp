@@ -66,6 +66,7 @@ std::string why_ill_formed(std::string_view text, std::size_t i) {
       (b0 == 0xF0 && b1 >= 0x80 && b1 < 0x90))
     return "an overlong encoding";
   if (b0 == 0xED && b1 >= 0xA0 && b1 <= 0xBF) return "a UTF-16 surrogate (U+D800..U+DFFF)";
+  if (b0 >= 0xF8) return "a byte that never occurs in UTF-8";
   if (b0 >= 0xF5 || (b0 == 0xF4 && b1 >= 0x90 && b1 <= 0xBF)) return "beyond U+10FFFF, the last code point";
   return "a sequence cut short";
 }
