@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker test-repeat test-browser clean
+.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
 
 deps:
 	@scripts/install-deps
@@ -79,6 +79,17 @@ test-docker: build
 test-browser: build
 	@scripts/install-deps browser
 	@/usr/bin/python3 scripts/test-browser --binary $(BUILD)/rasterd --screenshot docs/images/playground.png
+
+# deploy/: every Kubernetes manifest and compose.yaml parsed and checked, the nginx config through nginx -t.
+test-deploy:
+	@scripts/install-deps cluster
+	@/usr/bin/python3 scripts/test-deploy
+
+# Three replicas behind deploy/nginx.conf on loopback under wrk while one is stopped and one killed; rewrites
+# docs/scaling.md (CLUSTER_SECONDS=20 by default).
+test-cluster: build
+	@scripts/install-deps cluster
+	@BUILD=$(BUILD) scripts/test-cluster
 
 clean:
 	rm -rf build build-asan build-bench build-fuzz fuzz-out

@@ -12,10 +12,13 @@
 #include <mutex>
 #include <thread>
 
+#include "api.h"
+#include "etag.h"
 #include "playground.h"
 #include "problem.h"
 #include "raster/raster.h"
 #include "request.h"
+#include "scene_url.h"
 
 namespace rasterd {
 namespace {
@@ -145,7 +148,9 @@ std::string next_request_id() {
 }
 
 std::string route_label(const std::string& path) {
-  return path == "/render" || path == "/healthz" || path == "/metrics" ? path : "other";
+  const bool known = path == "/render" || path == "/healthz" || path == "/metrics" ||
+                     path == "/schema/scene.json" || path == "/openapi.json";
+  return known ? path : "other";
 }
 
 }  // namespace
@@ -247,11 +252,47 @@ struct Service::State {
     return true;
   }
 
-  void render(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader) {
+  // POST /render: the scene (or model, or multipart upload) is the body.
+  void render_post(const httplib::Request& req, httplib::Response& res,
+                   const httplib::ContentReader& reader) {
     std::string body;
     raster::Uploads uploads;
     if (!read_body(req, res, reader, body, uploads)) return;
+    render(req, res, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()),
+           false);
+  }
 
+  // GET /render?scene=...: the scene is in the URL, so the answer can be cached by URL.
+  void render_get(const httplib::Request& req, httplib::Response& res) {
+    if (!req.has_param("scene")) {
+      refuse(
+          res,
+          problem(400, "missing-scene", "No scene in the URL",
+                  "GET /render needs ?scene=<base64url of the raw-deflated or plain scene JSON>; or POST the "
+                  "scene to /render"),
+          "bad_scene_url");
+      return;
+    }
+    std::string body;
+    try {
+      body = decode_scene_param(req.get_param_value("scene"), config.max_body_bytes);
+    } catch (const SceneUrlError& e) {
+      if (e.status() == 413)
+        refuse(res, problem(413, "body-too-large", "The scene is too large", e.what()), "body_size");
+      else
+        refuse(res, problem(400, "invalid-scene-url", "The scene in the URL cannot be decoded", e.what()),
+               "bad_scene_url");
+      return;
+    }
+    Params params(req.params.begin(), req.params.end());
+    params.erase("scene");
+    render(req, res, std::move(body), {}, params, true);
+  }
+
+  // Both methods from here: admission, parse, plan, conditional request, render, encode. `cacheable`: the
+  // request is a GET, whose answer is named by its URL alone.
+  void render(const httplib::Request& req, httplib::Response& res, std::string body, raster::Uploads uploads,
+              const Params& params, bool cacheable) {
     if (!admission.enter()) {
       res.set_header("Retry-After", "1");
       refuse(res, problem(503, "overloaded", "All render workers are busy", "try again shortly"),
@@ -266,11 +307,31 @@ struct Service::State {
 
     const Clock::time_point t0 = Clock::now();
     try {
-      const Params params(req.params.begin(), req.params.end());
       raster::Scene scene = scene_from_request(std::move(body), std::move(uploads), params, config.limits);
       const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
-      if (req.get_param_value("explain") == "1") {
+      if (req.get_param_value("explain") == "1") {  // no tag: the plan also depends on the thread count
         res.set_content(raster::explain_json(plan), "application/json");
+        return;
+      }
+      // The tag names the image, so a client that holds it gets no render; hashing the parsed scene is
+      // cheap next to parsing it. The cache headers go only on a 200 or 304: an error must not be cached.
+      const std::string etag = scene_etag(scene);
+      auto set_cache_headers = [&] {
+        res.set_header("ETag", etag);
+        if (cacheable)
+          res.set_header("Cache-Control",
+                         "public, max-age=" + std::to_string(config.cache_max_age) + ", immutable");
+      };
+      if (req.has_header("If-None-Match") && none_match_hits(req.get_header_value("If-None-Match"), etag)) {
+        // RFC 9110 13.1.2: 304 for GET and HEAD; any other method must not be performed: 412.
+        if (cacheable) {
+          set_cache_headers();
+          res.status = 304;
+        } else {
+          write_problem(res, problem(412, "precondition-failed", "The precondition failed",
+                                     "If-None-Match names this scene's tag " + etag +
+                                         "; a POST with it is not performed (send GET for a 304)"));
+        }
         return;
       }
       const Clock::time_point t1 = Clock::now();
@@ -289,6 +350,7 @@ struct Service::State {
                     ms_between(t0, t1), ms_between(t1, t2), ms_between(t2, t3));
       res.set_header("Server-Timing", timing);
       res.set_header("X-Render-Plan", raster::explain_line(plan));
+      set_cache_headers();
       res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
     } catch (const raster::SceneError& e) {
       write_problem(res, problem_from(e));
@@ -352,7 +414,11 @@ void Service::install(httplib::Server& server) {
   });
 
   server.Post("/render", [&s](const httplib::Request& req, httplib::Response& res,
-                              const httplib::ContentReader& reader) { s.render(req, res, reader); });
+                              const httplib::ContentReader& reader) { s.render_post(req, res, reader); });
+  // Image URLs, GET /render?scene=..., and GET /schema/scene.json, GET /openapi.json: server/api.cpp.
+  server.Get("/render",
+             [&s](const httplib::Request& req, httplib::Response& res) { s.render_get(req, res); });
+  install_api_routes(server);
   server.Get("/healthz",
              [](const httplib::Request&, httplib::Response& res) { res.set_content("ok\n", "text/plain"); });
   server.Get("/metrics", [&s](const httplib::Request&, httplib::Response& res) {
@@ -364,12 +430,23 @@ void Service::install(httplib::Server& server) {
 
   // Any error response without a body of ours (404, 405, ...) still gets a problem body.
   server.set_error_handler(
-      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+      httplib::Server::HandlerWithResponse([&s](const httplib::Request& req, httplib::Response& res) {
+        if (!res.has_header("X-Request-Id")) {
+          // cpp-httplib answered before routing (a request line over its 8192-byte limit, or a malformed
+          // one): no pre-routing handler ran, so this request has no id or start time of its own yet.
+          t_request = RequestContext{Clock::now(), 0};
+          res.set_header("X-Request-Id", next_request_id());
+        }
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
         const std::string detail = req.method + " " + req.path;
-        if (res.status == 404)
+        if (res.status == 414) {
+          s.metrics.rejected("uri_too_long");
+          write_problem(res, problem(414, "uri-too-long", "The request URI is too long",
+                                     "a request line is at most 8192 bytes; POST the scene to /render "
+                                     "instead of putting it in the URL"));
+        } else if (res.status == 404)
           write_problem(res, problem(404, "not-found", "No such route",
-                                     detail + " (routes: POST /render, GET /healthz, GET /metrics)"));
+                                     detail + " (the routes are described at GET /openapi.json)"));
         else if (res.status == 405)
           write_problem(res, problem(405, "method-not-allowed", "Method not allowed", detail));
         else
@@ -428,6 +505,8 @@ constexpr Flag kFlags[] = {
     {"max-queue", "renders waiting for a worker, 503 + Retry-After beyond (default: 2 x workers)"},
     {"render-threads", "band threads per render (default: core count)"},
     {"shutdown-grace-ms", "after SIGTERM/SIGINT, time for running and queued renders (default 20000)"},
+    {"cache-max-age",
+     "seconds in Cache-Control: public, max-age=N, immutable on GET /render (default 86400)"},
 };
 
 std::string env_name(const char* flag) {
@@ -516,6 +595,8 @@ std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig
       config.render_threads = static_cast<int>(number(name, 1, 1024));
     else if (name == "shutdown-grace-ms")
       config.shutdown_grace = std::chrono::milliseconds(number(name, 0, 3'600'000));
+    else if (name == "cache-max-age")
+      config.cache_max_age = static_cast<int>(number(name, 0, 31'536'000));
   }
   return error;
 }

@@ -24,6 +24,7 @@ struct ServiceConfig {
   std::chrono::milliseconds render_deadline{10'000};  ///< parse + render + encode; 503 past it
   std::chrono::milliseconds body_deadline{10'000};    ///< reading the body, whatever its pace; 408 past it
   std::chrono::milliseconds shutdown_grace{20'000};   ///< after SIGTERM, how long renders may finish
+  int cache_max_age = 86'400;  ///< seconds, in Cache-Control: public, max-age=N, immutable (GET /render)
   /// Tests only (empty in service): runs on the request's thread once a render is admitted, before its
   /// scene is read. A test holds renders in flight on a latch here, or throws to force an internal error.
   std::function<void()> after_admission;
@@ -42,9 +43,9 @@ class Service {
   Service(const Service&) = delete;
   Service& operator=(const Service&) = delete;
 
-  /// Routes (/render, /healthz, /metrics), problem+json errors, request ids and logs, timeouts and the
-  /// connection thread pool on `server`. main() and the tests both call this, so tests exercise what is
-  /// served. Call before binding.
+  /// Routes (/render, /healthz, /metrics, the API documents, the playground), problem+json errors, request
+  /// ids and logs, timeouts and the connection thread pool on `server`. main() and the tests both call
+  /// this, so tests exercise what is served. Call before binding.
   void install(httplib::Server& server);
 
   /// After binding: enlarges the kernel's listen backlog on the listening socket, which cpp-httplib 0.11

@@ -1,0 +1,338 @@
+// Issue 16, parts 1 and 3, over real HTTP: the API documents, image URLs (GET /render?scene=), ETags,
+// conditional requests and Cache-Control.
+#include <zlib.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "etag.h"
+#include "scene_url.h"
+#include "support.h"
+#include "test_server.h"
+
+namespace {
+
+using test::TestServer;
+
+std::string base64url(const std::string& bytes, bool pad = false) {
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 3 <= bytes.size(); i += 3) {
+    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 |
+                       static_cast<unsigned char>(bytes[i + 1]) << 8 |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    for (int k = 18; k >= 0; k -= 6) out += alphabet[(v >> k) & 63];
+  }
+  if (const std::size_t rest = bytes.size() - i) {
+    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    if (rest == 2) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    out += alphabet[v >> 18], out += alphabet[(v >> 12) & 63];
+    if (rest == 2) out += alphabet[(v >> 6) & 63];
+    if (pad) out += rest == 1 ? "==" : "=";
+  }
+  return out;
+}
+
+// Raw deflate (no zlib header), as CompressionStream('deflate-raw') and zlib.compressobj(wbits=-15) make.
+std::string deflate_raw(const std::string& text, int level = 9) {
+  z_stream zs{};
+  EXPECT_EQ(deflateInit2(&zs, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY), Z_OK);
+  std::string out(deflateBound(&zs, text.size()), '\0');
+  zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
+  zs.avail_in = static_cast<uInt>(text.size());
+  zs.next_out = reinterpret_cast<Bytef*>(out.data());
+  zs.avail_out = static_cast<uInt>(out.size());
+  EXPECT_EQ(deflate(&zs, Z_FINISH), Z_STREAM_END);
+  out.resize(zs.total_out);
+  deflateEnd(&zs);
+  return out;
+}
+
+std::string url_of(const std::string& scene, bool deflated = true) {
+  return "/render?scene=" + base64url(deflated ? deflate_raw(scene) : scene);
+}
+
+// The value of the sample line `name value` in a Prometheus text body, -1 when absent.
+long metric(const std::string& metrics, const std::string& name) {
+  const std::string needle = "\n" + name + " ";
+  const auto at = metrics.find(needle);
+  return at == std::string::npos ? -1 : std::stol(metrics.substr(at + needle.size()));
+}
+
+long renders(const TestServer& server) {
+  auto m = server.client().Get("/metrics");
+  return m ? metric(m->body, "rasterd_render_duration_seconds_count") : -2;
+}
+
+nlohmann::json problem_of(const httplib::Result& r) {
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
+  auto j = nlohmann::json::parse(r->body);
+  EXPECT_EQ(j["status"], r->status);
+  return j;
+}
+
+const std::string kScene =
+    R"({"width": 24, "height": 16, "background": "#102030", "primitives": [{"type": "triangle",)"
+    R"( "points": [[1,1],[22,3],[5,15]], "colors": ["#f00", "#0f0", "#00f"]}]})";
+
+TEST(Api, SchemaAndOpenApiAreTheRepositoryFiles) {
+  TestServer server;
+  const std::pair<const char*, const char*> documents[] = {
+      {"/schema/scene.json", RASTERD_SCHEMA_DIR "/scene.schema.json"},
+      {"/openapi.json", RASTERD_SCHEMA_DIR "/openapi.json"},
+  };
+  for (const auto& [route, file] : documents) {
+    auto r = server.client().Get(route);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << route;
+    EXPECT_EQ(r->get_header_value("Content-Type"),
+              std::string(route) == "/openapi.json" ? "application/json" : "application/schema+json");
+    EXPECT_EQ(r->body, test::read_file(file)) << route << " is not the repository's " << file;
+  }
+  // The OpenAPI document names the scene schema where it is served.
+  const auto openapi = nlohmann::json::parse(test::read_file(RASTERD_SCHEMA_DIR "/openapi.json"));
+  EXPECT_EQ(openapi["components"]["schemas"]["Scene"]["$ref"], "/schema/scene.json");
+  EXPECT_EQ(openapi["info"]["version"], RASTERD_VERSION)
+      << "bump server/schema/openapi.json with the project";
+}
+
+// Every example: the GET URL, deflated or plain, answers exactly what the POST answers.
+TEST(ImageUrl, GetEqualsPostForEveryExample) {
+  TestServer server;
+  int rendered = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(RASTERD_EXAMPLES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string scene = test::read_file(entry.path().string());
+    const std::string name = entry.path().filename().string();
+    auto post = server.client().Post("/render", scene, "application/json");
+    ASSERT_TRUE(post) << name;
+    for (const bool deflated : {true, false}) {
+      auto get = server.client().Get(url_of(scene, deflated));
+      ASSERT_TRUE(get) << name;
+      EXPECT_EQ(get->status, post->status) << name << (deflated ? " deflated" : " plain");
+      EXPECT_EQ(get->body, post->body) << name << (deflated ? " deflated" : " plain");
+      EXPECT_EQ(get->get_header_value("ETag"), post->get_header_value("ETag")) << name;
+      EXPECT_EQ(get->get_header_value("X-Render-Plan"), post->get_header_value("X-Render-Plan")) << name;
+    }
+    rendered += post->status == 200;
+  }
+  EXPECT_GE(rendered, 8) << "bunny-scene.json needs an upload; every other example renders";
+}
+
+TEST(ImageUrl, ObjModelsAndExplainWorkAsForPost) {
+  TestServer server;
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  auto post = server.client().Post("/render?width=40&height=30&background=%23336699", obj, "model/obj");
+  auto get = server.client().Get(url_of(obj) + "&width=40&height=30&background=%23336699");
+  ASSERT_TRUE(post);
+  ASSERT_TRUE(get);
+  ASSERT_EQ(post->status, 200) << post->body;
+  EXPECT_EQ(get->status, 200);
+  EXPECT_EQ(get->body, post->body);
+  EXPECT_EQ(test::decode_png(get->body).width, 40);
+
+  auto explain = server.client().Get(url_of(kScene) + "&explain=1");
+  ASSERT_TRUE(explain);
+  EXPECT_EQ(explain->status, 200);
+  EXPECT_EQ(explain->get_header_value("Content-Type"), "application/json");
+  EXPECT_EQ(nlohmann::json::parse(explain->body)["width"], 24);
+}
+
+TEST(ImageUrl, UndecodableScenesAre400s) {
+  TestServer server;
+  const std::string deflated = deflate_raw(kScene);
+  const std::pair<std::string, std::string> cases[] = {
+      {"/render", "missing-scene"},
+      {"/render?scene=", "invalid-scene-url"},
+      {"/render?scene=%25%25%25%25", "invalid-scene-url"},  // '%': not base64url
+      {"/render?scene=ab+c", "invalid-scene-url"},          // '+' is a space once decoded
+      {"/render?scene=abcde", "invalid-scene-url"},         // a length no base64 text has
+      {"/render?scene=AAAA", "invalid-scene-url"},          // zeros: not a deflate stream
+      {"/render?scene=" + base64url(deflated.substr(0, deflated.size() / 2)), "invalid-scene-url"},  // cut
+      {"/render?scene=" + base64url(deflated + "xyz"), "invalid-scene-url"},  // bytes after the stream
+      {"/render?scene=" + base64url("{\"width\": 4,"), "malformed-scene"},    // plain JSON, broken
+      {"/render?scene=" + base64url(deflate_raw(R"({"width": 4, "height": 4, "colour": 1})")),
+       "invalid-scene"},
+  };
+  for (const auto& [url, type] : cases) {
+    auto r = server.client().Get(url);
+    ASSERT_TRUE(r) << url;
+    EXPECT_EQ(r->status, 400) << url << "\n" << r->body;
+    EXPECT_EQ(problem_of(r)["type"], "urn:rasterd:problem:" + type) << url;
+    EXPECT_FALSE(r->has_header("ETag")) << url;
+    EXPECT_FALSE(r->has_header("Cache-Control")) << url << ": an error must not be cached";
+  }
+  // Padding is optional, and the plain form works too.
+  for (const std::string& url : {"/render?scene=" + base64url(deflated, true), url_of(kScene, false)}) {
+    auto r = server.client().Get(url);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << url;
+  }
+}
+
+// A few kilobytes of URL that would inflate to a thousand times more: refused while inflating, at the body
+// limit, with the body limit's 413. Plain JSON over the limit too.
+TEST(ImageUrl, InflateBombIsA413) {
+  rasterd::ServiceConfig config;
+  config.max_body_bytes = 4096;
+  TestServer server(config);
+  std::string bomb(4 << 20, ' ');  // 4 MiB of one byte: ~4 KiB deflated
+  bomb[0] = '{';                   // (not "{" + std::string: GCC 12 warns falsely with -Wrestrict)
+  const std::string url = url_of(bomb);
+  ASSERT_LT(url.size(), 8000u);
+  const std::string plain = R"({"width": 4, "height": 4, "background": ")" + std::string(5000, 'x') + "\"}";
+  for (const std::string& u : {url, url_of(plain, false)}) {
+    auto r = server.client().Get(u);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 413);
+    EXPECT_EQ(problem_of(r)["type"], "urn:rasterd:problem:body-too-large");
+  }
+  // The decoder's own cap, directly: the output never grows past it.
+  try {
+    rasterd::decode_scene_param(base64url(deflate_raw(std::string(1000, 'a'))), 999);
+    ADD_FAILURE() << "1000 bytes passed a 999-byte cap";
+  } catch (const rasterd::SceneUrlError& e) {
+    EXPECT_EQ(e.status(), 413);
+  }
+  EXPECT_EQ(rasterd::decode_scene_param(base64url(deflate_raw(std::string(1000, 'a'))), 1000).size(), 1000u);
+}
+
+// cpp-httplib itself answers a request line over 8192 bytes, before any route: the service's error
+// handler still makes it a problem that says what to do instead, with a request id.
+TEST(ImageUrl, TooLongUrlIsA414ProblemThatSaysToPost) {
+  TestServer server;
+  const std::string url = "/render?scene=" + std::string(9000, 'A');
+  auto r = server.client().Get(url);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 414);
+  const auto p = problem_of(r);
+  EXPECT_EQ(p["type"], "urn:rasterd:problem:uri-too-long");
+  EXPECT_NE(p["detail"].get<std::string>().find("POST"), std::string::npos) << p.dump();
+  EXPECT_FALSE(r->get_header_value("X-Request-Id").empty());
+  // Just under the limit is still a request the routes see (here: a bad scene, so a 400).
+  auto under = server.client().Get("/render?scene=" + std::string(8000, 'A'));
+  ASSERT_TRUE(under);
+  EXPECT_EQ(under->status, 400);
+}
+
+TEST(ImageUrl, EtagNamesTheSceneNotItsSpelling) {
+  TestServer server;
+  auto tag_of = [&](const std::string& scene) {
+    auto r = server.client().Post("/render", scene, "application/json");
+    EXPECT_TRUE(r && r->status == 200) << scene << (r ? r->body : "");
+    return r ? std::pair{r->get_header_value("ETag"), r->body} : std::pair<std::string, std::string>{};
+  };
+  // One scene, spelt five ways: layout, key order, 1 vs 1.0, colour notation, flat vs nested mesh arrays.
+  const std::string a =
+      R"({"width":32,"height":32,"background":"#fff","primitives":[{"type":"line","points":[[1,1],[30,20]],"color":"#ff0000"},)"
+      R"({"type":"mesh","positions":[[0,0,0],[1,0,0],[0,1,0]],"indices":[[0,1,2]],"color":"#808080"}]})";
+  const std::string same[] = {
+      R"({ "primitives": [ { "color": [1, 0, 0], "points": [[1.0, 1], [30, 20.0]], "type": "line" },
+           { "indices": [0, 1, 2], "type": "mesh", "positions": [0,0,0, 1,0,0, 0,1,0], "color": "#808080ff" } ],
+         "height": 32.0, "background": [1, 1, 1, 1], "width": 32 })",
+      R"({"width": 32, "height": 32, "background": "#FFFFFF", "primitives": [{"type": "line", "points": [[1,1],[30,20]], "color": "#f00"},)"
+      R"( {"type": "mesh", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]], "color": "#808080", "shading": "smooth"}]})",
+  };
+  const std::string different[] = {
+      R"({"width":32,"height":32,"background":"#fff","primitives":[{"type":"line","points":[[1,1],[30,21]],"color":"#ff0000"},)"
+      R"({"type":"mesh","positions":[[0,0,0],[1,0,0],[0,1,0]],"indices":[[0,1,2]],"color":"#808080"}]})",
+      R"({"width":32,"height":32,"background":"#fff","antialias":4,"primitives":[{"type":"line","points":[[1,1],[30,20]],"color":"#ff0000"},)"
+      R"({"type":"mesh","positions":[[0,0,0],[1,0,0],[0,1,0]],"indices":[[0,1,2]],"color":"#808080"}]})",
+      R"({"width":32,"height":32,"background":"#fff","primitives":[{"type":"mesh","positions":[[0,0,0],[1,0,0],[0,1,0]],"indices":[[0,1,2]],"color":"#808080"},)"
+      R"({"type":"line","points":[[1,1],[30,20]],"color":"#ff0000"}]})",  // the same two, other order
+  };
+  const auto [tag, png] = tag_of(a);
+  ASSERT_EQ(tag.size(), 34u) << tag;
+  EXPECT_EQ(tag.front(), '"');
+  for (const std::string& s : same) {
+    const auto [t, p] = tag_of(s);
+    EXPECT_EQ(t, tag) << s;
+    EXPECT_EQ(p, png) << "one tag, one picture";
+  }
+  for (const std::string& s : different) EXPECT_NE(tag_of(s).first, tag) << s;
+
+  // An OBJ inline or uploaded is one scene too.
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string inline_obj = R"({"width": 16, "height": 16, "primitives": [{"type": "obj", "data": )" +
+                                 nlohmann::json(obj).dump() + "}]}";
+  const std::string uploaded =
+      R"({"width": 16, "height": 16, "primitives": [{"type": "obj", "source": "model"}]})";
+  auto inline_r = server.client().Post("/render", inline_obj, "application/json");
+  auto upload_r = server.client().Post(
+      "/render", httplib::MultipartFormDataItems{{"scene", uploaded, "scene.json", "application/json"},
+                                                 {"model", obj, "m.obj", "model/obj"}});
+  ASSERT_TRUE(inline_r && upload_r);
+  ASSERT_EQ(upload_r->status, 200) << upload_r->body;
+  EXPECT_EQ(inline_r->get_header_value("ETag"), upload_r->get_header_value("ETag"));
+  EXPECT_EQ(inline_r->body, upload_r->body);
+}
+
+// A matching If-None-Match is answered from the scene's tag alone: the render count in /metrics (taken
+// before each response is sent) does not move.
+TEST(ImageUrl, IfNoneMatchGetsA304WithoutRendering) {
+  TestServer server;
+  const std::string url = url_of(kScene);
+  auto first = server.client().Get(url);
+  ASSERT_TRUE(first);
+  ASSERT_EQ(first->status, 200);
+  const std::string tag = first->get_header_value("ETag");
+  ASSERT_EQ(renders(server), 1);
+
+  for (const std::string& field : {tag, "W/" + tag, "\"0123\", " + tag, std::string("*")}) {
+    auto r = server.client().Get(url, {{"If-None-Match", field}});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 304) << field;
+    EXPECT_TRUE(r->body.empty());
+    EXPECT_EQ(r->get_header_value("ETag"), tag) << "a 304 names the representation it confirms";
+    EXPECT_EQ(r->get_header_value("Cache-Control"), first->get_header_value("Cache-Control"));
+  }
+  EXPECT_EQ(renders(server), 1) << "a 304 rendered nothing";
+
+  auto stale = server.client().Get(url, {{"If-None-Match", "\"0123\""}});
+  ASSERT_TRUE(stale);
+  EXPECT_EQ(stale->status, 200);
+  EXPECT_EQ(stale->body, first->body);
+  EXPECT_EQ(renders(server), 2);
+
+  // A POST is not performed when its precondition fails (RFC 9110 13.1.2): 412, and no render either.
+  auto post = server.client().Post("/render", {{"If-None-Match", tag}}, kScene, "application/json");
+  ASSERT_TRUE(post);
+  EXPECT_EQ(post->status, 412);
+  EXPECT_EQ(problem_of(post)["type"], "urn:rasterd:problem:precondition-failed");
+  EXPECT_EQ(renders(server), 2);
+}
+
+TEST(ImageUrl, CacheControlOnGetImagesOnly) {
+  rasterd::ServiceConfig config;
+  config.cache_max_age = 600;
+  TestServer server(config);
+  auto get = server.client().Get(url_of(kScene));
+  auto post = server.client().Post("/render", kScene, "application/json");
+  auto explain = server.client().Get(url_of(kScene) + "&explain=1");
+  ASSERT_TRUE(get && post && explain);
+  EXPECT_EQ(get->get_header_value("Cache-Control"), "public, max-age=600, immutable");
+  EXPECT_FALSE(post->has_header("Cache-Control")) << "POST responses are not cacheable";
+  EXPECT_EQ(post->get_header_value("ETag"), get->get_header_value("ETag")) << "but they carry the tag";
+  EXPECT_FALSE(explain->has_header("Cache-Control")) << "the plan depends on the thread count";
+  EXPECT_FALSE(explain->has_header("ETag"));
+}
+
+TEST(ImageUrl, IfNoneMatchParsing) {
+  using rasterd::none_match_hits;
+  EXPECT_TRUE(none_match_hits("\"a\"", "\"a\""));
+  EXPECT_TRUE(none_match_hits("W/\"a\"", "\"a\""));
+  EXPECT_TRUE(none_match_hits(" \"b\" ,\t\"a\" ", "\"a\""));
+  EXPECT_TRUE(none_match_hits("*", "\"a\""));
+  EXPECT_FALSE(none_match_hits("\"ab\"", "\"a\""));
+  EXPECT_FALSE(none_match_hits("a", "\"a\""));
+  EXPECT_FALSE(none_match_hits("", "\"a\""));
+}
+
+}  // namespace

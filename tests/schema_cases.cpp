@@ -1,0 +1,317 @@
+// schema_cases COUNT SEED: writes COUNT generated scene documents, one JSON line each, with the verdict of
+// the parser (and the planner, which checks the camera) on it:
+//   {"doc": "<scene text>", "verdict": "accepted" | "syntax" | "invalid" | "limit" | "model" | "encoding",
+//    "message": "...", "pointer": "..."}
+// tests/schema/check_schema.py validates every document against server/schema/scene.schema.json and
+// compares. Documents start as valid scenes of every kind (seeded, so every run is the same) and most get
+// one to three mutations at random places: a value replaced by one from a pool of boundary and
+// wrong-typed values, a key removed or added (known names in the wrong place, typos), array elements
+// dropped or added. So roughly half are accepted, and the rejected ones sit just across a rule.
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "raster/raster.h"
+
+namespace {
+
+using json = nlohmann::json;
+
+class Generator {
+ public:
+  explicit Generator(std::uint32_t seed) : rng_(seed) {}
+
+  json scene() {
+    json s = {{"width", integer(1, 48)}, {"height", integer(1, 48)}};
+    if (chance(0.3)) s["background"] = color();
+    if (chance(0.2)) s["antialias"] = pick<json>({1, 4, 8, 16, 4.0});
+    if (chance(0.25)) s["camera"] = camera();
+    if (chance(0.2)) s["light"] = light();
+    if (chance(0.9)) {
+      json primitives = json::array();
+      for (int i = integer(0, 4); i > 0; --i) primitives.push_back(primitive());
+      s["primitives"] = primitives;
+    }
+    return s;
+  }
+
+  // 0 to 3 mutations; a third of the documents stay as generated.
+  void mutate(json& doc) {
+    const int n = chance(0.33) ? 0 : integer(1, 3);
+    for (int i = 0; i < n; ++i) mutate_once(doc);
+  }
+
+ private:
+  json primitive() {
+    switch (integer(0, 4)) {
+      case 0:
+      case 1:
+      case 2:
+        return drawn(pick<std::string>({"triangle", "line", "polyline"}));
+      case 3:
+        return mesh();
+      default:
+        return obj();
+    }
+  }
+
+  json drawn(const std::string& type) {
+    const std::size_t n = type == "triangle" ? 3
+                          : type == "line"   ? 2
+                                             : static_cast<std::size_t>(integer(2, 5));
+    const bool world = chance(0.2);
+    json p = {{"type", type}, {"points", json::array()}};
+    for (std::size_t k = 0; k < n; ++k) p["points"].push_back(world ? vec3() : point2());
+    const double c = uniform();
+    if (c < 0.35) {
+      p["colors"] = json::array();
+      for (std::size_t k = 0; k < n; ++k) p["colors"].push_back(color());
+    } else if (c < 0.7) {
+      p["color"] = color();
+    }
+    if (type == "triangle" && chance(0.3)) p["fill"] = chance(0.5);
+    if (type == "polyline" && chance(0.3)) p["closed"] = chance(0.5);
+    if (chance(0.2)) p["width"] = pick<json>({1, 2.5, 0.25, 4096});
+    return p;
+  }
+
+  json mesh() {
+    const int positions = integer(3, 6);
+    const bool flat = chance(0.4);
+    json m = {{"type", "mesh"}, {"positions", json::array()}, {"indices", json::array()}};
+    for (int k = 0; k < positions; ++k) {
+      const json v = vec3();
+      if (flat)
+        for (const auto& x : v) m["positions"].push_back(x);
+      else
+        m["positions"].push_back(v);
+    }
+    const bool flat_indices = chance(0.4);
+    for (int t = integer(0, 3); t > 0; --t) {
+      const json tri = {integer(0, positions - 1), integer(0, positions - 1), integer(0, positions - 1)};
+      if (flat_indices)
+        for (const auto& i : tri) m["indices"].push_back(i);
+      else
+        m["indices"].push_back(tri);
+    }
+    if (chance(0.3)) {
+      m["normals"] = json::array();
+      for (int k = 0; k < positions; ++k) m["normals"].push_back(json{0, 0, 1});
+    }
+    if (chance(0.3)) {
+      m["colors"] = json::array();
+      for (int k = 0; k < positions; ++k) m["colors"].push_back(color());
+    } else if (chance(0.3)) {
+      m["color"] = color();
+    }
+    mesh_options(m);
+    return m;
+  }
+
+  json obj() {
+    json o = {{"type", "obj"}};
+    if (chance(0.7))
+      o["data"] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    else
+      o["source"] = "model";  // the upload every verdict is given
+    if (chance(0.2)) o["mtl"] = "newmtl red\nKd 1 0 0\n";
+    if (chance(0.3)) o["color"] = color();
+    mesh_options(o);
+    return o;
+  }
+
+  void mesh_options(json& m) {
+    if (chance(0.3)) m["shading"] = pick<std::string>({"flat", "smooth", "unlit"});
+    if (chance(0.2)) m["cull"] = pick<std::string>({"none", "back"});
+    if (chance(0.2)) m["wireframe"] = chance(0.5);
+    if (chance(0.3)) m["transform"] = transform();
+  }
+
+  json transform() {
+    if (chance(0.2)) {
+      json m = json::array();
+      for (int k = 0; k < 16; ++k) m.push_back(k % 5 == 0 ? 1 : 0);
+      return {{"matrix", m}};
+    }
+    json t = json::object();
+    if (chance(0.5)) t["translate"] = vec3();
+    if (chance(0.5)) t["rotate"] = json{integer(0, 90), integer(0, 90), 0};
+    if (chance(0.5)) t["scale"] = chance(0.5) ? json(2) : json{1, 2, 0.5};
+    return t;
+  }
+
+  json camera() {
+    json c = json::object();
+    if (chance(0.4)) c["projection"] = pick<std::string>({"perspective", "orthographic"});
+    if (chance(0.4)) c["eye"] = json{0, 0, 5};
+    if (chance(0.3)) c["target"] = json{0, 0, 0};
+    if (chance(0.3)) c["up"] = json{0, 1, 0};
+    if (chance(0.4)) c["fov"] = pick<json>({30, 45, 90.5, 179});
+    if (chance(0.2)) c["near"] = 0.1;
+    if (chance(0.2)) c["far"] = 100;
+    if (chance(0.2)) c["height"] = 3;
+    return c;
+  }
+
+  json light() {
+    json l = json::object();
+    if (chance(0.6)) l["direction"] = json{0, -1, -1};
+    if (chance(0.6)) l["ambient"] = pick<json>({0, 0.2, 1});
+    return l;
+  }
+
+  json point2() { return {coordinate(), coordinate()}; }
+  json vec3() { return {coordinate(), coordinate(), coordinate()}; }
+  json coordinate() {
+    switch (integer(0, 4)) {
+      case 0:
+        return integer(-10, 50);
+      case 1:
+        return uniform() * 60 - 5;
+      case 2:
+        return pick<json>({0, -0.0, 3.4e38, -3.4e38, 1e-300});
+      default:
+        return integer(0, 40);
+    }
+  }
+  json color() {
+    if (chance(0.7)) {
+      static const char* digits = "0123456789abcdefABCDEF";
+      std::string s = "#";
+      for (int k = pick<int>({3, 4, 6, 8}); k > 0; --k) s += digits[integer(0, 21)];
+      return s;
+    }
+    return chance(0.5) ? json{uniform(), uniform(), uniform()} : json{1, 0.5, 0, uniform()};
+  }
+
+  // Values from across the format's rules: boundaries, wrong types, valid values of other fields.
+  json interesting() {
+    static const json pool = json::parse(R"([
+      null, true, false, 0, -0.0, 1, -1, 0.5, 1.5, 2, 3, 4, 4.0, 7, 8, 16, 45, 179.99, 180, 255, 256.0,
+      4096, 4096.5, 1e-9, 3.4e38, 3.5e38, -3.5e38, 1e300, "", "#fff", "#ffff", "#ffffff", "#ffffff80", "#ff",
+      "#fffff", "fff", "#ggg", "#fff\n", " #fff", "triangle", "line", "polyline", "mesh", "obj", "Triangle",
+      "flat", "smooth", "unlit", "none", "back", "front", "perspective", "orthographic", "model", "mtl",
+      [], {}, [0], [0, 0], [0, 0, 0], [0, 1, 0], [1, 2, 3], [0, 0, 0, 0], [0.5, 0.5, 0.5], [1, 0, 0, 0.5],
+      [255, 0, 0], [2, 0, 0], [-0.1, 0, 0], [[0, 0], [1, 1]], [[0, 0], [4, 0], [0, 4]],
+      [[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 0], [1, 1, 1]], [0, 1, 2], [[0, 1, 2]], [[0, 1]], [0, 1, 2, 3],
+      ["#fff", "#000"], ["#fff", "#000", "#f00"], [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1],
+      {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}, {"translate": [1, 2, 3]},
+      {"scale": 2}, {"rotate": [0, 90, 0]}, {"matrix": [1], "scale": 2}, {"eye": [0, 0, 0]},
+      {"type": "triangle", "points": [[0, 0], [4, 0], [0, 4]]}, {"type": "line"}, {"direction": [0, 0, 0]}
+    ])");
+    return pool[static_cast<std::size_t>(integer(0, static_cast<int>(pool.size()) - 1))];
+  }
+
+  // A plausible value for a key added by a mutation: half the time right for that key, else anything.
+  json value_for(const std::string& key) {
+    if (chance(0.5)) return interesting();
+    if (key == "color" || key == "background") return color();
+    if (key == "points") return json::array({point2(), point2()});
+    if (key == "transform") return transform();
+    if (key == "camera") return camera();
+    if (key == "light") return light();
+    if (key == "fill" || key == "closed" || key == "wireframe") return chance(0.5);
+    if (key == "eye" || key == "target" || key == "up" || key == "translate" || key == "rotate" ||
+        key == "direction")
+      return vec3();
+    return interesting();
+  }
+
+  void mutate_once(json& doc) {
+    std::vector<json::json_pointer> places;
+    collect(doc, json::json_pointer(), places);
+    json& at = doc[places[static_cast<std::size_t>(integer(0, static_cast<int>(places.size()) - 1))]];
+    static const std::vector<std::string> keys = {
+        "width",     "height",     "background", "antialias",  "primitives", "camera", "light",
+        "type",      "points",     "color",      "colors",     "fill",       "closed", "width",
+        "positions", "indices",    "normals",    "shading",    "wireframe",  "cull",   "transform",
+        "data",      "source",     "mtl",        "mtl_source", "translate",  "rotate", "scale",
+        "matrix",    "projection", "eye",        "target",     "up",         "fov",    "near",
+        "far",       "direction",  "ambient",    "colour",     "Width",      "point",  "indexes"};
+    const double what = uniform();
+    if (at.is_object() && !at.empty() && what < 0.25) {  // remove a key
+      auto it = at.begin();
+      std::advance(it, integer(0, static_cast<int>(at.size()) - 1));
+      at.erase(it);
+    } else if (at.is_object() && what < 0.5) {  // add (or replace) a key
+      const std::string& key = keys[static_cast<std::size_t>(integer(0, static_cast<int>(keys.size()) - 1))];
+      at[key] = value_for(key);
+    } else if (at.is_array() && !at.empty() && what < 0.3) {  // drop an element
+      at.erase(static_cast<std::size_t>(integer(0, static_cast<int>(at.size()) - 1)));
+    } else if (at.is_array() && !at.empty() && what < 0.45) {  // repeat an element
+      at.push_back(at[static_cast<std::size_t>(integer(0, static_cast<int>(at.size()) - 1))]);
+    } else if (at.is_array() && what < 0.55) {
+      at.push_back(interesting());
+    } else {
+      at = interesting();
+    }
+  }
+
+  static void collect(const json& v, const json::json_pointer& here, std::vector<json::json_pointer>& out) {
+    out.push_back(here);
+    if (v.is_object())
+      for (auto it = v.begin(); it != v.end(); ++it) collect(it.value(), here / it.key(), out);
+    else if (v.is_array())
+      for (std::size_t k = 0; k < v.size(); ++k) collect(v[k], here / k, out);
+  }
+
+  bool chance(double p) { return uniform() < p; }
+  double uniform() { return std::uniform_real_distribution<double>(0, 1)(rng_); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  template <class T>
+  T pick(std::initializer_list<T> options) {
+    return options.begin()[integer(0, static_cast<int>(options.size()) - 1)];
+  }
+
+  std::mt19937 rng_;
+};
+
+const char* kind_name(raster::ErrorKind k) {
+  switch (k) {
+    case raster::ErrorKind::syntax:
+      return "syntax";
+    case raster::ErrorKind::invalid:
+      return "invalid";
+    case raster::ErrorKind::limit:
+      return "limit";
+    case raster::ErrorKind::model:
+      return "model";
+    case raster::ErrorKind::encoding:
+      return "encoding";
+  }
+  return "?";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: schema_cases COUNT SEED\n");
+    return 2;
+  }
+  const long count = std::strtol(argv[1], nullptr, 10);
+  Generator generator(static_cast<std::uint32_t>(std::strtoul(argv[2], nullptr, 10)));
+  // What a multipart request would carry: "source": "model" finds its part, as over HTTP.
+  const raster::Uploads uploads = {{"model", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+                                   {"mtl", "newmtl red\nKd 1 0 0\n"}};
+  for (long i = 0; i < count; ++i) {
+    json doc = generator.scene();
+    generator.mutate(doc);
+    const std::string text = doc.dump();
+    json line = {{"doc", text}, {"verdict", "accepted"}};
+    try {
+      const raster::Scene scene = raster::parse_scene(text, {}, uploads);
+      (void)raster::plan(scene, {}, {1});  // the camera's remaining checks (400s) happen here
+    } catch (const raster::SceneError& e) {
+      line["verdict"] = kind_name(e.kind());
+      line["message"] = e.what();
+      line["pointer"] = e.where().pointer;
+    }
+    std::puts(line.dump().c_str());
+  }
+  return 0;
+}
