@@ -7,11 +7,12 @@ COPY . .
 RUN make build BUILD=/build
 
 # Runtime: only the shared libraries rasterd links against (from `ldd build/rasterd` mapped to packages with
-# dpkg -S; their own dependencies, ssl/zlib/brotli, come with them), curl for the health check, and a
-# non-root user.
+# dpkg -S; their own dependencies, such as brotli, come with them), curl for the health check, and a
+# non-root user. zlib (image URLs) and libcrypto (ETags) are rasterd's own links too, listed although
+# libcpp-httplib0.11 brings them: the image is the same.
 FROM debian:bookworm-slim
 RUN apt-get update -qq \
- && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libisal2 libtinyobjloader2rc10 curl ca-certificates \
+ && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libisal2 libtinyobjloader2rc10 zlib1g libssl3 curl ca-certificates \
  && rm -rf /var/lib/apt/lists/* \
  && useradd --system --no-create-home --uid 10001 rasterd
 COPY --from=build /build/rasterd /usr/local/bin/rasterd

@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
+.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
 
 deps:
 	@scripts/install-deps
@@ -57,6 +57,11 @@ bench-accuracy: bench-build
 # wrk against a local server on the mid-size scene; LOADTEST_SECONDS=30 by default.
 loadtest: bench-build
 	@scripts/loadtest
+
+# One image URL over and over: rendering, the 304, rasterd's cheapest request and nginx's cache hit, side by
+# side (LOADTEST_SECONDS=10 a row); writes docs/cache.txt. Why rasterd has no cache of its own.
+loadtest-cache: build
+	@scripts/loadtest-cache
 
 # examples/nginx.conf in front of rasterd, checked (installs nginx).
 test-proxy: build
