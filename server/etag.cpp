@@ -38,6 +38,7 @@ class Digest {
     if (!ctx_ || EVP_DigestInit_ex(ctx_.get(), EVP_sha256(), nullptr) != 1) throw std::bad_alloc();
   }
   void bytes(const void* data, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy must not get
     if (used_ + n > buffer_.size()) {
       flush();
       if (n > buffer_.size()) {
