@@ -116,6 +116,23 @@ TEST(Robustness, CoordinatesBeyondTheFloatRangeAreRefused) {
 namespace {
 
 // Fuzzer findings, kept as regression tests (the sanitizer build runs them with UBSan).
+// Found by the scene fuzzer once it checked that error messages are UTF-8: in valid UTF-8 text, nlohmann's
+// parse error quotes the bytes it read up to the error ("last read: '\"type\"\xF0'"), cutting a 4-byte
+// character after its first byte. Every SceneError message is now valid UTF-8 (error.h).
+TEST(Robustness, FuzzFindingParseErrorCutsAUtf8Sequence) {
+  const std::string text =
+      test::read_file(RASTERD_TESTS_DIR "/data/fuzz-parse-error-cuts-a-utf8-sequence.json");
+  ASSERT_EQ(raster::first_invalid_utf8(text), std::string_view::npos) << "the input itself is valid UTF-8";
+  try {
+    raster::parse_scene(text);
+    FAIL() << "the document is malformed";
+  } catch (const raster::SceneError& e) {
+    EXPECT_EQ(e.kind(), raster::ErrorKind::syntax);
+    EXPECT_EQ(raster::first_invalid_utf8(e.what()), std::string_view::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\\xF0"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Robustness, FuzzFinding3DLineEndpointAt1e30) {
   // A 3D line with one endpoint at z = 1e30: homogeneous clipping in doubles cancelled catastrophically and
   // a NaN screen coordinate reached Wide::from_double, an integer conversion. Now the segment is dropped.

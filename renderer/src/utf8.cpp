@@ -2,6 +2,8 @@
 // well-formed byte sequences of RFC 3629, table 3-7 of the Unicode standard.
 #include "raster/utf8.h"
 
+#include "raster/error.h"
+
 #include <cstdint>
 #include <cstring>
 

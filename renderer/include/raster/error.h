@@ -4,6 +4,9 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+
+#include "raster/utf8.h"
 
 namespace raster {
 
@@ -23,11 +26,13 @@ struct ErrorLocation {
   std::size_t line = 0;  ///< 1-based line number (OBJ models), 0 when unknown
 };
 
-/// The single exception type for bad input. what() is a human sentence without the location.
+/// The single exception type for bad input. what() is a human sentence without the location, and always
+/// valid UTF-8 on one line: messages quote client text (a key, a token, nlohmann's "last read" excerpt,
+/// which can cut a multi-byte character in half), and callers send them on to clients as JSON.
 class SceneError : public std::runtime_error {
  public:
-  SceneError(ErrorKind kind, std::string message, ErrorLocation where = {})
-      : std::runtime_error(std::move(message)), kind_(kind), where_(std::move(where)) {}
+  SceneError(ErrorKind kind, std::string_view message, ErrorLocation where = {})
+      : std::runtime_error(escape_for_display(message)), kind_(kind), where_(std::move(where)) {}
 
   ErrorKind kind() const { return kind_; }
   const ErrorLocation& where() const { return where_; }

@@ -6,8 +6,6 @@
 #include <string>
 #include <string_view>
 
-#include "raster/error.h"
-
 namespace raster {
 
 /// Offset (0-based) of the first byte of `text` that does not belong to a well-formed UTF-8 sequence as
