@@ -7,6 +7,7 @@
 // one to three mutations at random places: a value replaced by one from a pool of boundary and
 // wrong-typed values, a key removed or added (known names in the wrong place, typos), array elements
 // dropped or added. So roughly half are accepted, and the rejected ones sit just across a rule.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -210,6 +211,7 @@ class Generator {
   json value_for(const std::string& key) {
     if (chance(0.5)) return interesting();
     if (key == "color" || key == "background") return color();
+    if (key == "colors") return json::array({color(), color(), color()});
     if (key == "points") return json::array({point2(), point2()});
     if (key == "transform") return transform();
     if (key == "camera") return camera();
@@ -218,13 +220,89 @@ class Generator {
     if (key == "eye" || key == "target" || key == "up" || key == "translate" || key == "rotate" ||
         key == "direction")
       return vec3();
+    if (key == "data") return "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    if (key == "source") return "model";
+    if (key == "mtl") return "newmtl red\nKd 1 0 0\n";
+    if (key == "mtl_source") return "mtl";
+    if (key == "scale") return 2;
+    if (key == "matrix") return transform_matrix();
+    if (key == "shading") return pick<std::string>({"flat", "smooth", "unlit"});
+    if (key == "cull") return pick<std::string>({"none", "back"});
+    if (key == "projection") return pick<std::string>({"perspective", "orthographic"});
+    if (key == "normals") return json::array({json{0, 0, 1}, json{0, 0, 1}, json{0, 0, 1}});
+    auto b = boundaries(key);
+    if (!b.empty()) return b[static_cast<std::size_t>(integer(0, static_cast<int>(b.size()) - 1))];
     return interesting();
+  }
+
+  // The keys an object of its kind accepts (by "type", or by the key that holds it).
+  static std::vector<std::string> kind_keys(const json& object, const std::string& held_by) {
+    const std::string type =
+        object.contains("type") && object["type"].is_string() ? object["type"].get<std::string>() : "";
+    if (held_by.empty())
+      return {"width", "height", "background", "antialias", "primitives", "camera", "light"};
+    if (held_by == "transform") return {"translate", "rotate", "scale", "matrix"};
+    if (held_by == "camera") return {"projection", "eye", "target", "up", "fov", "near", "far", "height"};
+    if (held_by == "light") return {"direction", "ambient"};
+    if (type == "triangle") return {"points", "color", "colors", "fill", "width"};
+    if (type == "line") return {"points", "color", "colors", "width"};
+    if (type == "polyline") return {"points", "color", "colors", "closed", "width"};
+    if (type == "mesh")
+      return {"positions", "indices",   "colors", "color",    "normals",
+              "shading",   "wireframe", "cull",   "transform"};
+    if (type == "obj")
+      return {"data", "source", "mtl", "mtl_source", "color", "shading", "wireframe", "cull", "transform"};
+    return {};
+  }
+
+  // Values on and just past the edges of a field's range (by the key that holds the number, or the array
+  // it is an element of).
+  static std::vector<json> boundaries(const std::string& key) {
+    if (key == "width" || key == "height")  // image sides, and line widths (0, 4096]
+      return {0, -1, 1e-9, 1, 1.5, 256.0, 4096, 4096.5, 8192, 8193};
+    if (key == "fov") return {0, 1e-9, 179.999, 180, 181, -1};
+    if (key == "near" || key == "far") return {0, -0.0, 1e-9, -1, 0.5, 1000};
+    if (key == "ambient") return {0, 1, 1.0001, -0.0001, 0.5};
+    if (key == "antialias") return {0, 1, 2, 4, 8, 16, 32, 4.5, 8.0};
+    if (key == "scale") return {0, -1, 2, 3.5e38};
+    if (key == "color" || key == "colors" || key == "background")  // components of colour arrays
+      return {0, 1, 1.0001, -0.0001, 255, 0.5};
+    if (key == "points" || key == "positions" || key == "normals" || key == "eye" || key == "target" ||
+        key == "up" || key == "translate" || key == "rotate" || key == "direction")
+      return {0, -0.0, 3.402823669209385e38, -3.402823669209385e38, 3.4028236692093857e38, 1e300, 1.5};
+    if (key == "indices") return {-1, 0, 1, 2, 2.5, 5, 1e30};
+    if (key == "matrix") return {0, 1, 1e300, -2.5};
+    return {};
+  }
+
+  json transform_matrix() {
+    json m = json::array();
+    for (int k = 0; k < 16; ++k) m.push_back(k % 5 == 0 ? 1 : 0);
+    return m;
+  }
+
+  // The key a place is held by: its own for an object member; for an array element, its array's (for an
+  // element of a point or colour inside a list, the list's).
+  static std::string held_by(const json::json_pointer& place) {
+    json::json_pointer p = place;
+    while (!p.empty()) {
+      const std::string last = p.back();
+      if (!last.empty() &&
+          std::all_of(last.begin(), last.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+        p.pop_back();
+        continue;
+      }
+      return last;
+    }
+    return "";
   }
 
   void mutate_once(json& doc) {
     std::vector<json::json_pointer> places;
     collect(doc, json::json_pointer(), places);
-    json& at = doc[places[static_cast<std::size_t>(integer(0, static_cast<int>(places.size()) - 1))]];
+    const json::json_pointer place =
+        places[static_cast<std::size_t>(integer(0, static_cast<int>(places.size()) - 1))];
+    json& at = doc[place];
     static const std::vector<std::string> keys = {
         "width",     "height",     "background", "antialias",  "primitives", "camera", "light",
         "type",      "points",     "color",      "colors",     "fill",       "closed", "width",
@@ -233,11 +311,21 @@ class Generator {
         "matrix",    "projection", "eye",        "target",     "up",         "fov",    "near",
         "far",       "direction",  "ambient",    "colour",     "Width",      "point",  "indexes"};
     const double what = uniform();
-    if (at.is_object() && !at.empty() && what < 0.25) {  // remove a key
+    const std::string holder = held_by(place);
+    const auto edges = boundaries(holder);
+    if (at.is_number() && !edges.empty() && what < 0.6) {  // a number onto or just past its range's edge
+      at = edges[static_cast<std::size_t>(integer(0, static_cast<int>(edges.size()) - 1))];
+    } else if (at.is_object() && !at.empty() && what < 0.2) {  // remove a key
       auto it = at.begin();
       std::advance(it, integer(0, static_cast<int>(at.size()) - 1));
       at.erase(it);
-    } else if (at.is_object() && what < 0.5) {  // add (or replace) a key
+    } else if (at.is_object() && what < 0.45) {  // add a key this kind of object accepts
+      const auto own = kind_keys(at, place.empty() ? "" : place.back());
+      if (!own.empty()) {
+        const std::string& key = own[static_cast<std::size_t>(integer(0, static_cast<int>(own.size()) - 1))];
+        at[key] = value_for(key);
+      }
+    } else if (at.is_object() && what < 0.6) {  // add (or replace) any key
       const std::string& key = keys[static_cast<std::size_t>(integer(0, static_cast<int>(keys.size()) - 1))];
       at[key] = value_for(key);
     } else if (at.is_array() && !at.empty() && what < 0.3) {  // drop an element
