@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
+.PHONY: test-openapi deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
 
 deps:
 	@scripts/install-deps
@@ -95,6 +95,10 @@ test-deploy:
 test-cluster: build
 	@scripts/install-deps cluster
 	@BUILD=$(BUILD) scripts/test-cluster
+
+# openapi.json against the OpenAPI 3.1 schema, fetched from the npm registry (not kept in the repository).
+test-openapi: build
+	@BUILD=$(BUILD) scripts/test-openapi
 
 clean:
 	rm -rf build build-asan build-bench build-fuzz fuzz-out

@@ -241,10 +241,14 @@ def server_routes(root):
 def check_openapi(args):
     r = Result()
     doc = load(os.path.join(args.root, "server/schema/openapi.json"))
-    meta = load(os.path.join(args.root, "tests/schema/oas-3.1-schema.json"))
-    errors = list(Draft202012Validator(meta).iter_errors(doc))
-    r.check(not errors, "openapi.json against the OpenAPI 3.1 schema: " + "; ".join(
-        f"{'/'.join(map(str, e.absolute_path))}: {e.message[:160]}" for e in errors[:5]))
+    # The OpenAPI 3.1 schema is third-party text, not kept in the repository: `make test-openapi` fetches it
+    # from the npm registry (scripts/test-openapi) and passes it here. Without it (make test) the checks
+    # below still run: references, Schema Objects, routes and statuses.
+    if args.oas_schema:
+        meta = load(args.oas_schema)
+        errors = list(Draft202012Validator(meta).iter_errors(doc))
+        r.check(not errors, "openapi.json against the OpenAPI 3.1 schema: " + "; ".join(
+            f"{'/'.join(map(str, e.absolute_path))}: {e.message[:160]}" for e in errors[:5]))
     r.check(doc.get("info", {}).get("version") == args.version,
             f"info.version {doc.get('info', {}).get('version')!r} is not the project's {args.version!r}")
 
@@ -311,6 +315,7 @@ def main():
     g.add_argument("--seed", type=int, default=16)
     o = sub.add_parser("openapi")
     o.add_argument("--version", required=True, help="the CMake project version")
+    o.add_argument("--oas-schema", help="the OpenAPI 3.1 schema (JSON) to validate against")
     args = parser.parse_args()
     return {"readme": check_readme, "examples": check_examples, "generated": check_generated,
             "openapi": check_openapi}[args.what](args)
