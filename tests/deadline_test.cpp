@@ -35,6 +35,14 @@ struct FakeClock {
   std::function<Clock::time_point()> fn() {
     return [this] { return ++readings >= expire_at ? t0 + std::chrono::hours(1) : t0; };
   }
+  /// A RenderControl on this clock whose deadline is a second after t0: it passes at the expire_at-th
+  /// reading.
+  raster::RenderControl control() {
+    raster::RenderControl c;
+    c.deadline = t0 + std::chrono::seconds(1);
+    c.clock = fn();
+    return c;
+  }
 };
 
 // The plan, with exactly `threads` bands (the planner would keep small work on one).
@@ -65,9 +73,7 @@ TEST(Deadline, OneImageSizedTriangleIsCheckedWhileItIsDrawn) {
   const raster::Scene scene = covering_triangles(2048, 1);
   const raster::RenderPlan plan = plan_with_threads(scene, 1);
   FakeClock clock;
-  raster::RenderControl control;
-  control.deadline = clock.t0 + std::chrono::seconds(1);
-  control.clock = clock.fn();
+  raster::RenderControl control = clock.control();
   raster::render(scene, plan, control);
   const int pixels = 2048 * 2048;
   EXPECT_GE(clock.readings, pixels / raster::detail::StopMeter::kWorkPerCheck)
@@ -78,8 +84,7 @@ TEST(Deadline, OneImageSizedTriangleIsCheckedWhileItIsDrawn) {
   // The deadline passes at the 5th look: the render stops there, with no look after it.
   FakeClock expiring;
   expiring.expire_at = 5;
-  control.clock = expiring.fn();
-  control.deadline = expiring.t0 + std::chrono::seconds(1);
+  control = expiring.control();
   EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled);
   EXPECT_EQ(expiring.readings, 5);
 }
@@ -91,9 +96,7 @@ TEST(Deadline, AntialiasedRendersStopInsideAPlaneOrTheResolve) {
   for (int threads : {1, 2, 3}) {
     const raster::RenderPlan plan = plan_with_threads(scene, threads);
     FakeClock counting;
-    raster::RenderControl control;
-    control.deadline = counting.t0 + std::chrono::seconds(1);
-    control.clock = counting.fn();
+    raster::RenderControl control = counting.control();
     raster::render(scene, plan, control);
     const int looks = counting.readings;
     // 16 planes of 1024^2 pixels, plus the resolve reading them again
@@ -102,8 +105,7 @@ TEST(Deadline, AntialiasedRendersStopInsideAPlaneOrTheResolve) {
     for (int expire_at : {3, looks / 2, looks - 1}) {
       FakeClock expiring;
       expiring.expire_at = expire_at;
-      control.clock = expiring.fn();
-      control.deadline = expiring.t0 + std::chrono::seconds(1);
+      control = expiring.control();
       EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled)
           << threads << " threads, expiring at look " << expire_at;
       // Each band stops at its next look after the first one that saw the deadline.
@@ -132,9 +134,7 @@ TEST(Deadline, MeshGeometryIsCheckedWhileItIsTransformed) {
   const raster::Scene scene = raster::parse_scene(doc.dump());
   const raster::RenderPlan plan = plan_with_threads(scene, 1);
   FakeClock clock;
-  raster::RenderControl control;
-  control.deadline = clock.t0 + std::chrono::seconds(1);
-  control.clock = clock.fn();
+  raster::RenderControl control = clock.control();
   const raster::Image image = raster::render(scene, plan, control);
   EXPECT_EQ(test::count_not(image, test::kBlack), 0) << "the mesh is behind the camera";
   EXPECT_GE(clock.readings,
@@ -142,8 +142,7 @@ TEST(Deadline, MeshGeometryIsCheckedWhileItIsTransformed) {
 
   FakeClock expiring;
   expiring.expire_at = 3;
-  control.clock = expiring.fn();
-  control.deadline = expiring.t0 + std::chrono::seconds(1);
+  control = expiring.control();
   EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled);
   EXPECT_EQ(expiring.readings, 3);
 }
@@ -153,9 +152,7 @@ TEST(Deadline, AFutureDeadlineDoesNotChangeTheImage) {
   const raster::Scene scene = covering_triangles(300, 3, 4);
   const raster::RenderPlan plan = plan_with_threads(scene, 2);
   FakeClock clock;
-  raster::RenderControl control;
-  control.deadline = clock.t0 + std::chrono::seconds(1);
-  control.clock = clock.fn();
+  raster::RenderControl control = clock.control();
   EXPECT_EQ(raster::render(scene, plan, control).pixels, raster::render(scene, plan).pixels);
 }
 
