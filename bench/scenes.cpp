@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <stdexcept>
 
@@ -13,14 +14,14 @@ raster::Rgba8 random_color(std::mt19937& rng) {
           static_cast<std::uint8_t>(rng()), 255};
 }
 
-void random_triangles(raster::Scene& s, int count, double radius, std::mt19937& rng) {
+void random_triangles(raster::Scene& s, int count, double radius, std::mt19937& rng, int ncolors = 3) {
   std::uniform_real_distribution<double> x(0, s.width), y(0, s.height), d(-radius, radius);
   for (int i = 0; i < count; ++i) {
     const double cx = x(rng), cy = y(rng);
     const raster::Point2 p[3] = {
         {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}, {cx + d(rng), cy + d(rng)}};
     const raster::Rgba8 c[3] = {random_color(rng), random_color(rng), random_color(rng)};
-    add_triangle(s, p, c, 3);
+    add_triangle(s, p, c, ncolors);
   }
 }
 
@@ -90,6 +91,8 @@ raster::Scene make_scene(const std::string& kind, unsigned seed) {
     random_triangles(s, 100'000, 12, rng);
   } else if (kind == "large") {
     random_triangles(s, 200, 340, rng);
+  } else if (kind == "flat") {
+    random_triangles(s, 200, 340, rng, 1);
   } else if (kind == "mid") {
     s.width = s.height = 512;
     random_triangles(s, 2'000, 30, rng);
@@ -112,7 +115,7 @@ raster::Scene make_scene(const std::string& kind, unsigned seed) {
         add_triangle(s, {a, d, c}, &c2, 1);
       }
   } else {
-    throw std::invalid_argument("unknown scene kind '" + kind + "' (small, large, grid, mid)");
+    throw std::invalid_argument("unknown scene kind '" + kind + "' (small, large, flat, grid, mid)");
   }
   return s;
 }
@@ -141,6 +144,52 @@ std::string scene_json(const raster::Scene& s) {
     }
   }
   return out + "]}";
+}
+
+}  // namespace bench
+
+namespace bench {
+
+raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path) {
+  raster::Scene s;
+  raster::Mesh mesh;
+  if (kind == "sphere") {
+    s.width = s.height = 1024;
+    constexpr int n = 548;  // rings and segments: 2 n^2 triangles, the poles' degenerate ones included
+    const double pi = std::acos(-1.0);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const double theta = pi * i / n, phi = 2 * pi * j / n;
+        mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+      }
+    auto at = [](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
+        mesh.triangles.push_back({at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
+      }
+    mesh.colors = {{220, 200, 180, 255}};
+  } else if (kind == "bunny") {
+    s.width = s.height = 512;
+    const char* env = std::getenv("RASTERD_BUNNY");
+    const std::string path = env && *env ? env : bunny_path;
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) throw std::runtime_error("cannot read " + path + " (set RASTERD_BUNNY)");
+    std::string text;
+    char buf[65536];
+    for (std::size_t got; (got = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, got);
+    std::fclose(f);
+    mesh = raster::parse_obj(text);
+    if (mesh.colors.empty()) mesh.colors = {{204, 204, 204, 255}};  // as the scene reader gives an OBJ
+  } else {
+    throw std::invalid_argument("unknown mesh scene: " + kind);
+  }
+  mesh.shading = raster::Shading::smooth;
+  s.meshes.push_back(std::move(mesh));
+  raster::Primitive p;
+  p.kind = raster::PrimitiveKind::mesh;
+  s.primitives.push_back(p);
+  return s;
 }
 
 }  // namespace bench

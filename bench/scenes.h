@@ -8,7 +8,7 @@
 namespace bench {
 
 /// Kinds: "small" (100,000 triangles of about +-12 px, 1024x1024, per-vertex colours), "large" (200
-/// triangles of about +-340 px), "grid" (64x64 jittered grid, 8,192 triangles, flat colours), "mid"
+/// triangles of about +-340 px), "flat" (the same 200 large triangles, one colour each), "grid" (64x64 jittered grid, 8,192 triangles, flat colours), "mid"
 /// (2,000 triangles of about +-30 px on 512x512, the load-test scene). Same seed, same scene.
 raster::Scene make_scene(const std::string& kind, unsigned seed = 1);
 
@@ -29,5 +29,15 @@ void add_line(raster::Scene& scene, raster::Point2 a, raster::Point2 b, raster::
 
 /// The same scene as JSON text (format v1), for end-to-end measurements.
 std::string scene_json(const raster::Scene& scene);
+
+}  // namespace bench
+
+namespace bench {
+
+/// 3D benchmark scenes: "sphere" (a UV sphere of 2 x 548 x 548 = 600,608 triangles built in code, smooth-lit
+/// with computed normals, 1024x1024) and "bunny" (the Stanford bunny from $RASTERD_BUNNY, else `bunny_path`,
+/// smooth-lit, 512x512).
+/// Camera and light are the defaults (auto-framed, headlight). Throws if the bunny file cannot be read.
+raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path = "../shared/models/bunny.obj");
 
 }  // namespace bench

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "raster.h"
+#include "coverage.h"
 #include "support.h"
 
 namespace {
@@ -310,9 +310,11 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
     EXPECT_EQ(plan.samples, c.samples) << c.name;
     const std::int64_t pixels = static_cast<std::int64_t>(scene.width) * scene.height;
     EXPECT_EQ(plan.memory.color_bytes, pixels * raster::channel_count(c.format)) << c.name;
-    EXPECT_EQ(plan.memory.depth_bytes, c.depth && c.samples == 1 ? pixels * 4 : 0) << c.name;
-    EXPECT_EQ(plan.memory.sample_bytes,
-              c.samples > 1 ? pixels * c.samples * (raster::channel_count(c.format) + (c.depth ? 4 : 0)) : 0)
+    // Depth lives in each thread's tile (3D only); sample planes are colour only.
+    const std::int64_t tile = std::int64_t{plan.threads} * plan.tile_width() * plan.tile_height();
+    EXPECT_EQ(plan.memory.depth_bytes, c.depth ? tile * 4 : 0) << c.name;
+    EXPECT_EQ(plan.memory.tile_bytes, tile * raster::channel_count(c.format)) << c.name;
+    EXPECT_EQ(plan.memory.sample_bytes, c.samples > 1 ? pixels * c.samples * raster::channel_count(c.format) : 0)
         << c.name;
     raster::RenderStats stats;
     raster::RenderControl control;

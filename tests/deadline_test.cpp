@@ -7,7 +7,7 @@
 #include <functional>
 
 #include <nlohmann/json.hpp>
-#include "raster.h"
+#include "coverage.h"
 
 #include "raster/raster.h"
 #include "support.h"

@@ -52,7 +52,7 @@ TEST(Plan, TranslucentInkOnOpaqueBackgroundStaysOpaqueRgb) {
   EXPECT_EQ(p.format, raster::PixelFormat::rgb8)
       << "blending onto opaque pixels cannot make them transparent";
   EXPECT_EQ(p.blend_count, 1);
-  EXPECT_TRUE(p.primitives[0].blend);
+  EXPECT_TRUE(p.draw_of(0)->mode.blend);
 }
 
 TEST(Plan, TransparentBackgroundNeedsAlpha) {
@@ -78,9 +78,9 @@ TEST(Plan, EqualVertexColoursTakeTheFlatPathWithIdenticalPixels) {
   s.triangle({1.3, 2.2}, {46.1, 9.7}, {8.8, 45.5}, c, c, c).line({0.5, 40.5}, {47.5, 3.5}, c, c);
   auto p = plan_of(s.scene);
   EXPECT_EQ(p.flat_count, 2);
-  EXPECT_FALSE(p.primitives[0].smooth);
+  EXPECT_FALSE(p.draw_of(0)->mode.smooth);
   const auto flat = raster::render(s.scene, p);
-  for (auto& pp : p.primitives) pp.smooth = true;  // force the interpolating path
+  for (auto& d : p.draws) d.mode.smooth = d.mode.varying_color = true;  // force the interpolating path
   EXPECT_EQ(flat.pixels, raster::render(s.scene, p).pixels);
 }
 
@@ -91,9 +91,9 @@ TEST(Plan, PrimitivesOutsideTheImageAreCulled) {
       .triangle({1, 1}, {30, 1}, {1, 30}, test::kGreen);
   const auto p = plan_of(s.scene);
   EXPECT_EQ(p.culled_count, 2);
-  EXPECT_FALSE(p.primitives[0].visible);
-  EXPECT_FALSE(p.primitives[1].visible);
-  EXPECT_TRUE(p.primitives[2].visible);
+  EXPECT_EQ(p.draw_of(0), nullptr);
+  EXPECT_EQ(p.draw_of(1), nullptr);
+  EXPECT_NE(p.draw_of(2), nullptr);
   // Culled primitives do not decide the format either: only green ink is visible, still RGB.
   EXPECT_EQ(p.format, raster::PixelFormat::rgb8);
 }
@@ -118,15 +118,22 @@ TEST(Plan, SmallScenesStayOnTheCallingThreadLargeOnesUseBands) {
 TEST(Plan, MemoryIsCheckedBeforeAllocation) {
   SceneBuilder s(4000, 4000, raster::Rgba8{255, 0, 0, 0});  // not grey, not opaque: RGBA
   raster::Limits limits;
-  limits.max_buffer_bytes = 4000ll * 4000 * 4 - 1;
+  raster::PlanOptions one_thread;
+  one_thread.max_threads = 1;
+  limits.max_buffer_bytes = 1ll << 40;
+  const raster::MemoryPlan need = raster::plan(s.scene, limits, one_thread).memory;
+  EXPECT_EQ(need.color_bytes, 4000ll * 4000 * 4);
+  EXPECT_EQ(need.tile_bytes, 64 * 64 * 4) << "one thread's tile";
+  EXPECT_EQ(need.total(), need.color_bytes + need.tile_bytes);
+  limits.max_buffer_bytes = need.total() - 1;
   try {
-    raster::plan(s.scene, limits);
-    FAIL() << "a 64 MB RGBA buffer is over a 64 MB - 1 byte limit";
+    raster::plan(s.scene, limits, one_thread);
+    FAIL() << "a 64 MB RGBA buffer and its tile are over a limit one byte short of them";
   } catch (const raster::SceneError& e) {
     EXPECT_EQ(e.kind(), raster::ErrorKind::limit);
   }
   limits.max_buffer_bytes += 1;
-  EXPECT_EQ(raster::plan(s.scene, limits).memory.total(), 4000ll * 4000 * 4);
+  EXPECT_EQ(raster::plan(s.scene, limits, one_thread).memory.total(), need.total());
 }
 
 TEST(Plan, LinesBecomeRectanglesOnlyWhenWideOrAntialiased) {
@@ -134,11 +141,11 @@ TEST(Plan, LinesBecomeRectanglesOnlyWhenWideOrAntialiased) {
   s.line({1, 1}, {30, 20}, test::kRed).line({1, 5}, {30, 25}, test::kRed);
   s.scene.primitives[1].width = 3;
   auto p = plan_of(s.scene);
-  EXPECT_FALSE(p.primitives[0].line_rectangles) << "a 1 px aliased line is Bresenham";
-  EXPECT_TRUE(p.primitives[1].line_rectangles);
+  EXPECT_FALSE(p.draw_of(0)->mode.line_rectangles) << "a 1 px aliased line is Bresenham";
+  EXPECT_TRUE(p.draw_of(1)->mode.line_rectangles);
   s.scene.samples = 4;
   p = plan_of(s.scene);
-  EXPECT_TRUE(p.primitives[0].line_rectangles) << "anti-aliased lines are rectangles";
+  EXPECT_TRUE(p.draw_of(0)->mode.line_rectangles) << "anti-aliased lines are rectangles";
 }
 
 TEST(Plan, ExplainShowsTheDecisions) {

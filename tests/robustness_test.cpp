@@ -40,7 +40,9 @@ TEST(Robustness, LargestImageRendersWithPlannedMemory) {
       {"type": "triangle", "points": [[0,0],[6324,0],[0,6324]], "color": "#808080"},
       {"type": "triangle", "points": [[6324,0],[6324,6324],[0,6324]], "color": "#808080"}]})");
   const auto plan = raster::plan(scene);
-  EXPECT_EQ(plan.memory.total(), 6324ll * 6324);
+  EXPECT_EQ(plan.memory.color_bytes, 6324ll * 6324);
+  EXPECT_EQ(plan.memory.total(), plan.memory.color_bytes + plan.memory.tile_bytes) << "no other buffer";
+  EXPECT_EQ(plan.memory.tile_bytes, plan.threads * 64 * 64);
   const auto img = raster::render(scene, plan);
   EXPECT_EQ(static_cast<std::int64_t>(img.pixels.size()), plan.memory.color_bytes);
   EXPECT_EQ(test::pixel(img, 0, 0).r, 128);

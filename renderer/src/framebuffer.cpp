@@ -61,47 +61,33 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background, StopMeter& met
   return image;
 }
 
-std::vector<float> make_depth_buffer(const RenderPlan& plan, StopMeter& meter) {
-  if (!plan.depth_buffer) return {};
-  const std::size_t count = static_cast<std::size_t>(plan.width) * plan.height;
-  std::vector<float> depth;
-  depth.reserve(count);
-  grow_filled(depth, count, 0.0f, meter);
-  return depth;
-}
-
-void resolve(const std::vector<Image>& planes, Image& out, Rect band) {
+void resolve(const std::vector<Image>& planes, Image& out, Rect rect) {
   const int c = out.channels();
   const auto n = static_cast<std::uint32_t>(planes.size());
   const bool alpha = out.format == PixelFormat::grey_alpha8 || out.format == PixelFormat::rgba8;
-  const std::size_t begin = static_cast<std::size_t>(band.y0) * out.width * c,
-                    end = static_cast<std::size_t>(band.y1) * out.width * c;
-  for (std::size_t i = begin; i < end; i += c) {
-    if (!alpha) {
-      for (int k = 0; k < c; ++k) {
-        std::uint32_t sum = 0;
-        for (const Image& p : planes) sum += p.pixels[i + k];
-        out.pixels[i + k] = static_cast<std::uint8_t>((sum + n / 2) / n);
+  for (int y = rect.y0; y < rect.y1; ++y) {
+    const std::size_t begin = (static_cast<std::size_t>(y) * out.width + rect.x0) * c,
+                      end = (static_cast<std::size_t>(y) * out.width + rect.x1) * c;
+    for (std::size_t i = begin; i < end; i += c) {
+      if (!alpha) {
+        for (int k = 0; k < c; ++k) {
+          std::uint32_t sum = 0;
+          for (const Image& p : planes) sum += p.pixels[i + k];
+          out.pixels[i + k] = static_cast<std::uint8_t>((sum + n / 2) / n);
+        }
+        continue;
       }
-      continue;
+      std::uint32_t alpha_sum = 0;
+      for (const Image& p : planes) alpha_sum += p.pixels[i + c - 1];
+      for (int k = 0; k + 1 < c; ++k) {
+        std::uint32_t weighted = 0;
+        for (const Image& p : planes)
+          weighted += static_cast<std::uint32_t>(p.pixels[i + k]) * p.pixels[i + c - 1];
+        out.pixels[i + k] = alpha_sum ? static_cast<std::uint8_t>((weighted + alpha_sum / 2) / alpha_sum) : 0;
+      }
+      out.pixels[i + c - 1] = static_cast<std::uint8_t>((alpha_sum + n / 2) / n);
     }
-    std::uint32_t alpha_sum = 0;
-    for (const Image& p : planes) alpha_sum += p.pixels[i + c - 1];
-    for (int k = 0; k + 1 < c; ++k) {
-      std::uint32_t weighted = 0;
-      for (const Image& p : planes)
-        weighted += static_cast<std::uint32_t>(p.pixels[i + k]) * p.pixels[i + c - 1];
-      out.pixels[i + k] = alpha_sum ? static_cast<std::uint8_t>((weighted + alpha_sum / 2) / alpha_sum) : 0;
-    }
-    out.pixels[i + c - 1] = static_cast<std::uint8_t>((alpha_sum + n / 2) / n);
   }
-}
-
-Rect band(const RenderPlan& plan, int index, int count) {
-  const int rows = plan.height / count;
-  const int y0 = index * rows;
-  const int y1 = index + 1 == count ? plan.height : y0 + rows;
-  return {0, y0, plan.width, y1};
 }
 
 }  // namespace raster::detail

@@ -6,45 +6,36 @@
 namespace raster::detail {
 namespace {
 
-bool in_fast_range(const Point2& p) {
-  return std::fabs(p.x) <= kFastRangePx && std::fabs(p.y) <= kFastRangePx;
+SetupVertex vertex_2d(const Point2& p, Rgba8 c) {
+  SetupVertex v;
+  v.x = snap(p.x), v.y = snap(p.y);
+  v.color[0] = c.r, v.color[1] = c.g, v.color[2] = c.b, v.color[3] = c.a;
+  return v;
 }
 
-void add_triangle(const Scene& scene, const Primitive& prim, DrawList& list, DrawOp& op) {
+void add_triangle(const Scene& scene, const Primitive& prim, std::uint32_t call, Setup& setup) {
   const Point2* pts = &scene.points[prim.first_point];
-  if (in_fast_range(pts[0]) && in_fast_range(pts[1]) && in_fast_range(pts[2])) {
-    op.kind = DrawOp::Kind::triangles;
-    op.first = static_cast<std::uint32_t>(list.triangles.size());
-    ScreenTriangle t;
-    for (std::uint32_t k = 0; k < 3; ++k)
-      t.v[k] = {static_cast<std::int32_t>(snap(pts[k].x)), static_cast<std::int32_t>(snap(pts[k].y)),
-                scene.vertex_color(prim, k)};
-    list.triangles.push_back(t);
-  } else {
-    op.kind = DrawOp::Kind::huge_triangles;
-    op.first = static_cast<std::uint32_t>(list.huge_triangles.size());
-    HugeTriangle t;
-    for (std::uint32_t k = 0; k < 3; ++k) {
-      t.x[k] = snap(pts[k].x);
-      t.y[k] = snap(pts[k].y);
-      t.color[k] = scene.vertex_color(prim, k);
-    }
-    list.huge_triangles.push_back(t);
-  }
-  op.count = 1;
+  const SetupVertex v[3] = {vertex_2d(pts[0], scene.vertex_color(prim, 0)),
+                            vertex_2d(pts[1], scene.vertex_color(prim, 1)),
+                            vertex_2d(pts[2], scene.vertex_color(prim, 2))};
+  setup.add_triangle(call, v);
 }
 
 void add_segment(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j, bool draw_first,
-                 bool draw_last, std::vector<ScreenLine>& out) {
+                 bool draw_last, std::uint32_t call, Setup& setup) {
   const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
-  out.push_back({std::floor(a.x), std::floor(a.y), std::floor(b.x), std::floor(b.y),
-                 scene.vertex_color(prim, i), scene.vertex_color(prim, j), draw_first, draw_last});
+  LineRecord line;
+  line.x0 = std::floor(a.x), line.y0 = std::floor(a.y), line.x1 = std::floor(b.x), line.y1 = std::floor(b.y);
+  line.c0 = scene.vertex_color(prim, i), line.c1 = scene.vertex_color(prim, j);
+  line.draw_first = draw_first, line.draw_last = draw_last;
+  line.call = call;
+  setup.add_line(line);
 }
 
 // A segment as the rectangle of its width around it (butt caps), two triangles with the endpoints'
 // colours: how lines are drawn when anti-aliased or wider than one pixel.
 void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j,
-                           DrawList& list) {
+                           std::uint32_t call, Setup& setup) {
   const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
   if (!(len > 0) || !std::isfinite(len)) return;  // a point, or a segment too long to have a direction
@@ -54,90 +45,49 @@ void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint3
   const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
   const Rgba8 c[4] = {ca, cb, cb, ca};
   for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
-    const Point2 p[3] = {q[t[0]], q[t[1]], q[t[2]]};
-    if (in_fast_range(p[0]) && in_fast_range(p[1]) && in_fast_range(p[2])) {
-      ScreenTriangle tri;
-      for (int k = 0; k < 3; ++k)
-        tri.v[k] = {static_cast<std::int32_t>(snap(p[k].x)), static_cast<std::int32_t>(snap(p[k].y)),
-                    c[t[k]]};
-      list.triangles.push_back(tri);
-    } else {
-      HugeTriangle tri;
-      for (int k = 0; k < 3; ++k) tri.x[k] = snap(p[k].x), tri.y[k] = snap(p[k].y), tri.color[k] = c[t[k]];
-      list.huge_triangles.push_back(tri);
-    }
+    const SetupVertex v[3] = {vertex_2d(q[t[0]], c[t[0]]), vertex_2d(q[t[1]], c[t[1]]), vertex_2d(q[t[2]], c[t[2]])};
+    setup.add_triangle(call, v);
   }
 }
 
-// Wide or anti-aliased lines: every segment a rectangle; fast and huge triangles go to their own ops.
-void add_polyline_rectangles(const Scene& scene, const Primitive& prim, bool closed,
-                             const PrimitivePlan& mode, DrawList& list) {
+// A polyline draws each joint pixel once (no double blending where segments meet); wide or anti-aliased
+// ones are rectangles per segment. Triangle outlines are closed polylines.
+void add_polyline(const Scene& scene, const Primitive& prim, bool closed, const PrimitivePlan& mode,
+                  std::uint32_t call, Setup& setup) {
   const std::uint32_t n = prim.point_count;
-  const std::size_t t0 = list.triangles.size(), h0 = list.huge_triangles.size();
-  for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment_rectangle(scene, prim, i, i + 1, list);
-  if (closed && n >= 3) add_segment_rectangle(scene, prim, n - 1, 0, list);
-  DrawOp op;
-  op.mode = mode;
-  op.mode.smooth = true;  // endpoint colours may differ; equal ones interpolate to themselves exactly
-  if (list.triangles.size() > t0)
-    list.ops.push_back({DrawOp::Kind::triangles, op.mode, static_cast<std::uint32_t>(t0),
-                        static_cast<std::uint32_t>(list.triangles.size() - t0)});
-  if (list.huge_triangles.size() > h0)
-    list.ops.push_back({DrawOp::Kind::huge_triangles, op.mode, static_cast<std::uint32_t>(h0),
-                        static_cast<std::uint32_t>(list.huge_triangles.size() - h0)});
-}
-
-// A polyline draws each joint pixel once (no double blending where segments meet). Triangle outlines
-// are closed polylines.
-void add_polyline(const Scene& scene, const Primitive& prim, bool closed, DrawList& list, DrawOp& op) {
-  op.kind = DrawOp::Kind::lines;
-  op.first = static_cast<std::uint32_t>(list.lines.size());
-  const std::uint32_t n = prim.point_count;
+  if (mode.line_rectangles) {
+    for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment_rectangle(scene, prim, i, i + 1, call, setup);
+    if (closed && n >= 3) add_segment_rectangle(scene, prim, n - 1, 0, call, setup);
+    return;
+  }
   closed = closed && n >= 3;  // closing a 2-point polyline would draw its one segment twice
-  for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment(scene, prim, i, i + 1, i == 0, true, list.lines);
-  if (closed) add_segment(scene, prim, n - 1, 0, false, false, list.lines);
-  op.count = static_cast<std::uint32_t>(list.lines.size()) - op.first;
+  for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment(scene, prim, i, i + 1, i == 0, true, call, setup);
+  if (closed) add_segment(scene, prim, n - 1, 0, false, false, call, setup);
 }
 
 }  // namespace
 
-double snap(double px) {
-  const double units = px * static_cast<double>(kSubpixelScale);  // exact: a power-of-two scale
-  // From 2^52 up every double is already an integer; adding 0.5 there would round to even instead.
-  return std::fabs(units) >= 0x1p52 ? units : std::floor(units + 0.5);
-}
-
-DrawList build_draw_list(const Scene& scene, const RenderPlan& plan, StopMeter& meter) {
-  DrawList list;
-  if (plan.depth_buffer) {
-    list.to_light[0] = plan.view.to_light.x, list.to_light[1] = plan.view.to_light.y,
-    list.to_light[2] = plan.view.to_light.z;
-    list.ambient = plan.view.ambient;
-  }
-  list.ops.reserve(scene.primitives.size() - static_cast<std::size_t>(plan.culled_count));
-  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) {
+  Setup setup;
+  setup.width = plan.width, setup.height = plan.height;
+  setup.order.reserve(plan.draws.size());
+  setup.triangles.reserve(plan.draws.size());
+  for (const DrawPlan& draw : plan.draws) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;
-    const PrimitivePlan& mode = plan.primitives[i];
-    if (!mode.visible) continue;
-    const Primitive& prim = scene.primitives[i];
+    const Primitive& prim = scene.primitives[draw.primitive];
     if (prim.kind == PrimitiveKind::mesh) {
-      add_mesh(scene.meshes[prim.mesh], mode, plan, list, meter);
+      add_mesh(scene.meshes[prim.mesh], draw, plan, setup, meter);
       continue;
     }
-    DrawOp op;
-    op.mode = mode;
-    const bool closed = prim.kind == PrimitiveKind::triangle || prim.closed;
-    if (prim.kind == PrimitiveKind::triangle && prim.fill) {
-      add_triangle(scene, prim, list, op);
-    } else if (mode.line_rectangles) {
-      add_polyline_rectangles(scene, prim, closed, mode, list);
-      continue;
-    } else {
-      add_polyline(scene, prim, closed, list, op);
-    }
-    if (op.count > 0) list.ops.push_back(op);
+    // Consecutive primitives drawn the same way share one call.
+    if (setup.calls.empty() || !(setup.calls.back().mode == draw.mode)) setup.add_call({draw.mode});
+    const auto call = static_cast<std::uint32_t>(setup.calls.size() - 1);
+    if (prim.kind == PrimitiveKind::triangle && prim.fill)
+      add_triangle(scene, prim, call, setup);
+    else
+      add_polyline(scene, prim, prim.kind == PrimitiveKind::triangle || prim.closed, draw.mode, call, setup);
   }
-  return list;
+  return setup;
 }
 
 }  // namespace raster::detail

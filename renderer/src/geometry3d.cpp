@@ -1,5 +1,5 @@
 // Geometry for 3D content: model -> world -> clip space, lighting of flat faces, homogeneous clipping,
-// perspective divide, viewport and snapping. Produces the same fixed-point triangles the 2D path draws.
+// perspective divide, viewport and snapping. Produces the same triangle records the 2D path does.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -122,9 +122,15 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& worl
     if (meter.add(StopMeter::kPrimitiveWork)) break;  // the caller sees meter.stopped() and draws nothing
     const Vec3 p[3] = {world[t[0]], world[t[1]], world[t[2]]};
     const Vec3 face = normalize(cross(p[1] - p[0], p[2] - p[0]));
+    // Edge k runs from vertex k to the next; each length is taken once (a zero-length edge: angle pi/2,
+    // as for a zero vector's direction).
+    const Vec3 edge[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};
+    const double len[3] = {length(edge[0]), length(edge[1]), length(edge[2])};
     for (int k = 0; k < 3; ++k) {
-      const Vec3 e1 = normalize(p[(k + 1) % 3] - p[k]), e2 = normalize(p[(k + 2) % 3] - p[k]);
-      const double angle = std::acos(std::clamp(dot(e1, e2), -1.0, 1.0));
+      const int prev = (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
+      const double norms = len[k] * len[prev];
+      const double cosine = norms > 0 && std::isfinite(norms) ? -dot(edge[k], edge[prev]) / norms : 0.0;
+      const double angle = std::acos(std::clamp(cosine, -1.0, 1.0));
       normals[t[k]] = normals[t[k]] + face * angle;
     }
   }
@@ -134,20 +140,40 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& worl
 
 }  // namespace
 
-void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& plan, DrawList& list,
-              StopMeter& meter) {
+void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup, StopMeter& meter) {
+  const PrimitivePlan& mode = draw.mode;
   const ViewPlan& view = plan.view;
   const Mat4 model_to_clip = view.world_to_clip * mesh.transform;
   const Planes planes{1 + 2 * kGuardPx / plan.width, 1 + 2 * kGuardPx / plan.height};
   const Viewport viewport{static_cast<double>(plan.width), static_cast<double>(plan.height)};
 
-  std::vector<Vec4> clip(mesh.positions.size());
-  std::vector<bool> finite(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+  // Per vertex, once: clip-space position, which clip planes it is outside of, and (inside all of them)
+  // its projected, snapped screen position, so a triangle that needs no clipping costs no projection.
+  const std::size_t nv = mesh.positions.size();
+  std::vector<Vec4> clip(nv);
+  std::vector<std::uint8_t> outside(nv);  // bit p: outside plane p; 0x80: not finite
+  std::vector<SetupVertex> screen(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
     if (meter.add(StopMeter::kRowWork)) return;  // deadline: a model can have millions of vertices
-    clip[i] = transform(model_to_clip, mesh.positions[i]);
-    finite[i] = std::isfinite(clip[i].x) && std::isfinite(clip[i].y) && std::isfinite(clip[i].z) &&
-                std::isfinite(clip[i].w);
+    const Vec4 c = clip[i] = transform(model_to_clip, mesh.positions[i]);
+    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+      outside[i] = 0x80;
+      continue;
+    }
+    const ClipVertex v{c.x, c.y, c.z, c.w, {}};
+    std::uint8_t bits = 0;
+    for (int plane = 0; plane < kPlaneCount; ++plane) bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
+    outside[i] = bits;
+    if (bits) continue;
+    double sx, sy, depth, inv_w;
+    viewport.project(v, sx, sy, depth, inv_w);
+    if (!in_guard_band(sx, sy, inv_w)) {
+      outside[i] = 0x40;  // inside every plane yet not projectable: dropped like a clipped one would be
+      continue;
+    }
+    SetupVertex& out = screen[i];
+    out.x = snap(sx), out.y = snap(sy);
+    out.depth = static_cast<float>(depth), out.inv_w = static_cast<float>(inv_w);
   }
   auto vertex_color = [&](std::uint32_t vertex) {
     return mesh.colors.size() == 1 ? mesh.colors[0] : mesh.colors[vertex];
@@ -176,16 +202,25 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
       else
         for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
     }
-    const Vec3 to_light{list.to_light[0], list.to_light[1], list.to_light[2]};
+    const Vec3 to_light = view.to_light;
     const Vec3 forward = normalize(view.target - view.eye);
+    DrawCall call{mode};
+    call.to_light[0] = to_light.x, call.to_light[1] = to_light.y, call.to_light[2] = to_light.z;
+    call.ambient = view.ambient;
+    const std::uint32_t call_index = setup.add_call(call);
+    const std::size_t count = mesh.triangles.size();  // before clipping, which rarely adds any
+    setup.triangles.reserve(setup.triangles.size() + count);
+    setup.order.reserve(setup.order.size() + count);
+    setup.attributes.reserve(setup.attributes.size() + count * AttributeLayout::of(mode).size);
 
-    DrawOp op;
-    op.kind = DrawOp::Kind::depth_triangles;
-    op.mode = mode;
-    op.first = static_cast<std::uint32_t>(list.depth_triangles.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       if (meter.add(StopMeter::kPrimitiveWork)) break;  // deadline: a mesh can be millions of triangles
       const auto& tri = mesh.triangles[t];
+      // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
+      // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
+      const std::uint8_t any_out = outside[tri[0]] | outside[tri[1]] | outside[tri[2]];
+      if (any_out & 0x80) continue;
+      if (outside[tri[0]] & outside[tri[1]] & outside[tri[2]] & 0x3f) continue;  // all beyond one plane
       // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
       // front when the counter-clockwise normal points toward the eye.
       const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
@@ -194,45 +229,56 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
       const bool back = dot(face, toward_eye) < 0;
       if (back && mesh.cull == Cull::back) continue;
 
-      // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
-      // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
-      if (!finite[tri[0]] || !finite[tri[1]] || !finite[tri[2]]) continue;
-      std::array<ClipVertex, 9> poly;
       float shade = 1;
       if (mode.lit && !light_per_pixel) {  // flat: one Lambert term per face, lit from the side seen
         const Vec3 n = normalize(back ? face * -1.0 : face);
-        shade = static_cast<float>(view.ambient + (1 - view.ambient) * std::max(0.0, dot(n, to_light)));
+        shade = static_cast<float>(lambert(dot(n, to_light), view.ambient));
       }
+      auto normal_of = [&](int k) {
+        return mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
+      };
+      if (any_out == 0) {  // inside every plane: the vertices were projected once, above
+        SetupVertex dv[3] = {screen[tri[0]], screen[tri[1]], screen[tri[2]]};
+        for (int k = 0; k < 3; ++k) {
+          const Rgba8 c = color_at(t, tri[k]);
+          dv[k].color[0] = c.r * shade, dv[k].color[1] = c.g * shade, dv[k].color[2] = c.b * shade;
+          dv[k].color[3] = c.a;
+          if (light_per_pixel) {
+            const Vec3 n = normal_of(k);
+            dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
+            dv[k].normal[2] = static_cast<float>(n.z);
+          }
+        }
+        setup.add_triangle(call_index, dv, back);
+        continue;
+      }
+      if (any_out & 0x40) continue;
+      std::array<ClipVertex, 9> poly;
       for (int k = 0; k < 3; ++k) {
         poly[k] = clip_vertex(tri[k], color_at(t, tri[k]));
         for (int c = 0; c < 3; ++c) poly[k].attr[c] *= shade;
         if (light_per_pixel) {
-          const Vec3 n =
-              mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
+          const Vec3 n = normal_of(k);
           poly[k].attr[4] = static_cast<float>(n.x), poly[k].attr[5] = static_cast<float>(n.y),
           poly[k].attr[6] = static_cast<float>(n.z);
         }
       }
+      SetupVertex dv[9];
       const int n = clip_polygon(poly, 3, planes);
-      DepthVertex dv[9];
       bool usable = true;
       for (int k = 0; k < n && usable; ++k) {
         double sx, sy, depth, inv_w;
         viewport.project(poly[k], sx, sy, depth, inv_w);
         usable = in_guard_band(sx, sy, inv_w);
         if (!usable) break;
-        dv[k].x = static_cast<std::int32_t>(snap(sx));
-        dv[k].y = static_cast<std::int32_t>(snap(sy));
+        dv[k].x = snap(sx), dv[k].y = snap(sy);
         dv[k].depth = static_cast<float>(depth);
         dv[k].inv_w = static_cast<float>(inv_w);
         std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
         std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
       }
-      for (int k = 1; usable && k + 1 < n; ++k)
-        list.depth_triangles.push_back({{dv[0], dv[k], dv[k + 1]}, back});
+      for (int k = 1; usable && k + 1 < n; ++k) setup.add_triangle(call_index, {dv[0], dv[k], dv[k + 1]}, back);
     }
-    op.count = static_cast<std::uint32_t>(list.depth_triangles.size()) - op.first;
-    if (op.count > 0) list.ops.push_back(op);
   }
 
   // Lines: the mesh's own segments, and for wireframes every triangle edge once.
@@ -257,14 +303,10 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
     }
   }
   if (segments.empty()) return;
-  DrawOp op;
-  op.kind = DrawOp::Kind::lines;
-  op.mode = mode;
-  op.mode.smooth = true;  // endpoint colours may differ after per-face colouring
-  op.first = static_cast<std::uint32_t>(list.lines.size());
+  const std::uint32_t line_call = setup.add_call({draw.line_mode});
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;
-    if (!finite[segments[s][0]] || !finite[segments[s][1]]) continue;
+    if ((outside[segments[s][0]] | outside[segments[s][1]]) & 0x80) continue;
     ClipVertex a = clip_vertex(segments[s][0], segment_colors[s][0]),
                b = clip_vertex(segments[s][1], segment_colors[s][1]);
     if (!clip_segment(a, b, planes)) continue;
@@ -272,13 +314,13 @@ void add_mesh(const Mesh& mesh, const PrimitivePlan& mode, const RenderPlan& pla
     viewport.project(a, ax, ay, ad, aw);
     viewport.project(b, bx, by, bd, bw);
     if (!in_guard_band(ax, ay, aw) || !in_guard_band(bx, by, bw)) continue;
-    ScreenLine line{std::floor(ax),   std::floor(ay),   std::floor(bx), std::floor(by),
-                    to_rgba8(a.attr), to_rgba8(b.attr), true,           true};
+    LineRecord line;
+    line.x0 = std::floor(ax), line.y0 = std::floor(ay), line.x1 = std::floor(bx), line.y1 = std::floor(by);
+    line.c0 = to_rgba8(a.attr), line.c1 = to_rgba8(b.attr);
     line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
-    list.lines.push_back(line);
+    line.call = line_call;
+    setup.add_line(line);
   }
-  op.count = static_cast<std::uint32_t>(list.lines.size()) - op.first;
-  if (op.count > 0) list.ops.push_back(op);
 }
 
 }  // namespace raster::detail

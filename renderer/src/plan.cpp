@@ -21,8 +21,9 @@ constexpr std::int64_t kParallelWorkThreshold = 100'000;
 // Small scenes never leave the calling thread, whatever their estimate: no hand-off for a thumbnail.
 constexpr std::int64_t kSmallScenePixels = 256 * 256;
 constexpr std::size_t kSmallScenePrimitives = 100;
-// A band shorter than this spends more on per-band triangle setup than it gains.
-constexpr int kMinBandRows = 16;
+// Tile side for images larger than a thumbnail (bench/core measures 32, 64 and 128; see
+// docs/performance.md).
+constexpr int kTile = 64;
 
 struct Box {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -38,56 +39,9 @@ Box bounds(const Scene& scene, const Primitive& p) {
   return b;
 }
 
-void check_references(const Scene& scene) {
-  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-    const Primitive& p = scene.primitives[i];
-    if (p.kind == PrimitiveKind::mesh) continue;  // checked below
-    const std::size_t colors = p.per_vertex_color ? p.point_count : 1;
-    const bool ok = std::size_t{p.first_point} + p.point_count <= scene.points.size() &&
-                    std::size_t{p.first_color} + colors <= scene.colors.size() &&
-                    p.point_count == (p.kind == PrimitiveKind::triangle ? 3u
-                                      : p.kind == PrimitiveKind::line   ? 2u
-                                                                        : std::max(p.point_count, 2u));
-    if (!ok)
-      throw SceneError(ErrorKind::invalid, "primitive refers to points or colours the scene does not have",
-                       {"/primitives/" + std::to_string(i), 0, 0});
-  }
-  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-    const Primitive& p = scene.primitives[i];
-    if (p.kind != PrimitiveKind::mesh) continue;
-    const std::string where = "/primitives/" + std::to_string(i);
-    if (p.mesh >= scene.meshes.size())
-      throw SceneError(ErrorKind::invalid, "mesh primitive refers to a missing mesh", {where, 0, 0});
-    const Mesh& m = scene.meshes[p.mesh];
-    const std::size_t n = m.positions.size();
-    bool ok = (m.colors.size() == 1 || m.colors.size() == n) &&
-              (m.face_colors.empty() || m.face_colors.size() == m.triangles.size()) &&
-              (m.normal_triangles.empty() || m.normal_triangles.size() == m.triangles.size());
-    for (const auto& t : m.triangles) ok = ok && t[0] < n && t[1] < n && t[2] < n;
-    for (const auto& s : m.segments) ok = ok && s[0] < n && s[1] < n;
-    for (const auto& t : m.normal_triangles)
-      ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
-    for (const Vec3& q : m.positions)
-      ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate &&
-           std::fabs(q.z) <= kMaxCoordinate;
-    if (!ok)
-      throw SceneError(ErrorKind::invalid,
-                       "mesh has indices, colours or normals that do not match its positions", {where, 0, 0});
-  }
-  // Scenes built in code skip the parser's checks; coverage relies on these bounds.
-  for (std::size_t i = 0; i < scene.points.size(); ++i) {
-    const Point2& q = scene.points[i];
-    if (!(std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate))
-      throw SceneError(ErrorKind::invalid,
-                       "point " + std::to_string(i) + " is not finite or outside +-2^128");
-  }
-}
-
 void check_size(const Scene& scene, const Limits& limits) {
   const int max_w = std::min(limits.max_width, kMaxImageSide),
             max_h = std::min(limits.max_height, kMaxImageSide);
-  if (scene.width < 1 || scene.height < 1)
-    throw SceneError(ErrorKind::invalid, "image size must be at least 1x1");
   if (scene.width > max_w || scene.height > max_h ||
       std::int64_t{scene.width} * scene.height > limits.max_pixels)
     throw SceneError(ErrorKind::limit, std::to_string(scene.width) + "x" + std::to_string(scene.height) +
@@ -108,20 +62,6 @@ const char* format_name(PixelFormat f) {
       return "rgba8";
   }
   return "?";
-}
-
-int png_color_type(PixelFormat f) {
-  switch (f) {
-    case PixelFormat::grey8:
-      return 0;
-    case PixelFormat::grey_alpha8:
-      return 4;
-    case PixelFormat::rgb8:
-      return 2;
-    case PixelFormat::rgba8:
-      return 6;
-  }
-  return 2;
 }
 
 [[noreturn]] void camera_error(const std::string& pointer, const std::string& message) {
@@ -164,8 +104,8 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   const double fit_distance = radius * std::sqrt(1 + tan_fit * tan_fit) / tan_fit;
   v.eye = cam.has_eye ? cam.eye : v.target + Vec3{0, 0, fit_distance + length(v.target - centre)};
   const Vec3 forward = normalize(v.target - v.eye);
-  if (length(forward) == 0)
-    camera_error("/camera/eye", "\"eye\" and \"target\" coincide: the camera has no view direction");
+  if (length(forward) == 0)  // only a fitted target can meet a given eye: validate() rejects the rest
+    camera_error("/camera/eye", "\"eye\" and \"target\" are the same point: the camera has no view direction");
   const Vec3 side = normalize(cross(forward, v.up));
   // sin of the angle between up and the view direction; below ~1e-9 the basis is not defined.
   if (length(side) == 0 || length(cross(forward, normalize(v.up))) < 1e-9)
@@ -219,13 +159,12 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
 }  // namespace
 
 RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& options) {
+  validate(scene);
   check_size(scene, limits);
-  check_references(scene);
 
   RenderPlan out;
   out.width = scene.width;
   out.height = scene.height;
-  out.primitives.resize(scene.primitives.size());
 
   const double w = scene.width, h = scene.height;
   const std::int64_t image_pixels = std::int64_t{scene.width} * scene.height;
@@ -236,12 +175,13 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   bool any_3d = false;
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& prim = scene.primitives[i];
-    PrimitivePlan& pp = out.primitives[i];
+    DrawPlan draw;
+    draw.primitive = static_cast<std::uint32_t>(i);
+    PrimitivePlan& pp = draw.mode;
     if (prim.kind == PrimitiveKind::mesh) {
       const Mesh& mesh = scene.meshes[prim.mesh];
       const bool draws_triangles = !mesh.triangles.empty() && !mesh.wireframe;
-      pp.visible = !mesh.triangles.empty() || !mesh.segments.empty();
-      if (!pp.visible) {
+      if (mesh.triangles.empty() && mesh.segments.empty()) {
         ++out.culled_count;
         continue;
       }
@@ -259,13 +199,18 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       }
       // Per-pixel work when colours vary per vertex or normals are interpolated; per-face colours and flat
       // lighting give one colour per triangle.
-      pp.smooth = (varied && mesh.face_colors.empty() && mesh.colors.size() > 1) ||
-                  (pp.lit && mesh.shading == Shading::smooth);
+      pp.varying_color = varied && mesh.face_colors.empty() && mesh.colors.size() > 1;
+      pp.smooth = pp.varying_color || (pp.lit && mesh.shading == Shading::smooth);
+      // Lines (segments, wireframe edges) are unlit; their endpoint colours differ when the colours vary.
+      draw.line_mode.depth = true;
+      draw.line_mode.blend = pp.blend;
+      draw.line_mode.smooth = draw.line_mode.varying_color = varied;
       (pp.smooth ? out.smooth_count : out.flat_count) += 1;
       out.blend_count += pp.blend ? 1 : 0;
       out.lit_count += pp.lit ? 1 : 0;
       out.triangles_3d += draws_triangles ? static_cast<std::int64_t>(mesh.triangles.size()) : 0;
       work += image_pixels;  // a mesh may cover the whole image
+      out.draws.push_back(draw);
       continue;
     }
     const bool filled = prim.kind == PrimitiveKind::triangle && prim.fill;
@@ -276,8 +221,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       b.x0 -= pad, b.y0 -= pad, b.x1 += pad, b.y1 += pad;
     }
     // Conservative: a primitive touching the image's closed rectangle is kept.
-    pp.visible = b.x1 >= 0 && b.x0 <= w && b.y1 >= 0 && b.y0 <= h;
-    if (!pp.visible) {
+    if (!(b.x1 >= 0 && b.x0 <= w && b.y1 >= 0 && b.y0 <= h)) {
       ++out.culled_count;
       continue;
     }
@@ -289,11 +233,13 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       pp.blend |= !c.is_opaque();
       grey &= c.is_grey();
     }
+    pp.varying_color = pp.smooth;
     (pp.smooth ? out.smooth_count : out.flat_count) += 1;
     out.blend_count += pp.blend ? 1 : 0;
     const double cw = std::min(b.x1, w) - std::max(b.x0, 0.0) + 1,
                  ch = std::min(b.y1, h) - std::max(b.y0, 0.0) + 1;
     work += static_cast<std::int64_t>(filled ? cw * ch : std::max(cw, ch));
+    out.draws.push_back(draw);
   }
 
   work *= scene.samples;  // every sample plane is drawn
@@ -301,31 +247,59 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
                     : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
   out.memory.color_bytes = image_pixels * channel_count(out.format);
   out.samples = scene.samples;
-  const std::int64_t depth_per_pixel = any_3d ? static_cast<std::int64_t>(sizeof(float)) : 0;
-  if (out.samples > 1) {
-    // One colour plane (and with 3D one depth plane) per sample; the output image holds the resolve.
-    out.memory.sample_bytes = image_pixels * out.samples * (channel_count(out.format) + depth_per_pixel);
-  } else {
-    out.memory.depth_bytes = image_pixels * depth_per_pixel;
-  }
+  if (out.samples > 1) out.memory.sample_bytes = image_pixels * out.samples * channel_count(out.format);
   if (any_3d) {
     out.depth_buffer = true;
     out.view = resolve_view(scene, static_cast<double>(scene.width) / scene.height);
   }
-  if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
-    throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
-                                           " bytes of pixel storage, over the limit of " +
-                                           std::to_string(limits.max_buffer_bytes));
 
   const int cores = options.max_threads > 0
                         ? options.max_threads
                         : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   out.work = work;
   const bool small = image_pixels <= kSmallScenePixels && scene.primitives.size() <= kSmallScenePrimitives;
-  out.threads =
-      small || work < kParallelWorkThreshold ? 1 : std::clamp(scene.height / kMinBandRows, 1, cores);
-  out.png.color_type = png_color_type(out.format);
+  // Small images are one tile: binning a thumbnail costs more than it saves.
+  const int one_tile = (std::max(scene.width, scene.height) + 7) / 8 * 8;
+  out.tile = options.tile > 0 ? (options.tile + 7) / 8 * 8 : image_pixels <= kSmallScenePixels ? one_tile : kTile;
+  const int tiles = ((scene.width + out.tile - 1) / out.tile) * ((scene.height + out.tile - 1) / out.tile);
+  out.threads = small || work < kParallelWorkThreshold ? 1 : std::clamp(tiles, 1, cores);
+  out.scalar_coverage = options.scalar_coverage;
+  // Each thread draws a tile at a time into storage of its own: the tile's colour and, for 3D, its depth
+  // (the only depth buffer there is). Counted against the limit like the rest; small next to the image.
+  const std::int64_t tile_pixels = std::int64_t{out.tile_width()} * out.tile_height();
+  out.memory.tile_bytes = out.threads * tile_pixels * channel_count(out.format);
+  out.memory.depth_bytes = any_3d ? out.threads * tile_pixels * static_cast<std::int64_t>(sizeof(float)) : 0;
+  if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
+    throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
+                                           " bytes of pixel storage, over the limit of " +
+                                           std::to_string(limits.max_buffer_bytes));
+  out.png = png_plan_for(out.format);
   return out;
+}
+
+PngPlan png_plan_for(PixelFormat format) {
+  PngPlan png;
+  switch (format) {
+    case PixelFormat::grey8:
+      png.color_type = 0;
+      break;
+    case PixelFormat::grey_alpha8:
+      png.color_type = 4;
+      break;
+    case PixelFormat::rgb8:
+      png.color_type = 2;
+      break;
+    case PixelFormat::rgba8:
+      png.color_type = 6;
+      break;
+  }
+  return png;
+}
+
+const DrawPlan* RenderPlan::draw_of(std::uint32_t index) const {
+  const auto it = std::lower_bound(draws.begin(), draws.end(), index,
+                                   [](const DrawPlan& d, std::uint32_t i) { return d.primitive < i; });
+  return it != draws.end() && it->primitive == index ? &*it : nullptr;
 }
 
 std::string explain_json(const RenderPlan& p) {
@@ -352,9 +326,11 @@ std::string explain_json(const RenderPlan& p) {
   }
   j["work"] = p.work;
   j["threads"] = p.threads;
+  j["tile"] = p.tile;
   j["memory_bytes"] = {{"color", p.memory.color_bytes},
                        {"depth", p.memory.depth_bytes},
                        {"samples", p.memory.sample_bytes},
+                       {"tiles", p.memory.tile_bytes},
                        {"total", p.memory.total()}};
   j["png"] = {{"color_type", p.png.color_type}, {"deflate_level", p.png.deflate_level}};
   return j.dump(2);

@@ -1,69 +1,209 @@
-// Render: runs geometry once, then the raster stage over horizontal bands. Each band owns its rows and
-// applies every op in scene order, so the image is the same bytes for any number of bands.
+// Render: Scene + RenderPlan -> Image. Geometry and setup run once, the records are binned to tiles once,
+// and threads take tiles: each tile draws its bin in scene order into pixels no other tile owns, so the
+// image is the same bytes for any number of threads and any tile size.
 #include "raster/render.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstring>
+#include <functional>
 #include <thread>
 #include <vector>
 
+#include "coverage.h"
 #include "framebuffer.h"
 #include "geometry.h"
-#include "raster.h"
+#include "line.h"
+#include "setup.h"
+#include "shade.h"
 
 namespace raster {
+namespace {
+
+using detail::Rect;
+
+/// What every tile reads (shared, immutable while tiles draw) and writes (each tile its own pixels).
+struct Frame {
+  const detail::Setup& setup;
+  const detail::Bins& bins;
+  const RenderPlan& plan;
+  Image& image;
+  std::vector<Image>& planes;  // one per sample when anti-aliased, else empty
+};
+
+/// One thread's tile storage (RenderPlan::memory.tile_bytes): the tile's colour, and depth for 3D.
+struct Scratch {
+  std::vector<std::uint8_t> color;
+  std::vector<float> depth;
+};
+
+template <int C>
+void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, const detail::Surface& surface,
+                   Rect clip, detail::SamplePoint sample, detail::Lanes lanes, detail::StopMeter& meter) {
+  const float* attributes = setup.attributes.data() + t.attributes;
+  if (t.wide != detail::TriangleRecord::kFast) {
+    const detail::Edges<detail::Wide>& e = setup.wide_edges[t.wide];
+    const detail::Wide scale(detail::kSubpixelScale);
+    const double dx[3] = {(e.a[0] * scale).to_double(), (e.a[1] * scale).to_double(), (e.a[2] * scale).to_double()};
+    const double dy[3] = {(e.b[0] * scale).to_double(), (e.b[1] * scale).to_double(), (e.b[2] * scale).to_double()};
+    detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, e.area.to_double());
+    detail::cover(e, clip, sample, lanes, meter, shader);
+  } else {
+    const detail::Edges<std::int64_t>& e = t.edges;
+    const double dx[3] = {double(e.a[0] * detail::kSubpixelScale), double(e.a[1] * detail::kSubpixelScale),
+                          double(e.a[2] * detail::kSubpixelScale)};
+    const double dy[3] = {double(e.b[0] * detail::kSubpixelScale), double(e.b[1] * detail::kSubpixelScale),
+                          double(e.b[2] * detail::kSubpixelScale)};
+    detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, double(e.area));
+    detail::cover(e, clip, sample, lanes, meter, shader);
+  }
+}
+
+// GCC drops __builtin_prefetch here (it sees a call without effects); an asm statement stays.
+template <typename T>
+inline void fetch(const T* p) {
+#if defined(__x86_64__)
+  asm volatile("prefetcht0 %0" : : "m"(*reinterpret_cast<const char*>(p)));
+#else
+  __builtin_prefetch(p);
+#endif
+}
+
+// A bin lists records from all over the setup (scene order, not memory order): without help every record
+// is a cache miss. Records kAhead entries on are fetched, and the attributes of those half as far on (whose
+// record has arrived by then).
+inline void prefetch(const detail::Setup& setup, const detail::Bins& bins, std::uint32_t i, std::uint32_t end) {
+  constexpr std::uint32_t kAhead = 8;
+  if (i + kAhead < end) {
+    const std::uint32_t ref = bins.records[i + kAhead].value;
+    if (!(ref & detail::RecordRef::kLineBit)) fetch(&setup.triangles[ref]);
+  }
+  if (i + kAhead / 2 < end) {
+    const std::uint32_t ref = bins.records[i + kAhead / 2].value;
+    if (ref & detail::RecordRef::kLineBit) return;
+    const detail::TriangleRecord& t = setup.triangles[ref];
+    fetch(reinterpret_cast<const char*>(&t) + 64);  // the record's second cache line
+    fetch(&setup.attributes[t.attributes]);
+  }
+}
+
+template <int C>
+void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::SamplePoint sample,
+              detail::StopMeter& meter) {
+  const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
+  const detail::Lanes lanes = f.plan.scalar_coverage ? detail::Lanes::scalar : detail::Lanes::simd;
+  const std::uint32_t end = f.bins.offsets[tile + 1];
+  for (std::uint32_t i = f.bins.offsets[tile]; i < end; ++i) {
+    if (meter.add(detail::StopMeter::kPrimitiveWork)) return;
+    prefetch(f.setup, f.bins, i, end);
+    const std::uint32_t ref = f.bins.records[i].value;
+    if (ref & detail::RecordRef::kLineBit) {
+      const detail::LineRecord& line = f.setup.lines[ref & ~detail::RecordRef::kLineBit];
+      detail::draw_line(line, f.setup.calls[line.call].mode, surface, rect, meter);
+      continue;
+    }
+    const detail::TriangleRecord& t = f.setup.triangles[ref];
+    const Rect clip{std::max(rect.x0, t.box.x0), std::max(rect.y0, t.box.y0), std::min(rect.x1, t.box.x1),
+                    std::min(rect.y1, t.box.y1)};
+    draw_triangle<C>(f.setup, t, surface, clip, sample, lanes, meter);
+  }
+}
+
+// Draws one tile: per sample position, its bin into the thread's tile storage (filled from the target,
+// which holds the background there, and with depth cleared), copied back; then (anti-aliased) the resolve.
+void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
+  const std::vector<detail::SamplePoint>& pattern = detail::sample_pattern(f.plan.samples);
+  const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
+  const int c = f.image.channels(), w = rect.x1 - rect.x0;
+  const std::size_t row_bytes = static_cast<std::size_t>(w) * c;
+  const detail::Surface surface{scratch.color.data(), scratch.depth.empty() ? nullptr : scratch.depth.data(), w,
+                                rect.x0, rect.y0, c};
+  for (std::size_t s = 0; s < pattern.size(); ++s) {
+    Image& target = f.planes.empty() ? f.image : f.planes[s];
+    auto row_of = [&](int y) {
+      return target.pixels.data() + (static_cast<std::size_t>(y) * target.width + rect.x0) * c;
+    };
+    for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(surface.pixel(rect.x0, y), row_of(y), row_bytes);
+    if (surface.depth) std::fill_n(surface.depth, static_cast<std::size_t>(w) * (rect.y1 - rect.y0), 0.0f);
+    switch (c) {
+      case 1:
+        draw_bin<1>(f, tile, surface, pattern[s], meter);
+        break;
+      case 2:
+        draw_bin<2>(f, tile, surface, pattern[s], meter);
+        break;
+      case 3:
+        draw_bin<3>(f, tile, surface, pattern[s], meter);
+        break;
+      default:
+        draw_bin<4>(f, tile, surface, pattern[s], meter);
+        break;
+    }
+    if (meter.stopped()) return;
+    for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(row_of(y), surface.pixel(rect.x0, y), row_bytes);
+  }
+  if (f.planes.empty()) return;
+  // The resolve reads every sample plane of the tile: metered like drawing.
+  detail::resolve(f.planes, f.image, rect);
+  meter.add(std::int64_t{rect.x1 - rect.x0} * (rect.y1 - rect.y0) * f.plan.samples);
+}
+
+}  // namespace
 
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control) {
-  std::atomic<bool> stopped{false};  // set by whichever band first sees the deadline or the cancel flag
+  std::atomic<bool> stopped{false};  // set by whichever thread first sees the deadline or the cancel flag
   const detail::Stop stop{control.deadline, control.cancel, &stopped, &control.clock};
   const auto cancelled = [] { return RenderCancelled("render stopped: deadline passed or cancelled"); };
-  detail::StopMeter meter(stop);  // the calling thread's, for geometry and allocation
-  const detail::DrawList list = detail::build_draw_list(scene, plan, meter);
+  detail::StopMeter meter(stop);  // the calling thread's, for geometry, binning and allocation
+  const detail::Setup setup = detail::build_setup(scene, plan, meter);
   if (meter.stopped()) throw cancelled();
+  const detail::Bins bins = detail::bin(setup, plan.tile);
 
   // Buffers are cleared as they are allocated, looking at the deadline every megabyte.
   Image image = detail::make_color_buffer(plan, scene.background, meter);
-  // Anti-aliasing: one colour plane (and depth plane) per sample position, drawn like an aliased image
-  // whose coverage is tested at that position, then resolved into `image`. Aliased: `image` itself.
-  const std::vector<detail::SamplePoint>& pattern = detail::sample_pattern(plan.samples);
+  // Anti-aliasing: one colour plane per sample position, drawn like an aliased image whose coverage is
+  // tested at that position, then resolved into `image`. Aliased: `image` itself.
   std::vector<Image> planes;
-  std::vector<std::vector<float>> depth;
-  for (std::size_t s = 0; s < pattern.size(); ++s) {
-    if (plan.samples > 1) planes.push_back(detail::make_color_buffer(plan, scene.background, meter, false));
-    depth.push_back(detail::make_depth_buffer(plan, meter));
-  }
+  if (plan.samples > 1)
+    for (int s = 0; s < plan.samples; ++s)
+      planes.push_back(detail::make_color_buffer(plan, scene.background, meter, false));
   if (meter.stopped()) throw cancelled();
 
+  const int tiles = bins.columns * bins.rows;
+  const int threads = std::min(plan.threads, tiles);
+  // Each thread's tile storage, allocated here so the stats below can count it.
+  std::vector<Scratch> scratch(static_cast<std::size_t>(std::max(threads, 1)));
+  const std::size_t tile_pixels = static_cast<std::size_t>(plan.tile_width()) * plan.tile_height();
+  for (Scratch& t : scratch) {
+    t.color.resize(tile_pixels * image.channels());
+    if (plan.depth_buffer) t.depth.resize(tile_pixels);
+  }
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
     for (const Image& p : planes) bytes += static_cast<std::int64_t>(p.pixels.size());
-    for (const auto& d : depth) bytes += static_cast<std::int64_t>(d.size() * sizeof(float));
+    for (const Scratch& t : scratch)
+      bytes += static_cast<std::int64_t>(t.color.size() + t.depth.size() * sizeof(float));
     control.stats->pixel_bytes = bytes;
+    control.stats->bin_bytes = static_cast<std::int64_t>(bins.records.size() * sizeof(detail::RecordRef) +
+                                                         bins.offsets.size() * sizeof(std::uint32_t));
   }
-  auto draw_band = [&](detail::Rect rows) {
-    detail::StopMeter band_meter(stop);  // each band counts its own work
-    if (band_meter.check()) return;      // a deadline already past stops even the smallest render
-    for (std::size_t s = 0; s < pattern.size(); ++s) {
-      Image& target = planes.empty() ? image : planes[s];
-      detail::draw(list, target, depth[s].empty() ? nullptr : depth[s].data(), rows, band_meter, pattern[s]);
-      if (band_meter.stopped()) return;
-    }
-    if (planes.empty()) return;
-    // The resolve reads every sample plane: up to the whole pixel-storage limit, so it is metered too.
-    const int rows_per_check = std::max(
-        1, static_cast<int>(detail::StopMeter::kWorkPerCheck / (std::int64_t{image.width} * plan.samples)));
-    for (int y = rows.y0; y < rows.y1; y += rows_per_check) {
-      if (y > rows.y0 && band_meter.check()) return;
-      detail::resolve(planes, image, {rows.x0, y, rows.x1, std::min(rows.y1, y + rows_per_check)});
+  const Frame frame{setup, bins, plan, image, planes};
+  std::atomic<int> next{0};  // tiles are taken in order; which thread takes one does not change its bytes
+  auto worker = [&](Scratch& own) {
+    detail::StopMeter tile_meter(stop);  // each thread counts its own work
+    if (tile_meter.check()) return;      // a deadline already past stops even the smallest render
+    for (int t; (t = next.fetch_add(1, std::memory_order_relaxed)) < tiles;) {
+      draw_tile(frame, t, own, tile_meter);
+      if (tile_meter.stopped()) return;
     }
   };
-  const int bands = plan.threads;
-  if (bands <= 1) {
-    draw_band(detail::band(plan, 0, 1));  // small work: no hand-off at all
+  if (threads <= 1) {
+    worker(scratch[0]);  // small work: no hand-off at all
   } else {
     std::vector<std::jthread> workers;
-    workers.reserve(bands - 1);
-    for (int b = 1; b < bands; ++b) workers.emplace_back([&, b] { draw_band(detail::band(plan, b, bands)); });
-    draw_band(detail::band(plan, 0, bands));
+    workers.reserve(threads - 1);
+    for (int w = 1; w < threads; ++w) workers.emplace_back(worker, std::ref(scratch[w]));
+    worker(scratch[0]);
   }  // jthreads join here
   if (stopped) throw cancelled();
   return image;

@@ -634,9 +634,6 @@ Camera read_camera(const json& v) {
     if (!(c.height > 0))
       invalid(Path(pointer, "height"), "\"height\" (orthographic view height) must be > 0");
   }
-  if (c.has_eye && c.has_target && c.eye.x == c.target.x && c.eye.y == c.target.y && c.eye.z == c.target.z)
-    invalid(Path(pointer, "target"),
-            "\"eye\" and \"target\" are the same point: the camera has no view direction");
   return c;
 }
 
@@ -795,8 +792,10 @@ namespace raster {
 Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
   // JSON text is UTF-8 (RFC 8259 8.1): checked first, so no reader and no message ever holds a bad byte.
   require_utf8(json_text, "the scene");
-  if (auto scene = scene_json::parse_scene_fast(json_text, limits, uploads)) return std::move(*scene);
-  return scene_json::parse_scene_dom(json_text, limits, uploads);
+  std::optional<Scene> fast = scene_json::parse_scene_fast(json_text, limits, uploads);
+  Scene scene = fast ? std::move(*fast) : scene_json::parse_scene_dom(json_text, limits, uploads);
+  validate(scene);  // the checks across fields, shared with scenes built in code
+  return scene;
 }
 
 }  // namespace raster

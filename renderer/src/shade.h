@@ -1,10 +1,24 @@
-// Shade: colour of a fragment (flat or interpolated) and how it is written (store or source-over blend).
+// Shade: covered blocks (coverage.h) + a record's attributes -> pixels. The only place a colour is
+// computed: interpolation of the attribute planes, perspective correction, Lambert lighting (per face, for
+// geometry to bake in, and per pixel), clamping, and how it is written (store or source-over blend).
 // Templated on the framebuffer's channel count so the per-pixel code has no format branches.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <bit>
+#include <cstring>
+#include <type_traits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "coverage.h"
+#include "raster/image.h"
 #include "raster/scene.h"
+#include "setup.h"
 
 namespace raster::detail {
 
@@ -65,5 +79,399 @@ inline void blend(std::uint8_t* px, Rgba8 c) {
     px[alpha_index] = static_cast<std::uint8_t>(div255(oa));
   }
 }
+
+/// floor(x) for |x| < 2^62, without a library call.
+inline std::int64_t floor_to_int(double x) {
+  const auto i = static_cast<std::int64_t>(x);  // toward zero
+  return i - (x < static_cast<double>(i));
+}
+
+/// Lambert with ambient: ambient + (1 - ambient) max(0, n . to_light) for a unit normal n. Used per face by
+/// geometry (flat lighting) and per pixel below.
+inline double lambert(double n_dot_l, double ambient) {
+  return ambient + (1 - ambient) * std::max(0.0, n_dot_l);
+}
+
+/// Shades the blocks of one triangle record inside one tile. Made per record per tile: everything that
+/// depends only on the record is worked out here, once, not per block.
+template <int C>
+class TriangleShader {
+ public:
+  /// `step_x` and `step_y` are the record's edge-value steps per pixel right and down (256 a_k, 256 b_k) and
+  /// `area` its doubled area, as doubles (exact for the fast range).
+  TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
+                 const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
+      : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
+        flip_(record.back_facing ? -1.0 : 1.0) {
+    const AttributeLayout layout = AttributeLayout::of(mode_);
+    depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
+    inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;
+    normal_at_ = layout.normal >= 0 ? attr_ + layout.normal : nullptr;
+    flat_ = {to_byte(attr_[0]), to_byte(attr_[1]), to_byte(attr_[2]), to_byte(attr_[3])};
+    kind_ = depth_at_ ? Kind::depth : mode_.varying_color ? Kind::smooth : Kind::flat;
+    if (kind_ == Kind::flat) {
+      for (int i = 0; i < kBlock; ++i) store<C>(row_bytes_ + i * C, flat_);
+#if defined(__SSE2__)
+      pattern_[0] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row_bytes_));
+      pattern_[1] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row_bytes_ + 16));
+#endif
+    }
+    if (kind_ != Kind::smooth) return;
+    for (int ch = 0; ch < 4; ++ch) {
+      lo_[ch] = std::min({attr_[ch], attr_[4 + ch], attr_[8 + ch]});
+      hi_[ch] = std::max({attr_[ch], attr_[4 + ch], attr_[8 + ch]});
+    }
+    // 16.16 change per pixel right and down, from the exact edge steps; steep ones take the exact path.
+    const double scale = 65536.0 / area;
+    for (int ch = 0; ch < 4; ++ch) {
+      const double v[3] = {attr_[ch], attr_[4 + ch], attr_[8 + ch]};
+      const double sx = (step_x[0] * v[0] + step_x[1] * v[1] + step_x[2] * v[2]) * scale;
+      const double sy = (step_y[0] * v[0] + step_y[1] * v[1] + step_y[2] * v[2]) * scale;
+      steep_ = steep_ || !(std::fabs(sx) < 0x1p40 && std::fabs(sy) < 0x1p40);
+      slope_x_[ch] = steep_ ? 0 : floor_to_int(sx + 0.5);
+      slope_y_[ch] = steep_ ? 0 : floor_to_int(sy + 0.5);
+    }
+  }
+
+  void operator()(const Block& b) {
+    switch (kind_) {
+      case Kind::flat:
+        return shade_flat(b);
+      case Kind::smooth:
+        return shade_smooth(b);
+      case Kind::depth:
+        return shade_depth(b);
+    }
+  }
+
+ private:
+  std::uint8_t* pixel(int x, int y) const { return surface_.color + surface_.index(x, y) * C; }
+
+  void write(std::uint8_t* p, Rgba8 c) const {
+    if (mode_.blend)
+      blend<C>(p, c);
+    else
+      store<C>(p, c);
+  }
+
+  // One colour: a whole row of a block is one copy of eight pixels' bytes.
+  void shade_flat(const Block& b) const {
+    const std::uint8_t* row_bytes = row_bytes_;
+    const Rgba8 flat = flat_;  // locals: pixel stores (through uint8_t*) could alias the members
+#if defined(__SSE2__)
+    const __m128i pattern[2] = {pattern_[0], pattern_[1]};
+#else
+    const int pattern[2] = {};
+#endif
+    for (int r = 0; r < kBlock; ++r) {
+      unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (!bits) continue;
+      std::uint8_t* row = pixel(b.x0, b.y0 + r);
+      if (!mode_.blend) {
+        if (bits == 0xff) {
+          store_row_pattern(row, pattern);
+          continue;
+        }
+        const int first = std::countr_zero(bits), last = 31 - std::countl_zero(bits);
+        if ((bits >> first) + 1 == 1u << (last - first + 1)) {  // one run: a prefix of the row's bytes
+          copy_run(row + first * C, row_bytes, (last - first + 1) * C);
+          continue;
+        }
+      }
+      for (; bits; bits &= bits - 1) write(row + std::countr_zero(bits) * C, flat);
+    }
+  }
+
+  // A full block row of the flat colour. From registers: loading the pattern after each store would make
+  // the load wait on the store whenever their addresses agree modulo 4 KiB.
+  template <typename Pattern>
+  void store_row_pattern(std::uint8_t* row, const Pattern (&pattern)[2]) const {
+#if defined(__SSE2__)
+    if constexpr (C == 3 || C == 4) {
+      const __m128i a = pattern[0], b = pattern[1];
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(row), a);
+      if constexpr (C == 4)
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(row + 16), b);
+      else
+        _mm_storel_epi64(reinterpret_cast<__m128i*>(row + 16), b);
+      return;
+    }
+#endif
+    std::memcpy(row, row_bytes_, kBlock * C);
+  }
+
+  // Copies the first `n` bytes (1 <= n <= 32) of `src` (which `dst` does not overlap) with two fixed-size
+  // moves that may overlap each other (the same bytes go to the same places twice), instead of a call for a
+  // variable length.
+  static void copy_run(std::uint8_t* dst, const std::uint8_t* src, int n) {
+    auto move = [&](int at, auto size) { std::memcpy(dst + at, src + at, decltype(size)::value); };
+    using S1 = std::integral_constant<int, 1>;
+    using S4 = std::integral_constant<int, 4>;
+    using S8 = std::integral_constant<int, 8>;
+    using S16 = std::integral_constant<int, 16>;
+    if (n >= 16) {
+      move(0, S16{}), move(n - 16, S16{});
+    } else if (n >= 8) {
+      move(0, S8{}), move(n - 8, S8{});
+    } else if (n >= 4) {
+      move(0, S4{}), move(n - 4, S4{});
+    } else {
+      for (int i = 0; i < n; ++i) move(i, S1{});
+    }
+  }
+
+  // Colours interpolated in screen space (2D): channel = sum_k E_k v_k / area, rounded to nearest. Per
+  // block, the value at its first pixel comes from the exact edge values and steps in 16.16 fixed point
+  // across the block's rows and columns (at most 14 steps: an error below 10^-3 of a level, so a covered
+  // pixel, whose exact value lies in the vertices' range, rounds into it). The block grid does not depend on
+  // the tile, so neither does any pixel's value.
+  void shade_smooth(const Block& b) const {
+    if (steep_) return shade_smooth_exact(b);
+    const double scale = 65536.0 / b.area;
+    std::int64_t start[4];
+    for (int ch = 0; ch < 4; ++ch) {
+      const double n0 = b.e[0] * attr_[ch] + b.e[1] * attr_[4 + ch] + b.e[2] * attr_[8 + ch];
+      start[ch] = floor_to_int(n0 * scale + 0.5) + 0x8000;
+    }
+#if defined(__SSE2__)
+    if (fits_int32(start)) {
+      if constexpr (C == 3 || C == 4)
+        if (!mode_.blend) return shade_smooth_rows(b, start);
+      return shade_smooth_lanes(b, start);
+    }
+#endif
+    for (int r = 0; r < kBlock; ++r) {
+      unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (!bits) continue;
+      std::uint8_t* row = pixel(b.x0, b.y0 + r);
+      for (; bits; bits &= bits - 1) {
+        const int i = std::countr_zero(bits);
+        std::uint8_t out[4];
+        for (int ch = 0; ch < 4; ++ch) {
+          const std::int64_t v = (start[ch] + i * slope_x_[ch] + r * slope_y_[ch]) >> 16;
+          out[ch] = static_cast<std::uint8_t>(std::clamp<std::int64_t>(v, 0, 255));
+        }
+        write(row + i * C, Rgba8{out[0], out[1], out[2], out[3]});
+      }
+    }
+  }
+
+  // Every value the block can reach fits an int32 lane.
+  bool fits_int32(const std::int64_t (&start)[4]) const {
+    for (int ch = 0; ch < 4; ++ch)
+      if (std::abs(start[ch]) + 8 * (std::abs(slope_x_[ch]) + std::abs(slope_y_[ch])) >= (std::int64_t{1} << 31))
+        return false;
+    return true;
+  }
+
+#if defined(__SSE2__)
+  // The four channels of a pixel in the four lanes of one register: a pixel is an add, a shift and two
+  // saturating packs. A row's covered pixels are one run (a triangle is convex, and so is the clip), so an
+  // opaque run stores whole words: each pixel's spare byte is overwritten by the next pixel, the run's last
+  // pixel is stored exactly.
+  // Opaque RGB(A): the pixels of a row in the lanes, one register of four per channel and half row, stepped
+  // down the block; a row's words are the channels' bytes side by side (a covered pixel's values lie in
+  // 0..255, see shade_smooth, so its bytes cannot spill into each other; other lanes are not stored).
+  void shade_smooth_rows(const Block& b, const std::int64_t (&start)[4]) const {
+    __m128i left[C], four[C], down[C];
+    for (int ch = 0; ch < C; ++ch) {
+      const auto v = static_cast<std::int32_t>(start[ch]), d = static_cast<std::int32_t>(slope_x_[ch]);
+      left[ch] = _mm_setr_epi32(v, v + d, v + 2 * d, v + 3 * d);
+      four[ch] = _mm_set1_epi32(4 * d);
+      down[ch] = _mm_set1_epi32(static_cast<std::int32_t>(slope_y_[ch]));
+    }
+    for (int r = 0; r < kBlock; ++r) {
+      const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (bits) {
+        __m128i lo = _mm_setzero_si128(), hi = _mm_setzero_si128();
+        for (int ch = 0; ch < C; ++ch) {
+          const __m128i right = _mm_add_epi32(left[ch], four[ch]);
+          lo = _mm_or_si128(lo, _mm_slli_epi32(_mm_srli_epi32(left[ch], 16), 8 * ch));
+          hi = _mm_or_si128(hi, _mm_slli_epi32(_mm_srli_epi32(right, 16), 8 * ch));
+        }
+        std::uint8_t* p = pixel(b.x0, b.y0 + r);
+        if (bits == 0xff) {
+          store_full_row(p, lo, hi);
+        } else {
+          // Words straight from the registers (a trip through memory stalls store forwarding).
+          const std::uint64_t q[4] = {
+              static_cast<std::uint64_t>(_mm_cvtsi128_si64(lo)),
+              static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_srli_si128(lo, 8))),
+              static_cast<std::uint64_t>(_mm_cvtsi128_si64(hi)),
+              static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_srli_si128(hi, 8)))};
+          for (unsigned m = bits; m; m &= m - 1) {
+            const int i = std::countr_zero(m);
+            const auto word = static_cast<std::uint32_t>(q[i >> 1] >> (32 * (i & 1)));
+            std::memcpy(p + C * i, &word, C);
+          }
+        }
+      }
+      for (int ch = 0; ch < C; ++ch) left[ch] = _mm_add_epi32(left[ch], down[ch]);
+    }
+  }
+
+  // Eight pixels' words (four in each register) stored as a block row of C bytes a pixel. RGB: each 64-bit
+  // half becomes two pixels' six bytes side by side; nothing past the row is written.
+  static void store_full_row(std::uint8_t* p, __m128i lo, __m128i hi) {
+    if constexpr (C == 4) {
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(p), lo);
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(p + 16), hi);
+    } else {
+      const __m128i even = _mm_set_epi32(0, 0xffffff, 0, 0xffffff), odd = _mm_set_epi32(0xffffff, 0, 0xffffff, 0);
+      auto six = [&](__m128i w) { return _mm_or_si128(_mm_and_si128(w, even), _mm_srli_epi64(_mm_and_si128(w, odd), 8)); };
+      const __m128i a = six(lo), b = six(hi);
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(p), a);
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(p + 6), _mm_srli_si128(a, 8));
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(p + 12), b);
+      const auto last = static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_srli_si128(b, 8)));
+      std::memcpy(p + 18, &last, 6);
+    }
+  }
+
+  void shade_smooth_lanes(const Block& b, const std::int64_t (&start)[4]) const {
+    __m128i row_value = _mm_setr_epi32(static_cast<int>(start[0]), static_cast<int>(start[1]),
+                                       static_cast<int>(start[2]), static_cast<int>(start[3]));
+    const __m128i step_x = _mm_setr_epi32(static_cast<int>(slope_x_[0]), static_cast<int>(slope_x_[1]),
+                                          static_cast<int>(slope_x_[2]), static_cast<int>(slope_x_[3]));
+    const __m128i step_y = _mm_setr_epi32(static_cast<int>(slope_y_[0]), static_cast<int>(slope_y_[1]),
+                                          static_cast<int>(slope_y_[2]), static_cast<int>(slope_y_[3]));
+    auto bytes = [](__m128i v) {
+      const __m128i words = _mm_packs_epi32(_mm_srai_epi32(v, 16), _mm_setzero_si128());
+      return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(words, words)));
+    };
+    auto color = [](std::uint32_t rgba) {
+      return Rgba8{static_cast<std::uint8_t>(rgba), static_cast<std::uint8_t>(rgba >> 8),
+                   static_cast<std::uint8_t>(rgba >> 16), static_cast<std::uint8_t>(rgba >> 24)};
+    };
+    for (int r = 0; r < kBlock; ++r, row_value = _mm_add_epi32(row_value, step_y)) {
+      const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (!bits) continue;
+      const int lo = std::countr_zero(bits), hi = 31 - std::countl_zero(bits);
+      std::uint8_t* p = pixel(b.x0 + lo, b.y0 + r);
+      __m128i v = row_value;
+      for (int i = 0; i < lo; ++i) v = _mm_add_epi32(v, step_x);
+      const bool run = (bits >> lo) + 1 == 1u << (hi - lo + 1);
+      if ((C == 3 || C == 4) && run && !mode_.blend) {
+        for (int i = lo; i < hi; ++i, p += C, v = _mm_add_epi32(v, step_x)) {
+          const std::uint32_t rgba = bytes(v);
+          std::memcpy(p, &rgba, 4);
+        }
+        store<C>(p, color(bytes(v)));
+        continue;
+      }
+      for (int i = lo; i <= hi; ++i, p += C, v = _mm_add_epi32(v, step_x))
+        if (bits & (1u << i)) write(p, color(bytes(v)));
+    }
+  }
+#endif
+
+  // The same value without stepping, for triangles whose colour changes by more than 2^24 levels a pixel
+  // (slivers): eight lanes of exact doubles per row.
+  void shade_smooth_exact(const Block& b) const {
+    using D8 = double __attribute__((vector_size(64)));
+    const D8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
+    const double inv_area = 1.0 / b.area;
+    for (int r = 0; r < kBlock; ++r) {
+      unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (!bits) continue;
+      double e[3];
+      for (int k = 0; k < 3; ++k) e[k] = b.e[k] + r * b.dy[k];
+      std::uint8_t out[4][8] = {};
+      for (int ch = 0; ch < 4; ++ch) {
+        if (!stores(ch)) continue;
+        const double v0 = attr_[ch], v1 = attr_[4 + ch], v2 = attr_[8 + ch];
+        const double n0 = e[0] * v0 + e[1] * v1 + e[2] * v2;
+        const double dn = b.dx[0] * v0 + b.dx[1] * v1 + b.dx[2] * v2;
+        D8 value = (n0 + lane * dn) * inv_area + 0.5;
+        value = value < lo_[ch] ? lo_[ch] : value;
+        value = value > hi_[ch] + 0.5 ? hi_[ch] + 0.5 : value;  // stays below hi + 1 after flooring
+        for (int i = 0; i < 8; ++i) out[ch][i] = static_cast<std::uint8_t>(static_cast<int>(value[i]));
+      }
+      std::uint8_t* row = pixel(b.x0, b.y0 + r);
+      for (; bits; bits &= bits - 1) {
+        const int i = std::countr_zero(bits);
+        write(row + i * C, Rgba8{out[0][i], out[1][i], out[2][i], out[3][i]});
+      }
+    }
+  }
+
+  // The channels a format of C channels stores (grey r, grey+alpha r and a, RGB, RGBA), and alpha when
+  // it weighs a blend.
+  bool stores(int ch) const {
+    if (ch == 3) return C == 2 || C == 4 || mode_.blend;
+    if (ch == 0) return true;
+    return C >= 3;
+  }
+
+  // 3D: depth test (reversed: larger is nearer; ties keep what was drawn first), then perspective-correct
+  // colour and, when lit per pixel, the interpolated normal's Lambert term.
+  void shade_depth(const Block& b) const {
+    const double inv_area = 1.0 / b.area;
+    const float* z = depth_at_;
+    for (int r = 0; r < kBlock; ++r) {
+      unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (!bits) continue;
+      const std::size_t row = surface_.index(b.x0, b.y0 + r);
+      for (; bits; bits &= bits - 1) {
+        const int i = std::countr_zero(bits);
+        // screen-space barycentrics; depth (z / w) is affine in screen space
+        const double l[3] = {(b.e[0] + i * b.dx[0] + r * b.dy[0]) * inv_area,
+                             (b.e[1] + i * b.dx[1] + r * b.dy[1]) * inv_area,
+                             (b.e[2] + i * b.dx[2] + r * b.dy[2]) * inv_area};
+        const float depth = static_cast<float>(l[0] * z[0] + l[1] * z[1] + l[2] * z[2]);
+        float& stored = surface_.depth[row + i];
+        if (!(depth > stored)) continue;
+        stored = depth;
+        std::uint8_t* p = surface_.color + (row + i) * C;
+        if (!mode_.smooth) {
+          write(p, flat_);
+          continue;
+        }
+        write(p, smooth_color(l));
+      }
+    }
+  }
+
+  Rgba8 smooth_color(const double (&l)[3]) const {
+    // perspective-correct weights: interpolate attribute / w and 1 / w, then divide
+    double q[3], sum = 0;
+    for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * inv_w_at_[k];
+    for (double& qk : q) qk /= sum;
+    double rgba[4];
+    if (mode_.varying_color)
+      for (int c = 0; c < 4; ++c) rgba[c] = q[0] * attr_[c] + q[1] * attr_[4 + c] + q[2] * attr_[8 + c];
+    else
+      for (int c = 0; c < 4; ++c) rgba[c] = attr_[c];
+    if (normal_at_) {
+      const float* n = normal_at_;
+      double nrm[3];
+      for (int c = 0; c < 3; ++c) nrm[c] = q[0] * n[c] + q[1] * n[3 + c] + q[2] * n[6 + c];
+      const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+      const double* L = call_.to_light;
+      const double n_dot_l = len > 0 ? flip_ * (nrm[0] * L[0] + nrm[1] * L[1] + nrm[2] * L[2]) / len : 0;
+      const double shade = lambert(n_dot_l, call_.ambient);
+      for (int c = 0; c < 3; ++c) rgba[c] *= shade;
+    }
+    return {to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]), to_byte(rgba[3])};
+  }
+
+  const DrawCall& call_;
+  const PrimitivePlan mode_;
+  const float* attr_;
+  const Surface& surface_;
+  const double flip_;  // two-sided lighting: a back face is lit from the side seen
+  const float* depth_at_ = nullptr;
+  const float* inv_w_at_ = nullptr;
+  const float* normal_at_ = nullptr;
+  Rgba8 flat_;
+  enum class Kind : std::uint8_t { flat, smooth, depth } kind_ = Kind::flat;
+  std::uint8_t row_bytes_[32] = {};  // flat: a block row of the colour, stored (kBlock * C bytes used)
+#if defined(__SSE2__)
+  __m128i pattern_[2] = {};  // the same 32 bytes in registers' form
+#endif
+  double lo_[4] = {}, hi_[4] = {};
+  std::int64_t slope_x_[4] = {}, slope_y_[4] = {};  // 16.16 per pixel right and down
+  bool steep_ = false;  // some slope beyond 2^24 levels a pixel: no fixed-point stepping
+};
 
 }  // namespace raster::detail

@@ -1,5 +1,6 @@
-// Plan: Scene -> RenderPlan, every decision about what this render needs, made once before any pixel work.
-// The renderer and the encoder execute a plan; they decide nothing themselves.
+// Plan: Scene -> RenderPlan, every decision about what this render needs (buffers, per-primitive modes,
+// camera, tiles, threads, PNG colour type), made once before any pixel work. Geometry, setup, the tiles
+// and the encoder execute a plan; they decide nothing themselves.
 #pragma once
 
 #include <cstdint>
@@ -11,11 +12,11 @@
 
 namespace raster {
 
-/// How one primitive is drawn. A culled primitive is skipped before setup.
+/// How one primitive's triangles or lines are drawn.
 struct PrimitivePlan {
-  bool visible = true;  ///< false: its bounding box misses the image (culled before setup)
   bool smooth =
       false;  ///< interpolate per-vertex values (colours; normals when lit); false: one colour per face
+  bool varying_color = false;  ///< vertex colours differ: interpolated (else one colour per face, as given)
   bool blend = false;            ///< some colour has alpha < 255: source-over blending; false: plain stores
   bool depth = false;            ///< 3D: depth-tested and depth-written; 2D overlays are not
   bool lit = false;              ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
@@ -24,6 +25,15 @@ struct PrimitivePlan {
       false;  ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
   bool line_rectangles =
       false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
+  friend bool operator==(const PrimitivePlan&, const PrimitivePlan&) = default;
+};
+
+/// One visible primitive and how it is drawn. Primitives whose bounding box misses the image, and meshes
+/// with nothing to draw, have none (they are culled here, before geometry).
+struct DrawPlan {
+  std::uint32_t primitive = 0;  ///< index into Scene::primitives
+  PrimitivePlan mode;           ///< its triangles, or its 2D lines
+  PrimitivePlan line_mode;      ///< meshes: its segments and wireframe edges (aliased, depth-tested)
 };
 
 /// The camera after fitting, and the light: everything geometry needs to go from world to clip space.
@@ -43,9 +53,10 @@ struct ViewPlan {
 /// Bytes of pixel storage each buffer will take; checked against the limits before allocation.
 struct MemoryPlan {
   std::int64_t color_bytes = 0;   ///< the colour buffer, which is also the output Image
-  std::int64_t depth_bytes = 0;   ///< depth buffer; 0 for 2D scenes
-  std::int64_t sample_bytes = 0;  ///< multisample storage; 0 unless antialias > 1
-  std::int64_t total() const { return color_bytes + depth_bytes + sample_bytes; }
+  std::int64_t depth_bytes = 0;   ///< depth: one tile's per thread (4 bytes a pixel); 0 for 2D scenes
+  std::int64_t sample_bytes = 0;  ///< multisample colour planes; 0 unless antialias > 1
+  std::int64_t tile_bytes = 0;    ///< each thread's tile of colour, where a tile is drawn before it is copied out
+  std::int64_t total() const { return color_bytes + depth_bytes + sample_bytes + tile_bytes; }
 };
 
 /// PNG settings: the colour type follows the pixel format (0 grey, 4 grey+alpha, 2 RGB, 6 RGBA). Rows are
@@ -57,13 +68,16 @@ struct PngPlan {
   int deflate_level = 1;
 };
 
+/// The PNG settings for a pixel format: its colour type, and the default deflate level.
+PngPlan png_plan_for(PixelFormat format);
+
 struct RenderPlan {
   int width = 0;                           ///< pixels
   int height = 0;                          ///< pixels
   PixelFormat format = PixelFormat::rgb8;  ///< fewest channels that hold every colour the render can make
   bool depth_buffer = false;               ///< only 3D content needs one; 2D never does
   int samples = 1;                         ///< per pixel; 1 = aliased, no sample storage
-  std::vector<PrimitivePlan> primitives;   ///< parallel to Scene::primitives
+  std::vector<DrawPlan> draws;             ///< the visible primitives, in scene order
 
   // Counts of the per-primitive decisions, for the explain output and the X-Render-Plan header.
   std::int64_t flat_count = 0;    ///< visible primitives drawn with one colour
@@ -75,16 +89,29 @@ struct RenderPlan {
 
   ViewPlan view;  ///< meaningful only when depth_buffer is true (the scene has 3D content)
 
-  std::int64_t work = 0;  ///< estimated pixel writes that bands split: each visible primitive's clipped box
-  int threads = 1;  ///< 1: everything on the calling thread, no hand-off; >1: that many horizontal bands
+  std::int64_t work = 0;  ///< estimated pixel writes that threads split: each visible primitive's clipped box
+  int threads = 1;  ///< 1: everything on the calling thread, no hand-off; >1: that many threads take tiles
+  /// Tile side in pixels, a multiple of 8: records are binned to tiles and threads take tiles. Small scenes
+  /// get one tile as large as the image (binning them costs more than it saves).
+  int tile = 64;
+  bool scalar_coverage = false;  ///< test hook: partial blocks tested one pixel at a time, not in SIMD lanes
   MemoryPlan memory;
   PngPlan png;
+
+  int tile_width() const { return tile < width ? tile : width; }     ///< pixels of the widest tile
+  int tile_height() const { return tile < height ? tile : height; }  ///< pixels of the tallest tile
+
+  /// The draw of scene primitive `index`, or nullptr when it was culled.
+  const DrawPlan* draw_of(std::uint32_t index) const;
 };
 
 /// Execution knobs that are the caller's, not the scene's.
 struct PlanOptions {
   int max_threads = 0;  ///< 0: the machine's core count; 1: never leave the calling thread
+  int tile = 0;         ///< 0: the plan's choice; else the tile side (rounded up to a multiple of 8)
+  bool scalar_coverage = false;  ///< test hook, see RenderPlan::scalar_coverage
 };
+
 
 /// Makes the plan. Throws SceneError(limit) when its memory or size exceeds `limits`.
 RenderPlan plan(const Scene& scene, const Limits& limits = {}, const PlanOptions& options = {});

@@ -16,9 +16,10 @@ namespace raster {
 /// What a render reports back.
 struct RenderStats {
   std::int64_t pixel_bytes = 0;  ///< bytes allocated for pixel storage: output, sample planes, depth
+  std::int64_t bin_bytes = 0;    ///< bytes of the tile bins: 4 per record per tile it may touch, 4 per tile
 };
 
-/// Per-render control from the caller: a deadline and a cancel flag. Both are looked at when each band
+/// Per-render control from the caller: a deadline and a cancel flag. Both are looked at when each thread
 /// starts and then after every ~64k pixels of work (inside a primitive too, so one image-sized triangle is
 /// checked every few dozen rows), so a render stops within a bounded time of its deadline however its work
 /// is split (docs/robustness.md has the measured bound). Nothing here is process-wide.

@@ -152,6 +152,12 @@ using Uploads = std::map<std::string, std::string, std::less<>>;
 /// Parses a scene document (format v1, see README). Throws SceneError with a JSON pointer or byte offset.
 Scene parse_scene(std::string_view json_text, const Limits& limits = {}, const Uploads& uploads = {});
 
+/// Checks what a scene's own data must satisfy whatever the limits: image size >= 1x1, every index and
+/// count in range, coordinates finite and within +-kMaxCoordinate, and a camera with a view direction.
+/// parse_scene() ends with it and plan() starts with it, so scenes built in code get the same errors.
+/// Throws SceneError(invalid) with the JSON pointer of the offending part.
+void validate(const Scene& scene);
+
 /// Parses an OBJ model (and optional MTL text) into a mesh. Throws SceneError(model) naming the line.
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {});
 

@@ -1,0 +1,100 @@
+// The raster core's targets (issue 13), side by side with llvmpipe in one run: plan + render time of the
+// 2D scenes and the 3D meshes at 1 and 2 threads, flat fill rate against memset's bandwidth, and the bytes
+// the tile bins take. Usage: core [runs] [path/to/osmesa_peer]. Prints Markdown.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "raster/raster.h"
+#include "scenes.h"
+#include "timing.h"
+
+namespace {
+
+// LP_NUM_THREADS=t osmesa_peer: llvmpipe reads its thread count once per process.
+std::map<std::string, double> peer_ms(const std::string& peer, int threads, int runs) {
+  std::map<std::string, double> out;
+  const std::string command =
+      "LP_NUM_THREADS=" + std::to_string(threads) + " " + peer + " " + std::to_string(runs);
+  if (FILE* f = popen(command.c_str(), "r")) {
+    char name[32];
+    double ms = 0;
+    while (std::fscanf(f, "%31s %lf", name, &ms) == 2) out[name] = ms;
+    pclose(f);
+  }
+  return out;
+}
+
+// Pixels a scene's triangles cover, from their areas (edges shared or overlapping count twice, as they
+// are written twice).
+double covered_pixels(const raster::Scene& s) {
+  double sum = 0;
+  for (const raster::Primitive& p : s.primitives) {
+    const raster::Point2* q = &s.points[p.first_point];
+    sum += std::fabs((q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x)) / 2;
+  }
+  return sum;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int runs = argc > 1 ? std::atoi(argv[1]) : 11;
+  const std::string peer = argc > 2 ? argv[2] : "";
+  std::map<int, std::map<std::string, double>> llvmpipe;
+  if (!peer.empty())
+    for (int t : {1, 2}) llvmpipe[t] = peer_ms(peer, t, runs);
+
+  struct Target {
+    const char* kind;
+    double ratio;  // required llvmpipe time / ours
+  };
+  const Target targets[] = {{"small", 2.5}, {"large", 2}, {"grid", 2}, {"flat", 2}, {"sphere", 1.5}, {"bunny", 1.5}};
+  std::printf("| scene | threads | triangles | raster ms | llvmpipe ms | vs llvmpipe | target | verdict |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---|\n");
+  std::map<std::string, double> flat_ms;
+  raster::Scene flat_scene;
+  for (const Target& t : targets) {
+    raster::Scene scene;
+    try {
+      const std::string kind = t.kind;
+      scene = kind == "sphere" || kind == "bunny" ? bench::mesh_scene(kind) : bench::make_scene(kind, 1);
+    } catch (const std::exception& e) {
+      std::printf("| %s | | | %s | | | | |\n", t.kind, e.what());
+      continue;
+    }
+    const std::size_t triangles = scene.meshes.empty() ? scene.primitives.size() : scene.meshes[0].triangles.size();
+    for (int threads : {1, 2}) {
+      raster::PlanOptions options;
+      options.max_threads = threads;
+      raster::Image image;
+      const double ms = bench::median_ms(runs, [&] { image = raster::render(scene, raster::plan(scene, {}, options)); });
+      const double theirs = llvmpipe.count(threads) && llvmpipe[threads].count(t.kind) ? llvmpipe[threads][t.kind] : 0;
+      const double ratio = theirs > 0 ? theirs / ms : 0;
+      std::printf("| %s | %d | %zu | %.2f | %.2f | %.2fx | %.1fx | %s |\n", t.kind, threads, triangles, ms, theirs,
+                  ratio, t.ratio, theirs <= 0 ? "n/a" : ratio >= t.ratio ? "met" : "**gap**");
+      if (std::string(t.kind) == "flat") flat_ms[std::to_string(threads)] = ms, flat_scene = scene;
+    }
+  }
+
+  // Flat fill rate against memset on the same colour buffer (RGB, 3 bytes a pixel), one thread.
+  if (!flat_ms.empty()) {
+    std::vector<std::uint8_t> buffer(std::size_t{3} * flat_scene.width * flat_scene.height);
+    const double memset_ms = bench::median_ms(runs * 5, [&] {
+      std::memset(buffer.data(), static_cast<int>(buffer.size() & 0xff), buffer.size());
+      asm volatile("" : : "r"(buffer.data()) : "memory");
+    });
+    const double memset_gpx = buffer.size() / 3.0 / (memset_ms * 1e6);
+    const double px = covered_pixels(flat_scene) + double(flat_scene.width) * flat_scene.height;  // + the clear
+    const double fill_gpx = px / (flat_ms["1"] * 1e6);
+    std::printf("\nFlat fill, the \"flat\" scene at 1 thread (clear included): %.2f Gpx/s; memset of the RGB buffer: "
+                "%.2f Gpx/s (%.1f GB/s); fill / memset = %.0f%% (target ≥ 25%%: %s)\n",
+                fill_gpx, memset_gpx, buffer.size() / (memset_ms * 1e6), 100 * fill_gpx / memset_gpx,
+                fill_gpx / memset_gpx >= 0.25 ? "met" : "**gap**");
+  }
+}

@@ -1,0 +1,198 @@
+// Coverage: one triangle record x one tile -> blocks of 8x8 pixels with a mask of the covered ones and the
+// exact edge values shading needs. One routine for every triangle (flat, smooth, depth-tested, lit; 2D and
+// 3D), templated on the edge functions' integer type: int64 in the fast range, the 384-bit Wide beyond it.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "setup.h"
+#include "stop.h"
+
+namespace raster::detail {
+
+/// Where in each pixel coverage is tested: 1/256 px from the pixel's top-left corner; (128, 128) is the
+/// centre. Anti-aliasing draws each tile once per sample position of the standard patterns.
+struct SamplePoint {
+  std::int32_t x = 128, y = 128;
+};
+
+/// The standard (Direct3D) sample patterns for 1, 4, 8 and 16 samples, on the 1/256 px grid.
+const std::vector<SamplePoint>& sample_pattern(int samples);
+
+/// One block of coverage. Bit (8 r + i) of `mask` is set when pixel (x0 + i, y0 + r) is covered. The edge
+/// values E_k at that pixel's sample point are e[k] + i dx[k] + r dy[k]: exact integers for int64 edges
+/// (every term is below 2^53), the nearest doubles of the exact values for wide ones. x0 and y0 are
+/// multiples of kBlock, so a pixel's values do not depend on the tile size.
+struct Block {
+  int x0 = 0, y0 = 0;
+  std::uint64_t mask = 0;
+  double e[3] = {}, dx[3] = {}, dy[3] = {};
+  double area = 1;  ///< the triangle's doubled area in 1/256 px units: weights are E_k / area
+};
+
+/// How the partial blocks' masks are computed: eight lanes of a row at a time (SSE2, int32 lanes relative
+/// to the block, only for the edges that cross it) or one pixel at a time in the edges' own integer type.
+/// Both give the same mask; tests hold them to it.
+enum class Lanes : std::uint8_t { simd, scalar };
+
+namespace coverage_detail {
+
+inline double to_double(std::int64_t v) {
+  return static_cast<double>(v);
+}
+inline double to_double(const Wide& v) {
+  return v.to_double();
+}
+
+inline std::int64_t floor_div(std::int64_t n, std::int64_t d) {
+  return n / d - ((n % d != 0) && (n < 0));
+}
+
+/// Mask bits of the columns [c0, c1) of every row (0 <= c0 <= c1 <= 8).
+inline std::uint64_t column_mask(int c0, int c1) {
+  const std::uint64_t row = ((1u << c1) - 1) & ~((1u << c0) - 1);
+  return row * 0x0101010101010101ull;
+}
+/// Mask bits of the rows [r0, r1).
+inline std::uint64_t row_mask(int r0, int r1) {
+  const std::uint64_t below = r1 >= 8 ? ~0ull : (1ull << (8 * r1)) - 1;
+  return below & ~((1ull << (8 * r0)) - 1);
+}
+
+/// A block's mask one pixel at a time, in T: the reference the lanes are tested against.
+template <typename T>
+std::uint64_t partial_mask_scalar(const T (&e)[3], const T (&step_x)[3], const T (&step_y)[3], int r0 = 0,
+                                  int r1 = kBlock) {
+  std::uint64_t mask = 0;
+  T row[3] = {e[0], e[1], e[2]};
+  for (int k = 0; k < 3; ++k)
+    for (int r = 0; r < r0; ++r) row[k] += step_y[k];
+  for (int r = r0; r < r1; ++r) {
+    T v[3] = {row[0], row[1], row[2]};
+    for (int i = 0; i < kBlock; ++i) {
+      if (!(v[0] < T(0)) && !(v[1] < T(0)) && !(v[2] < T(0))) mask |= 1ull << (8 * r + i);
+      for (int k = 0; k < 3; ++k) v[k] += step_x[k];
+    }
+    for (int k = 0; k < 3; ++k) row[k] += step_y[k];
+  }
+  return mask;
+}
+
+/// One edge's mask over a block whose values e + i dx + r dy (i, r in 0..7) all fit in int32: eight lanes
+/// a row, the sign bits read four at a time. A set bit is a sample with E >= 0.
+inline std::uint64_t edge_mask_lanes(std::int32_t e, std::int32_t dx, std::int32_t dy, int r0, int r1) {
+#if defined(__SSE2__)
+  e += r0 * dy;
+  __m128i left = _mm_setr_epi32(e, e + dx, e + 2 * dx, e + 3 * dx);
+  __m128i right = _mm_add_epi32(left, _mm_set1_epi32(4 * dx));
+  const __m128i down = _mm_set1_epi32(dy);
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r) {
+    const unsigned negative = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(left))) |
+                              static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(right))) << 4;
+    mask |= static_cast<std::uint64_t>(~negative & 0xffu) << (8 * r);
+    left = _mm_add_epi32(left, down), right = _mm_add_epi32(right, down);
+  }
+  return mask;
+#else
+  using I8 = std::int32_t __attribute__((vector_size(32)));
+  const I8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
+  I8 row = e + r0 * dy + lane * dx;
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r, row += dy)
+    for (int i = 0; i < 8; ++i) mask |= static_cast<std::uint64_t>(row[i] >= 0) << (8 * r + i);
+  return mask;
+#endif
+}
+
+/// A partial block's mask from its crossing edges (bit k of `crossing`), in int32 lanes where the values
+/// fit (an edge crossing a block has |e| <= 7 (|dx| + |dy|) there), else one pixel at a time in int64.
+inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::int64_t (&step_x)[3],
+                                        const std::int64_t (&step_y)[3], unsigned crossing, int r0, int r1) {
+  constexpr std::int64_t kLimit = std::int64_t{1} << 30;
+  std::uint64_t mask = ~0ull;
+  for (int k = 0; k < 3; ++k) {
+    if (!(crossing & (1u << k))) continue;
+    const std::int64_t reach = 8 * (std::abs(step_x[k]) + std::abs(step_y[k]));
+    if (std::abs(e[k]) + reach < kLimit) {
+      mask &= edge_mask_lanes(static_cast<std::int32_t>(e[k]), static_cast<std::int32_t>(step_x[k]),
+                              static_cast<std::int32_t>(step_y[k]), r0, r1);
+    } else {
+      const std::int64_t one[3] = {e[k], 0, 0}, sx[3] = {step_x[k], 0, 0}, sy[3] = {step_y[k], 0, 0};
+      mask &= partial_mask_scalar(one, sx, sy, r0, r1);
+    }
+  }
+  return mask;
+}
+
+}  // namespace coverage_detail
+
+/// Covers `edges` over the pixels of `clip` (inside one tile, the record's box already intersected), block
+/// by block in rows, and calls shade(const Block&) for every block with a covered pixel. Whole blocks are
+/// accepted or rejected from the edge values at their corners; only blocks an edge crosses are tested per
+/// pixel. Returns early once `meter` says the render must stop (a block is kBlock^2 units of work).
+template <typename T, typename Shade>
+void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter, Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const int bx0 = clip.x0 - clip.x0 % kBlock, by0 = clip.y0 - clip.y0 % kBlock;  // clip >= 0
+  T step_x[3], step_y[3], block_x[3], block_y[3], row_start[3];
+  T low_extent[3], high_extent[3];  // the smallest and largest change of E_k across a block's samples
+  const T sx(std::int64_t{bx0} * kSubpixelScale + sample.x), sy(std::int64_t{by0} * kSubpixelScale + sample.y);
+  for (int k = 0; k < 3; ++k) {
+    step_x[k] = edges.a[k] * T(kSubpixelScale), step_y[k] = edges.b[k] * T(kSubpixelScale);
+    block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
+    row_start[k] = edges.a[k] * sx + edges.b[k] * sy + edges.c[k];
+    const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
+    low_extent[k] = std::min(ex, T(0)) + std::min(ey, T(0));
+    high_extent[k] = std::max(ex, T(0)) + std::max(ey, T(0));
+  }
+  Block block;
+  block.area = to_double(edges.area);
+  for (int k = 0; k < 3; ++k) block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
+  for (int y0 = by0; y0 < clip.y1; y0 += kBlock) {
+    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);  // rows inside the clip
+    const std::uint64_t rows = row_mask(r0, r1);
+    T e[3] = {row_start[0], row_start[1], row_start[2]};
+    for (int x0 = bx0; x0 < clip.x1; x0 += kBlock) {
+      bool reject = false, accept = true;
+      for (int k = 0; k < 3; ++k) {
+        reject = reject || e[k] + high_extent[k] < T(0);
+        accept = accept && !(e[k] + low_extent[k] < T(0));
+      }
+      if (!reject) {
+        std::uint64_t mask = rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+        if (!accept) {
+          if constexpr (std::is_same_v<T, std::int64_t>) {
+            if (lanes == Lanes::simd) {
+              unsigned crossing = 0;  // edges whose sign changes inside the block; the others cover it all
+              for (int k = 0; k < 3; ++k) crossing |= (e[k] + low_extent[k] < T(0) ? 1u : 0u) << k;
+              mask &= partial_mask_lanes(e, step_x, step_y, crossing, r0, r1);
+            } else {
+              mask &= partial_mask_scalar(e, step_x, step_y, r0, r1);
+            }
+          } else {
+            mask &= partial_mask_scalar(e, step_x, step_y, r0, r1);
+          }
+        }
+        if (mask) {
+          block.x0 = x0, block.y0 = y0, block.mask = mask;
+          for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k]);
+          shade(block);
+        }
+        if (meter.add(kBlock * kBlock)) return;
+      }
+      for (int k = 0; k < 3; ++k) e[k] += block_x[k];
+    }
+    for (int k = 0; k < 3; ++k) row_start[k] += block_y[k];
+  }
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,178 @@
+#include "setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace raster::detail {
+namespace {
+
+// y down, interior on the side E > 0: a "left" edge runs upward (dy < 0); a "top" edge is horizontal and
+// runs right (dy == 0, dx > 0), with the interior below it.
+template <typename T>
+bool is_top_left(const T& dx, const T& dy) {
+  return dy < T(0) || (dy == T(0) && dx > T(0));
+}
+
+// Edges of a triangle with positive area; edge k runs between the other two vertices, so E_k is vertex
+// k's weight times the area.
+template <typename T>
+Edges<T> make_edges(const T (&x)[3], const T (&y)[3], const T& area) {
+  Edges<T> e;
+  e.area = area;
+  using Coefficient = typename Edges<T>::Coefficient;
+  for (int k = 0; k < 3; ++k) {
+    const int from = (k + 1) % 3, to = (k + 2) % 3;
+    const T a = y[from] - y[to], b = x[to] - x[from];
+    e.a[k] = static_cast<Coefficient>(a), e.b[k] = static_cast<Coefficient>(b);
+    const T bias = is_top_left(b, -a) ? T(0) : T(1);  // centres on an edge count for top/left only
+    e.c[k] = -(a * x[from]) - b * y[from] - bias;
+  }
+  return e;
+}
+
+// Pixels whose square holds a point of [lo, hi] (1/256 px units), clipped to [0, size).
+std::pair<int, int> pixel_span(double lo, double hi, int size) {
+  const double first = std::floor(lo / kSubpixelScale), last = std::floor(hi / kSubpixelScale);
+  return {static_cast<int>(std::clamp(first, 0.0, static_cast<double>(size))),
+          static_cast<int>(std::clamp(last + 1, 0.0, static_cast<double>(size)))};
+}
+
+// False when the whole of `tile`'s sample points (any sample position) lies outside an edge of `e`.
+bool may_touch(const Edges<std::int64_t>& e, Rect tile) {
+  const double x0 = double(tile.x0) * kSubpixelScale, x1 = double(tile.x1) * kSubpixelScale - 1;
+  const double y0 = double(tile.y0) * kSubpixelScale, y1 = double(tile.y1) * kSubpixelScale - 1;
+  for (int k = 0; k < 3; ++k) {
+    const double a = double(e.a[k]), b = double(e.b[k]);
+    const double most = (a > 0 ? a * x1 : a * x0) + (b > 0 ? b * y1 : b * y0) + double(e.c[k]);  // exact
+    if (most < 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+AttributeLayout AttributeLayout::of(const PrimitivePlan& mode) {
+  AttributeLayout l;
+  l.size = mode.varying_color ? 12 : 4;
+  if (mode.depth) {
+    l.depth = l.size, l.size += 3;
+    if (mode.smooth) l.inv_w = l.size, l.size += 3;
+  }
+  if (mode.light_per_pixel) l.normal = l.size, l.size += 9;
+  return l;
+}
+
+std::uint32_t Setup::add_call(const DrawCall& call) {
+  calls.push_back(call);
+  return static_cast<std::uint32_t>(calls.size() - 1);
+}
+
+void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool back_facing) {
+  const SetupVertex* v[3] = {&given[0], &given[1], &given[2]};
+  const double min_x = std::min({given[0].x, given[1].x, given[2].x}),
+               max_x = std::max({given[0].x, given[1].x, given[2].x});
+  const double min_y = std::min({given[0].y, given[1].y, given[2].y}),
+               max_y = std::max({given[0].y, given[1].y, given[2].y});
+  TriangleRecord r;
+  std::tie(r.box.x0, r.box.x1) = pixel_span(min_x, max_x, width);
+  std::tie(r.box.y0, r.box.y1) = pixel_span(min_y, max_y, height);
+  if (r.box.empty()) return;
+
+  constexpr double kFastUnits = kFastRangePx * kSubpixelScale;
+  const bool wide = !(std::max(std::fabs(min_x), std::fabs(max_x)) <= kFastUnits &&
+                      std::max(std::fabs(min_y), std::fabs(max_y)) <= kFastUnits);
+  if (!wide) {
+    std::int64_t x[3], y[3];
+    for (int k = 0; k < 3; ++k) x[k] = static_cast<std::int64_t>(v[k]->x), y[k] = static_cast<std::int64_t>(v[k]->y);
+    std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    if (area == 0) return;  // degenerate: covers nothing
+    if (area < 0) {         // both windings are drawn: normalize to positive area
+      std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(v[1], v[2]);
+      area = -area;
+    }
+    r.edges = make_edges(x, y, area);
+  } else {
+    Wide x[3], y[3];
+    for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(v[k]->x), y[k] = Wide::from_double(v[k]->y);
+    Wide area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    if (area == Wide(0)) return;
+    if (area.negative()) {
+      std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(v[1], v[2]);
+      area = -area;
+    }
+    r.wide = static_cast<std::uint32_t>(wide_edges.size());
+    wide_edges.push_back(make_edges(x, y, area));
+  }
+
+  // Attributes in the normalized vertex order, only those the call's layout has.
+  const PrimitivePlan& mode = calls[call].mode;
+  const AttributeLayout layout = AttributeLayout::of(mode);
+  r.attributes = static_cast<std::uint32_t>(attributes.size());
+  attributes.resize(attributes.size() + layout.size);
+  float* out = attributes.data() + r.attributes;
+  for (int k = 0; k < (mode.varying_color ? 3 : 1); ++k) std::copy(v[k]->color, v[k]->color + 4, out + 4 * k);
+  for (int k = 0; k < 3; ++k) {
+    if (layout.depth >= 0) out[layout.depth + k] = v[k]->depth;
+    if (layout.inv_w >= 0) out[layout.inv_w + k] = v[k]->inv_w;
+    if (layout.normal >= 0) std::copy(v[k]->normal, v[k]->normal + 3, out + layout.normal + 3 * k);
+  }
+  r.call = call;
+  r.back_facing = back_facing;
+  order.push_back({static_cast<std::uint32_t>(triangles.size())});
+  triangles.push_back(r);
+}
+
+void Setup::add_line(LineRecord line) {
+  std::tie(line.box.x0, line.box.x1) =
+      pixel_span(std::min(line.x0, line.x1) * kSubpixelScale, std::max(line.x0, line.x1) * kSubpixelScale, width);
+  std::tie(line.box.y0, line.box.y1) =
+      pixel_span(std::min(line.y0, line.y1) * kSubpixelScale, std::max(line.y0, line.y1) * kSubpixelScale, height);
+  if (line.box.empty()) return;
+  order.push_back({RecordRef::kLineBit | static_cast<std::uint32_t>(lines.size())});
+  lines.push_back(line);
+}
+
+Rect Bins::tile_rect(int index, int width, int height) const {
+  const int tx = index % columns, ty = index / columns;
+  return {tx * tile, ty * tile, std::min(width, (tx + 1) * tile), std::min(height, (ty + 1) * tile)};
+}
+
+Bins bin(const Setup& setup, int tile) {
+  Bins bins;
+  bins.tile = tile;
+  bins.columns = (setup.width + tile - 1) / tile;
+  bins.rows = (setup.height + tile - 1) / tile;
+  const std::size_t tiles = static_cast<std::size_t>(bins.columns) * bins.rows;
+  std::vector<std::uint32_t> count(tiles + 1, 0);
+  // Calls visit(tile index) for every tile record `ref` may touch.
+  auto for_each_tile = [&](RecordRef ref, auto&& visit) {
+    const bool line = ref.value & RecordRef::kLineBit;
+    const std::uint32_t index = ref.value & ~RecordRef::kLineBit;
+    const Rect box = line ? setup.lines[index].box : setup.triangles[index].box;
+    const int tx0 = box.x0 / tile, tx1 = (box.x1 - 1) / tile, ty0 = box.y0 / tile, ty1 = (box.y1 - 1) / tile;
+    const TriangleRecord* t = line ? nullptr : &setup.triangles[index];
+    const bool test = t && t->wide == TriangleRecord::kFast && (tx1 > tx0 || ty1 > ty0);  // one tile: no skip
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        const int at = ty * bins.columns + tx;
+        if (test && !may_touch(t->edges, bins.tile_rect(at, setup.width, setup.height))) continue;
+        visit(at);
+      }
+  };
+  for (const RecordRef ref : setup.order) for_each_tile(ref, [&](int at) { ++count[at + 1]; });
+  bins.offsets.resize(tiles + 1);
+  for (std::size_t t = 0; t < tiles; ++t) count[t + 1] += count[t];
+  bins.offsets = count;
+  bins.records.resize(count[tiles]);
+  for (const RecordRef ref : setup.order) for_each_tile(ref, [&](int at) { bins.records[count[at]++] = ref; });
+  return bins;
+}
+
+double snap(double px) {
+  const double units = px * static_cast<double>(kSubpixelScale);  // exact: a power-of-two scale
+  // From 2^52 up every double is already an integer; adding 0.5 there would round to even instead.
+  return std::fabs(units) >= 0x1p52 ? units : std::floor(units + 0.5);
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,156 @@
+// Setup: geometry's screen-space primitives -> one record per triangle or line, made once per render, and
+// the tile bins that list, per tile and in scene order, the records that may touch it. Nothing after this
+// stage recomputes an edge, a bounding box or an attribute's weights.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+#include "raster/plan.h"
+#include "raster/scene.h"
+#include "wide.h"
+
+namespace raster::detail {
+
+inline constexpr int kSubpixelBits = 8;                             ///< GPU-style 8 sub-pixel bits
+inline constexpr std::int64_t kSubpixelScale = 1 << kSubpixelBits;  ///< fixed-point units per pixel
+
+/// Triangles whose vertices all lie within +-kFastRangePx take the int64 records: snapped coordinates fit
+/// in 24 bits, so every edge value at a pixel of the image fits in 50 bits (exact in a double, too).
+/// Others take the exact wide records (wide.h).
+inline constexpr double kFastRangePx = 32768.0;
+
+/// Coverage works on square blocks of this many pixels a side; tiles are whole blocks.
+inline constexpr int kBlock = 8;
+
+/// A half-open pixel rectangle [x0, x1) x [y0, y1): tiles, bounding boxes, clip regions.
+struct Rect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+/// Where a tile draws: a tile's own colour (and depth) storage, row-major, holding the pixels of image
+/// rectangle [x0, x0 + width) x [y0, ...). Small and contiguous, so a tile's pixels stay in the nearest
+/// cache however wide the image is (rows of a 1024-px RGB image are 3 KiB apart and alias in the L1).
+struct Surface {
+  std::uint8_t* color = nullptr;  ///< channels per pixel as the image's format
+  float* depth = nullptr;         ///< z / w (reversed: larger is nearer), or nullptr without 3D
+  int width = 0;                  ///< pixels per row of both
+  int x0 = 0, y0 = 0;             ///< image coordinates of the first pixel
+  int channels = 3;
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x - x0);
+  }
+  std::uint8_t* pixel(int x, int y) const { return color + index(x, y) * static_cast<std::size_t>(channels); }
+};
+
+/// What a record is drawn with: the plan's decisions for its primitive plus the constants shading needs.
+struct DrawCall {
+  PrimitivePlan mode;
+  /// 3D lighting: unit world vector toward the light, and the ambient term in [0, 1].
+  double to_light[3] = {0, 0, 1};
+  double ambient = 0.2;
+};
+
+/// The three vertices of a triangle, snapped, in either winding; colours (0..255 straight RGBA) per vertex.
+/// 3D triangles also carry what the shading interpolates.
+struct SetupVertex {
+  double x = 0, y = 0;  ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
+  float color[4] = {};  ///< straight RGBA, 0..255 (3D flat lighting already applied)
+  float depth = 0;      ///< 3D: z / w in [0, 1], 1 at the near plane (reversed)
+  float inv_w = 1;      ///< 3D: 1 / w, for perspective-correct interpolation
+  float normal[3] = {};  ///< 3D per-pixel lighting: world-space unit normal
+};
+
+/// Edge functions of one triangle on the 1/256 px grid, in the triangle's own integer type T (int64 for the
+/// fast range, Wide beyond): E_k(X, Y) = a[k] X + b[k] Y + c[k] at the sample point (X, Y) in 1/256 px, with
+/// the top-left rule folded into c (an edge that is not top or left has 1 subtracted), so a sample is
+/// covered exactly when all three are >= 0. E_k is vertex k's barycentric weight times `area`.
+template <typename T>
+struct Edges {
+  /// In the fast range a and b are coordinate differences below 2^24: 32 bits hold them.
+  using Coefficient = std::conditional_t<std::is_same_v<T, std::int64_t>, std::int32_t, T>;
+  Coefficient a[3], b[3];
+  T c[3];
+  T area;  ///< twice the triangle's area in 1/256 px units squared, > 0
+};
+
+/// One triangle, set up: its edges, the pixels it may touch, and its attributes in barycentric form.
+/// Attributes are planes: any attribute v is the affine function sum_k E_k(X, Y) v_k / area, evaluated
+/// from the exact edge values, so a pixel's value does not depend on which tile or block computes it.
+struct TriangleRecord {
+  static constexpr std::uint32_t kFast = ~0u;
+  Edges<std::int64_t> edges;     ///< the edges, when in the fast range (kept here: one fetch per record)
+  Rect box;                      ///< pixels whose sample point may be covered, clipped to the image
+  std::uint32_t call = 0;        ///< index into Setup::calls
+  std::uint32_t attributes = 0;  ///< index into Setup::attributes of this record's first float (see below)
+  std::uint32_t wide = kFast;    ///< kFast, or the index of its edges in Setup::wide_edges
+  bool back_facing = false;      ///< 3D: seen from behind (per-pixel lighting flips the normal)
+};
+
+/// Attribute floats of a record, in this order, only those its call needs:
+///   colour: 3 x RGBA (mode.varying_color), or 1 x RGBA
+///   depth: 3 x z/w                         (mode.depth)
+///   inv_w: 3 x 1/w                         (mode.depth && mode.smooth)
+///   normal: 3 x xyz                        (mode.light_per_pixel)
+struct AttributeLayout {
+  int color = 0, depth = -1, inv_w = -1, normal = -1, size = 0;
+  static AttributeLayout of(const PrimitivePlan& mode);
+};
+
+/// A 1-px line between the pixels that contain its endpoints. Pixel indices are integers held exactly in
+/// doubles (|value| <= 2^128). Coverage orders the endpoints canonically, so a->b and b->a are the same.
+struct LineRecord {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixel column and row of each endpoint, integral values
+  Rgba8 c0, c1;                           ///< colours at the two endpoints
+  bool draw_first = true;        ///< false: endpoint 0's pixel belongs to the previous polyline segment
+  bool draw_last = true;         ///< false: endpoint 1's pixel belongs to the next segment (closing segment)
+  float depth0 = 0, depth1 = 0;  ///< 3D lines (mode.depth): z / w at each endpoint, reversed
+  std::uint32_t call = 0;        ///< index into Setup::calls
+  Rect box;                      ///< pixels it may touch, clipped to the image
+};
+
+/// A record in scene order: which kind and its index in that kind's array.
+struct RecordRef {
+  static constexpr std::uint32_t kLineBit = 1u << 31;
+  std::uint32_t value = 0;  ///< index into Setup::triangles, or kLineBit | index into Setup::lines
+};
+
+/// Everything the tiles draw, in scene order.
+struct Setup {
+  std::vector<DrawCall> calls;
+  std::vector<TriangleRecord> triangles;
+  std::vector<Edges<Wide>> wide_edges;
+  std::vector<float> attributes;
+  std::vector<LineRecord> lines;
+  std::vector<RecordRef> order;  ///< every record once, in the order the scene draws them
+  int width = 0, height = 0;     ///< the image, pixels
+
+  /// Adds a draw call; returns its index.
+  std::uint32_t add_call(const DrawCall& call);
+  /// Sets up a triangle from three snapped vertices; degenerate ones and ones that miss the image are not
+  /// added. Colours only (2D) or every attribute of `call`'s layout (3D).
+  void add_triangle(std::uint32_t call, const SetupVertex (&v)[3], bool back_facing = false);
+  /// Adds a 1-px line record (its box is computed here).
+  void add_line(LineRecord line);
+};
+
+/// Per tile, the records that may touch it, in scene order: a flat array of record references and, for
+/// tile t, the range [offsets[t], offsets[t + 1]).
+struct Bins {
+  int tile = 64;           ///< tile side, pixels (a multiple of kBlock)
+  int columns = 0, rows = 0;  ///< tiles across and down
+  std::vector<std::uint32_t> offsets;  ///< columns * rows + 1 entries
+  std::vector<RecordRef> records;
+  Rect tile_rect(int index, int width, int height) const;
+};
+
+/// Bins every record of `setup` by its bounding box, skipping tiles a triangle's edges exclude entirely.
+Bins bin(const Setup& setup, int tile);
+
+/// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
+/// whole pixels translates the result exactly.
+double snap(double px);
+
+}  // namespace raster::detail

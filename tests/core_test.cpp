@@ -1,0 +1,235 @@
+// The raster core (setup once, tile bins, one coverage routine, one shading place) and the stage contracts:
+// differential tests against the literal reference for every tile size and thread count, the SIMD blocks
+// against the scalar path of the same routine, and one test per contract so none can silently come back.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <nlohmann/json.hpp>
+
+#include "reference.h"
+#include "support.h"
+
+namespace {
+
+using raster::Point2;
+using raster::Rgba8;
+using test::SceneBuilder;
+
+Rgba8 random_color(std::mt19937& rng, bool opaque = true) {
+  return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+          static_cast<std::uint8_t>(opaque ? 255 : 40 + rng() % 200)};
+}
+
+// A seeded scene that mixes every primitive kind: flat, smooth and translucent triangles, slivers, huge
+// (wide-path) triangles, 1 px lines and polylines, wide lines, outlines, and a lit 3D mesh.
+raster::Scene mixed_scene(unsigned seed, int side, int samples = 1) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> at(-side * 0.2, side * 1.2), d(-40, 40);
+  SceneBuilder s(side, side, Rgba8{20, 30, 40, 255});
+  for (int i = 0; i < 60; ++i) {
+    const Point2 a{at(rng), at(rng)};
+    const Point2 b{a.x + d(rng), a.y + d(rng)}, c{a.x + d(rng), a.y + d(rng)};
+    switch (rng() % 9) {
+      case 0:
+        s.triangle(a, b, c, random_color(rng));
+        break;
+      case 1:
+        s.triangle(a, b, c, random_color(rng), random_color(rng), random_color(rng));
+        break;
+      case 2:
+        s.triangle(a, b, c, random_color(rng, false), random_color(rng), random_color(rng, false));
+        break;
+      case 3:  // a sliver
+        s.triangle(a, {a.x + 300, a.y + 7}, {a.x + 150.3, a.y + 3.51}, random_color(rng));
+        break;
+      case 4:  // huge: the exact wide path
+        s.triangle(a, {a.x + 1e12, a.y + 3e11}, {a.x - 2e11, a.y + 9e12}, random_color(rng, false));
+        break;
+      case 5:
+        s.line(a, b, random_color(rng), random_color(rng));
+        break;
+      case 6:
+        s.polyline({a, b, c, {c.x + 20, c.y - 5}}, random_color(rng, false), rng() % 2);
+        break;
+      case 7:
+        s.triangle(a, b, c, random_color(rng), false);  // outline
+        break;
+      default:
+        s.line(a, b, random_color(rng));
+        s.scene.primitives.back().width = 1 + static_cast<float>(rng() % 50) / 10;
+        break;
+    }
+  }
+  raster::Mesh mesh;  // a lit, smooth tetrahedron-ish fan in front of the default camera
+  mesh.positions = {{0, 0, 1}, {-1, -0.8, 0}, {1, -0.8, 0}, {0, 1, 0}, {0, 0, -1}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {4, 2, 1}, {4, 3, 2}};
+  mesh.segments = {{0, 4}};
+  mesh.colors = {{200, 180, 90, 255}, {90, 200, 120, 255}, {80, 120, 230, 255}, {230, 90, 90, 255}, {250, 250, 250, 255}};
+  s.scene.meshes.push_back(mesh);
+  raster::Primitive p;
+  p.kind = raster::PrimitiveKind::mesh;
+  s.scene.primitives.insert(s.scene.primitives.begin() + 30, p);
+  s.scene.samples = samples;
+  return s.scene;
+}
+
+raster::Image render_with(const raster::Scene& scene, int tile, int threads, bool scalar = false) {
+  raster::PlanOptions options;
+  options.tile = tile;
+  options.max_threads = threads;
+  options.scalar_coverage = scalar;
+  raster::RenderPlan plan = raster::plan(scene, {}, options);
+  plan.threads = threads;  // exactly this many, whatever the plan's estimate of the work
+  return raster::render(scene, plan);
+}
+
+// Same bytes for tile sizes 16, 64, 128 and 1, 2, 3, 7 threads, aliased and at 4 samples.
+TEST(Core, SameBytesForEveryTileSizeAndThreadCount) {
+  for (unsigned seed = 1; seed <= 6; ++seed)
+    for (int samples : {1, 4}) {
+      const raster::Scene scene = mixed_scene(seed, 200, samples);
+      const raster::Image expected = render_with(scene, 64, 1);
+      for (int tile : {16, 64, 128})
+        for (int threads : {1, 2, 3, 7}) {
+          const raster::Image got = render_with(scene, tile, threads);
+          ASSERT_EQ(got.pixels, expected.pixels)
+              << "seed " << seed << ", " << samples << " samples, tile " << tile << ", " << threads << " threads";
+        }
+    }
+}
+
+// A tile size that is not a power of two, and the one-tile direct path, agree too.
+TEST(Core, OddTileSizesAndTheDirectPathAgree) {
+  const raster::Scene scene = mixed_scene(11, 150);
+  const raster::Image expected = render_with(scene, 64, 1);
+  EXPECT_EQ(render_with(scene, 24, 2).pixels, expected.pixels);
+  EXPECT_EQ(render_with(scene, 152, 1).pixels, expected.pixels) << "one tile holding the whole image";
+}
+
+// The SIMD blocks against the scalar path of the same routine: identical coverage and colours.
+TEST(Core, SimdBlocksMatchTheScalarPath) {
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    const raster::Scene scene = mixed_scene(seed, 160, seed % 2 ? 1 : 8);
+    EXPECT_EQ(render_with(scene, 64, 1, true).pixels, render_with(scene, 64, 1, false).pixels) << "seed " << seed;
+  }
+}
+
+// Against the literal reference: seeded scenes of flat opaque triangles (every kind of shape, the fast and
+// the wide path) and 1 px lines, each in its own colour, painted in order. Every pixel is the colour of
+// the last primitive that covers it in the reference: identical bytes, at every tile size and thread count.
+TEST(Core, PaintedScenesMatchTheLiteralReferenceExactly) {
+  constexpr int kSide = 96;
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> at(-20, kSide + 20), d(-30, 30);
+    SceneBuilder s(kSide, kSide);
+    std::vector<std::uint8_t> expect(kSide * kSide * 3, 0);
+    auto paint = [&](const std::vector<std::uint8_t>& mask, Rgba8 c) {
+      for (int i = 0; i < kSide * kSide; ++i)
+        if (mask[i]) expect[3 * i] = c.r, expect[3 * i + 1] = c.g, expect[3 * i + 2] = c.b;
+    };
+    for (int n = 0; n < 40; ++n) {
+      const Rgba8 c{static_cast<std::uint8_t>(1 + n), static_cast<std::uint8_t>(seed), 200, 255};
+      const Point2 a{at(rng), at(rng)};
+      Point2 b{a.x + d(rng), a.y + d(rng)}, e{a.x + d(rng), a.y + d(rng)};
+      if (n % 7 == 3) b = {a.x + 2e9, a.y - 1e9}, e = {a.x + 3e9 + 0.5, a.y - 1.5e9 + 0.25};  // wide sliver
+      if (n % 5 == 4) {
+        s.line(a, b, c);
+        paint(ref::line(a.x, a.y, b.x, b.y, kSide, kSide), c);
+      } else {
+        s.triangle(a, b, e, c);
+        paint(ref::triangle(a.x, a.y, b.x, b.y, e.x, e.y, kSide, kSide).mask, c);
+      }
+    }
+    for (int tile : {16, 64, 128})
+      for (int threads : {1, 3}) {
+        const raster::Image got = render_with(s.scene, tile, threads);
+        ASSERT_EQ(got.format, raster::PixelFormat::rgb8);
+        ASSERT_EQ(got.pixels, expect) << "seed " << seed << ", tile " << tile << ", " << threads << " threads";
+      }
+  }
+}
+
+// Contract: the encoder writes the colour type the plan chose, for every format class; a plan for
+// another format is refused rather than mislabelling the pixels.
+TEST(Contracts, EncoderWritesThePlansColourType) {
+  struct Case {
+    Rgba8 background, ink;
+    raster::PixelFormat format;
+  };
+  for (const Case& c : {Case{{0, 0, 0, 255}, {200, 200, 200, 255}, raster::PixelFormat::grey8},
+                        Case{{0, 0, 0, 0}, {200, 200, 200, 255}, raster::PixelFormat::grey_alpha8},
+                        Case{{0, 0, 0, 255}, {200, 10, 10, 255}, raster::PixelFormat::rgb8},
+                        Case{{0, 0, 0, 0}, {200, 10, 10, 255}, raster::PixelFormat::rgba8}}) {
+    SceneBuilder s(8, 8, c.background);
+    s.triangle({0, 0}, {8, 0}, {0, 8}, c.ink);
+    const raster::RenderPlan plan = raster::plan(s.scene);
+    ASSERT_EQ(plan.format, c.format);
+    const std::vector<std::uint8_t> png = raster::encode_png(raster::render(s.scene, plan), plan.png);
+    EXPECT_EQ(png.at(25), plan.png.color_type) << "IHDR colour type";
+    raster::PngPlan wrong = plan.png;
+    wrong.color_type = c.format == raster::PixelFormat::rgb8 ? 6 : 2;
+    EXPECT_THROW(raster::encode_png(raster::render(s.scene, plan), wrong), std::invalid_argument);
+  }
+}
+
+// Contract: one validate() for parsed scenes and scenes built in code, with one wording per error.
+TEST(Contracts, ParsedAndBuiltScenesGetTheSameValidation) {
+  const std::string json =
+      R"({"width": 8, "height": 8, "camera": {"eye": [1, 2, 3], "target": [1, 2, 3]},
+          "primitives": [{"type": "triangle", "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]})";
+  std::string parsed_message, parsed_pointer;
+  try {
+    raster::parse_scene(json);
+    ADD_FAILURE() << "eye == target must be rejected by the parser";
+  } catch (const raster::SceneError& e) {
+    parsed_message = e.what(), parsed_pointer = e.where().pointer;
+  }
+  raster::Scene built = raster::parse_scene(
+      R"({"width": 8, "height": 8, "primitives": [{"type": "triangle", "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]})");
+  built.camera.eye = built.camera.target = {1, 2, 3};
+  built.camera.has_eye = built.camera.has_target = true;
+  try {
+    raster::plan(built);
+    ADD_FAILURE() << "eye == target must be rejected by the plan of a scene built in code";
+  } catch (const raster::SceneError& e) {
+    EXPECT_EQ(e.what(), parsed_message);
+    EXPECT_EQ(e.where().pointer, parsed_pointer);
+    EXPECT_EQ(e.where().pointer, "/camera/target");
+  }
+  built.camera.has_target = false;  // the fitted target (the content's centre) is not the eye: fine
+  EXPECT_NO_THROW(raster::plan(built));
+}
+
+// Contract: the plan lists only what is drawn, each with its scene index (no array kept parallel to the
+// scene's), and it alone decides whether a wide line interpolates colour.
+TEST(Contracts, ThePlanOwnsThePerPrimitiveDecisions) {
+  SceneBuilder s(32, 32);
+  s.line({-90, -90}, {-80, -80}, test::kRed)                      // culled
+      .line({2, 2}, {30, 20}, test::kRed, test::kRed)              // wide, one colour
+      .line({2, 20}, {30, 4}, test::kRed, test::kBlue);            // wide, two colours
+  s.scene.primitives[1].width = s.scene.primitives[2].width = 3;
+  const raster::RenderPlan p = raster::plan(s.scene);
+  ASSERT_EQ(p.draws.size(), 2u);
+  EXPECT_EQ(p.draws[0].primitive, 1u);
+  EXPECT_EQ(p.draws[1].primitive, 2u);
+  EXPECT_EQ(p.draw_of(0), nullptr);
+  EXPECT_FALSE(p.draw_of(1)->mode.smooth) << "equal endpoint colours: one colour, decided by the plan";
+  EXPECT_TRUE(p.draw_of(2)->mode.smooth);
+  // The render obeys it: the one-colour line's pixels are all pure red.
+  SceneBuilder only(32, 32);
+  only.line({2, 2}, {30, 20}, test::kRed, test::kRed);
+  only.scene.primitives[0].width = 3;
+  const raster::Image img = raster::render(only.scene, raster::plan(only.scene));
+  int red = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const Rgba8 c = test::pixel(img, x, y);
+      EXPECT_TRUE(c == test::kRed || c == test::kBlack) << x << "," << y;
+      red += c == test::kRed;
+    }
+  EXPECT_GT(red, 60);
+}
+
+}  // namespace
