@@ -82,6 +82,55 @@ int main(int argc, char** argv) {
     }
   }
 
+  // Where the time goes, one thread, and what the bins cost.
+  std::printf("\nStages at 1 thread (milliseconds, median of %d; geometry includes transform, clipping and setup"
+              " of every record; tiles are coverage and shading):\n\n", runs);
+  std::printf("| scene | geometry + setup | bin | clear | tiles | records | bin entries | bin bytes | bytes per record-tile |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const char* kind : {"small", "large", "grid", "sphere", "bunny"}) {
+    raster::Scene scene;
+    try {
+      const std::string k = kind;
+      scene = k == "sphere" || k == "bunny" ? bench::mesh_scene(k) : bench::make_scene(k, 1);
+    } catch (const std::exception&) {
+      continue;
+    }
+    raster::PlanOptions options;
+    options.max_threads = 1;
+    const raster::RenderPlan plan = raster::plan(scene, {}, options);
+    std::vector<double> g, b, c, t;
+    raster::RenderStats stats;
+    for (int r = 0; r < runs; ++r) {
+      raster::RenderControl control;
+      control.stats = &stats;
+      raster::render(scene, plan, control);
+      g.push_back(stats.geometry_ms), b.push_back(stats.bin_ms), c.push_back(stats.clear_ms), t.push_back(stats.tiles_ms);
+    }
+    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %lld | %lld | %lld | %.1f |\n", kind, bench::median(g), bench::median(b),
+                bench::median(c), bench::median(t), static_cast<long long>(stats.records),
+                static_cast<long long>(stats.bin_entries), static_cast<long long>(stats.bin_bytes),
+                stats.bin_entries ? double(stats.bin_bytes) / double(stats.bin_entries) : 0.0);
+  }
+
+  // Tile size: the same renders at 32, 64 and 128 pixels a side.
+  std::printf("\nTile size (raster ms, 1 / 2 threads, median of %d):\n\n| scene | 32 | 64 | 128 |\n|---|---:|---:|---:|\n", runs);
+  for (const char* kind : {"small", "large", "grid", "sphere"}) {
+    const std::string k = kind;
+    const raster::Scene scene = k == "sphere" ? bench::mesh_scene(k) : bench::make_scene(k, 1);
+    std::printf("| %s |", kind);
+    for (int tile : {32, 64, 128}) {
+      double ms[2];
+      for (int threads : {1, 2}) {
+        raster::PlanOptions options;
+        options.max_threads = threads;
+        options.tile = tile;
+        ms[threads - 1] = bench::median_ms(runs, [&] { raster::render(scene, raster::plan(scene, {}, options)); });
+      }
+      std::printf(" %.2f / %.2f |", ms[0], ms[1]);
+    }
+    std::printf("\n");
+  }
+
   // Flat fill rate against memset on the same colour buffer (RGB, 3 bytes a pixel), one thread.
   if (!flat_ms.empty()) {
     std::vector<std::uint8_t> buffer(std::size_t{3} * flat_scene.width * flat_scene.height);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <functional>
 #include <thread>
@@ -155,9 +156,17 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const detail::Stop stop{control.deadline, control.cancel, &stopped, &control.clock};
   const auto cancelled = [] { return RenderCancelled("render stopped: deadline passed or cancelled"); };
   detail::StopMeter meter(stop);  // the calling thread's, for geometry, binning and allocation
+  using Clock = std::chrono::steady_clock;
+  auto lap = [&, last = Clock::now()](double RenderStats::*field) mutable {
+    const Clock::time_point now = Clock::now();
+    if (control.stats) control.stats->*field = std::chrono::duration<double, std::milli>(now - last).count();
+    last = now;
+  };
   const detail::Setup setup = detail::build_setup(scene, plan, meter);
   if (meter.stopped()) throw cancelled();
+  lap(&RenderStats::geometry_ms);
   const detail::Bins bins = detail::bin(setup, plan.tile);
+  lap(&RenderStats::bin_ms);
 
   // Buffers are cleared as they are allocated, looking at the deadline every megabyte.
   Image image = detail::make_color_buffer(plan, scene.background, meter);
@@ -186,7 +195,10 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     control.stats->pixel_bytes = bytes;
     control.stats->bin_bytes = static_cast<std::int64_t>(bins.records.size() * sizeof(detail::RecordRef) +
                                                          bins.offsets.size() * sizeof(std::uint32_t));
+    control.stats->records = static_cast<std::int64_t>(setup.order.size());
+    control.stats->bin_entries = static_cast<std::int64_t>(bins.records.size());
   }
+  lap(&RenderStats::clear_ms);
   const Frame frame{setup, bins, plan, image, planes};
   std::atomic<int> next{0};  // tiles are taken in order; which thread takes one does not change its bytes
   auto worker = [&](Scratch& own) {
@@ -206,6 +218,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     worker(scratch[0]);
   }  // jthreads join here
   if (stopped) throw cancelled();
+  lap(&RenderStats::tiles_ms);
   return image;
 }
 

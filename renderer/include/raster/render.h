@@ -17,6 +17,13 @@ namespace raster {
 struct RenderStats {
   std::int64_t pixel_bytes = 0;  ///< bytes allocated for pixel storage: output, sample planes, depth
   std::int64_t bin_bytes = 0;    ///< bytes of the tile bins: 4 per record per tile it may touch, 4 per tile
+  std::int64_t records = 0;      ///< triangle and line records set up
+  std::int64_t bin_entries = 0;  ///< record-tile pairs in the bins
+  // Wall time of each stage, milliseconds (filled only when stats are asked for):
+  double geometry_ms = 0;  ///< transform, lighting per face, clipping, projection and setup of every record
+  double bin_ms = 0;       ///< binning the records to tiles
+  double clear_ms = 0;     ///< allocating and clearing the colour buffer and sample planes
+  double tiles_ms = 0;     ///< coverage and shading of every tile (all threads), and the resolve
 };
 
 /// Per-render control from the caller: a deadline and a cancel flag. Both are looked at when each thread
