@@ -137,7 +137,7 @@ inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::i
 /// Covers `edges` over the pixels of `clip` (inside one tile, the record's box already intersected), block
 /// by block in rows, and calls shade(const Block&) for every block with a covered pixel. Whole blocks are
 /// accepted or rejected from the edge values at their corners; only blocks an edge crosses are tested per
-/// pixel. Returns early once `meter` says the render must stop (a block is kBlock^2 units of work).
+/// pixel. A clip inside the triangle altogether goes to shade.rect(clip, first block) instead. Returns early once `meter` says the render must stop (a block is kBlock^2 units of work).
 template <typename T, typename Shade>
 void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
@@ -157,6 +157,24 @@ void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, St
   Block block;
   block.area = to_double(edges.area);
   for (int k = 0; k < 3; ++k) block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    // The whole clip inside every edge (its corner samples are): accepted at once, and the shading covers
+    // it as a rectangle. The first block's values are exact doubles; the shader steps them exactly.
+    bool inside = true;
+    const T cx(std::int64_t{clip.x0} * kSubpixelScale + sample.x), cy(std::int64_t{clip.y0} * kSubpixelScale + sample.y);
+    for (int k = 0; k < 3 && inside; ++k) {
+      const T corner = edges.a[k] * cx + edges.b[k] * cy + edges.c[k];
+      const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
+      inside = !(corner + std::min(w, T(0)) + std::min(h, T(0)) < T(0));
+    }
+    if (inside) {
+      block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
+      for (int k = 0; k < 3; ++k) block.e[k] = to_double(row_start[k]);
+      shade.rect(clip, block);
+      meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
+      return;
+    }
+  }
   for (int y0 = by0; y0 < clip.y1; y0 += kBlock) {
     const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);  // rows inside the clip
     const std::uint64_t rows = row_mask(r0, r1);

@@ -80,7 +80,7 @@ Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) 
       continue;
     }
     // Consecutive primitives drawn the same way share one call.
-    if (setup.calls.empty() || !(setup.calls.back().mode == draw.mode)) setup.add_call({draw.mode});
+    if (setup.calls.empty() || !(setup.calls.back().mode == draw.mode)) setup.add_call(make_call(draw.mode));
     const auto call = static_cast<std::uint32_t>(setup.calls.size() - 1);
     if (prim.kind == PrimitiveKind::triangle && prim.fill)
       add_triangle(scene, prim, call, setup);

@@ -204,7 +204,7 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
     }
     const Vec3 to_light = view.to_light;
     const Vec3 forward = normalize(view.target - view.eye);
-    DrawCall call{mode};
+    DrawCall call = make_call(mode);
     call.to_light[0] = to_light.x, call.to_light[1] = to_light.y, call.to_light[2] = to_light.z;
     call.ambient = view.ambient;
     const std::uint32_t call_index = setup.add_call(call);
@@ -303,7 +303,7 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
     }
   }
   if (segments.empty()) return;
-  const std::uint32_t line_call = setup.add_call({draw.line_mode});
+  const std::uint32_t line_call = setup.add_call(make_call(draw.line_mode));
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;
     if ((outside[segments[s][0]] | outside[segments[s][1]]) & 0x80) continue;

@@ -117,15 +117,17 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const int c = f.image.channels(), w = rect.x1 - rect.x0;
   const std::size_t row_bytes = static_cast<std::size_t>(w) * c;
-  const detail::Surface surface{scratch.color.data(), scratch.depth.empty() ? nullptr : scratch.depth.data(), w,
-                                rect.x0, rect.y0, c};
+  // Rows of the storage are whole blocks wide: a block at the image's right edge stays in its own row.
+  const int stride = (w + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
+  const detail::Surface surface{scratch.color.data(), scratch.depth.empty() ? nullptr : scratch.depth.data(),
+                                stride, rect.x0, rect.y0, c};
   for (std::size_t s = 0; s < pattern.size(); ++s) {
     Image& target = f.planes.empty() ? f.image : f.planes[s];
     auto row_of = [&](int y) {
       return target.pixels.data() + (static_cast<std::size_t>(y) * target.width + rect.x0) * c;
     };
     for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(surface.pixel(rect.x0, y), row_of(y), row_bytes);
-    if (surface.depth) std::fill_n(surface.depth, static_cast<std::size_t>(w) * (rect.y1 - rect.y0), 0.0f);
+    if (surface.depth) std::fill_n(surface.depth, static_cast<std::size_t>(stride) * (rect.y1 - rect.y0), 0.0f);
     switch (c) {
       case 1:
         draw_bin<1>(f, tile, surface, pattern[s], meter);

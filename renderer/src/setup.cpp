@@ -65,6 +65,7 @@ AttributeLayout AttributeLayout::of(const PrimitivePlan& mode) {
 
 std::uint32_t Setup::add_call(const DrawCall& call) {
   calls.push_back(call);
+  calls.back().layout = AttributeLayout::of(call.mode);
   return static_cast<std::uint32_t>(calls.size() - 1);
 }
 
@@ -107,7 +108,7 @@ void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool
 
   // Attributes in the normalized vertex order, only those the call's layout has.
   const PrimitivePlan& mode = calls[call].mode;
-  const AttributeLayout layout = AttributeLayout::of(mode);
+  const AttributeLayout& layout = calls[call].layout;
   r.attributes = static_cast<std::uint32_t>(attributes.size());
   attributes.resize(attributes.size() + layout.size);
   float* out = attributes.data() + r.attributes;

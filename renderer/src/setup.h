@@ -45,13 +45,31 @@ struct Surface {
   std::uint8_t* pixel(int x, int y) const { return color + index(x, y) * static_cast<std::size_t>(channels); }
 };
 
+/// Attribute floats of a record, in this order, only those its call needs:
+///   colour: 3 x RGBA (mode.varying_color), or 1 x RGBA
+///   depth: 3 x z/w                         (mode.depth)
+///   inv_w: 3 x 1/w                         (mode.depth && mode.smooth)
+///   normal: 3 x xyz                        (mode.light_per_pixel)
+struct AttributeLayout {
+  int color = 0, depth = -1, inv_w = -1, normal = -1, size = 0;
+  static AttributeLayout of(const PrimitivePlan& mode);
+};
+
 /// What a record is drawn with: the plan's decisions for its primitive plus the constants shading needs.
 struct DrawCall {
   PrimitivePlan mode;
+  AttributeLayout layout;  ///< what its records' attributes hold (set by Setup::add_call from the mode)
   /// 3D lighting: unit world vector toward the light, and the ambient term in [0, 1].
   double to_light[3] = {0, 0, 1};
   double ambient = 0.2;
 };
+
+/// A draw call for `mode`, lighting at its defaults.
+inline DrawCall make_call(const PrimitivePlan& mode) {
+  DrawCall call;
+  call.mode = mode;
+  return call;
+}
 
 /// The three vertices of a triangle, snapped, in either winding; colours (0..255 straight RGBA) per vertex.
 /// 3D triangles also carry what the shading interpolates.
@@ -89,15 +107,6 @@ struct TriangleRecord {
   bool back_facing = false;      ///< 3D: seen from behind (per-pixel lighting flips the normal)
 };
 
-/// Attribute floats of a record, in this order, only those its call needs:
-///   colour: 3 x RGBA (mode.varying_color), or 1 x RGBA
-///   depth: 3 x z/w                         (mode.depth)
-///   inv_w: 3 x 1/w                         (mode.depth && mode.smooth)
-///   normal: 3 x xyz                        (mode.light_per_pixel)
-struct AttributeLayout {
-  int color = 0, depth = -1, inv_w = -1, normal = -1, size = 0;
-  static AttributeLayout of(const PrimitivePlan& mode);
-};
 
 /// A 1-px line between the pixels that contain its endpoints. Pixel indices are integers held exactly in
 /// doubles (|value| <= 2^128). Coverage orders the endpoints canonically, so a->b and b->a are the same.

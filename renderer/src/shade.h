@@ -86,6 +86,21 @@ inline std::int64_t floor_to_int(double x) {
   return i - (x < static_cast<double>(i));
 }
 
+/// For each 8-bit row mask, the bytes of an 8-pixel row of C channels that belong to covered pixels (0xff),
+/// padded to 32 bytes.
+template <int C>
+struct ByteMasks {
+  alignas(16) std::uint8_t mask[256][32];
+  constexpr ByteMasks() : mask{} {
+    for (int bits = 0; bits < 256; ++bits)
+      for (int i = 0; i < 8; ++i)
+        for (int c = 0; c < C; ++c) mask[bits][i * C + c] = (bits >> i) & 1 ? 0xff : 0;
+  }
+  const std::uint8_t* operator[](unsigned bits) const { return mask[bits]; }
+};
+template <int C>
+inline constexpr ByteMasks<C> kByteMasks{};
+
 /// Lambert with ambient: ambient + (1 - ambient) max(0, n . to_light) for a unit normal n. Used per face by
 /// geometry (flat lighting) and per pixel below.
 inline double lambert(double n_dot_l, double ambient) {
@@ -103,7 +118,7 @@ class TriangleShader {
                  const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
       : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
         flip_(record.back_facing ? -1.0 : 1.0) {
-    const AttributeLayout layout = AttributeLayout::of(mode_);
+    const AttributeLayout& layout = call.layout;
     depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
     inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;
     normal_at_ = layout.normal >= 0 ? attr_ + layout.normal : nullptr;
@@ -130,6 +145,28 @@ class TriangleShader {
       steep_ = steep_ || !(std::fabs(sx) < 0x1p40 && std::fabs(sy) < 0x1p40);
       slope_x_[ch] = steep_ ? 0 : floor_to_int(sx + 0.5);
       slope_y_[ch] = steep_ ? 0 : floor_to_int(sy + 0.5);
+    }
+  }
+
+  /// Every pixel of `clip` is covered; `first` is the block at the clip's block-grid origin (its mask is
+  /// all ones, its values exact). Flat opaque colour fills the rows as long runs; anything else is shaded
+  /// block by block with exactly the values the blocks would have had.
+  void rect(Rect clip, const Block& first) {
+    if (kind_ == Kind::flat && !mode_.blend) {
+      for (int y = clip.y0; y < clip.y1; ++y) fill_run(pixel(clip.x0, y), clip.x1 - clip.x0);
+      return;
+    }
+    Block b = first;
+    for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
+      const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
+      const std::uint64_t rows = coverage_detail::row_mask(r0, r1);
+      for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock) {
+        b.x0 = x0, b.y0 = y0;
+        b.mask = rows & coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+        const double bx = (x0 - first.x0) / kBlock, by = (y0 - first.y0) / kBlock;  // exact steps
+        for (int k = 0; k < 3; ++k) b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
+        (*this)(b);
+      }
     }
   }
 
@@ -168,6 +205,24 @@ class TriangleShader {
       if (!bits) continue;
       std::uint8_t* row = pixel(b.x0, b.y0 + r);
       if (!mode_.blend) {
+#if defined(__SSE2__)
+        if constexpr (C == 3 || C == 4) {
+          // Whole block rows, the covered bytes chosen by a mask: no branch per row shape to mispredict.
+          // The tile storage is whole blocks wide, so the row's other bytes are this tile's own.
+          const __m128i* m = reinterpret_cast<const __m128i*>(kByteMasks<C>[bits]);
+          __m128i* out = reinterpret_cast<__m128i*>(row);
+          const __m128i lo = _mm_loadu_si128(out), lo_m = _mm_load_si128(m);
+          _mm_storeu_si128(out, _mm_or_si128(_mm_and_si128(pattern[0], lo_m), _mm_andnot_si128(lo_m, lo)));
+          if constexpr (C == 4) {
+            const __m128i hi = _mm_loadu_si128(out + 1), hi_m = _mm_load_si128(m + 1);
+            _mm_storeu_si128(out + 1, _mm_or_si128(_mm_and_si128(pattern[1], hi_m), _mm_andnot_si128(hi_m, hi)));
+          } else {
+            const __m128i hi = _mm_loadl_epi64(out + 1), hi_m = _mm_load_si128(m + 1);
+            _mm_storel_epi64(out + 1, _mm_or_si128(_mm_and_si128(pattern[1], hi_m), _mm_andnot_si128(hi_m, hi)));
+          }
+          continue;
+        }
+#endif
         if (bits == 0xff) {
           store_row_pattern(row, pattern);
           continue;
@@ -180,6 +235,17 @@ class TriangleShader {
       }
       for (; bits; bits &= bits - 1) write(row + std::countr_zero(bits) * C, flat);
     }
+  }
+
+  // `n` pixels of the flat colour from `p` on: whole block rows from registers, the rest as a run.
+  void fill_run(std::uint8_t* p, int n) const {
+#if defined(__SSE2__)
+    const __m128i pattern[2] = {pattern_[0], pattern_[1]};
+#else
+    const int pattern[2] = {};
+#endif
+    for (; n >= kBlock; n -= kBlock, p += kBlock * C) store_row_pattern(p, pattern);
+    if (n > 0) copy_run(p, row_bytes_, n * C);
   }
 
   // A full block row of the flat colour. From registers: loading the pattern after each store would make

@@ -98,8 +98,10 @@ struct RenderPlan {
   MemoryPlan memory;
   PngPlan png;
 
-  int tile_width() const { return tile < width ? tile : width; }     ///< pixels of the widest tile
-  int tile_height() const { return tile < height ? tile : height; }  ///< pixels of the tallest tile
+  /// Pixels a side of a thread's tile storage: the widest (tallest) tile, rounded up to whole 8x8 blocks so
+  /// a block never reaches past it.
+  int tile_width() const { return tile < width ? tile : (width + 7) / 8 * 8; }
+  int tile_height() const { return tile < height ? tile : (height + 7) / 8 * 8; }
 
   /// The draw of scene primitive `index`, or nullptr when it was culled.
   const DrawPlan* draw_of(std::uint32_t index) const;
