@@ -138,153 +138,164 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& worl
   return normals;
 }
 
-}  // namespace
+/// A mesh through the camera: every vertex once (clip-space position, which clip planes it is outside of,
+/// and inside all of them its projected, snapped screen position, so a triangle that needs no clipping costs
+/// no projection), and what the triangles and lines share.
+struct MeshView {
+  const Mesh& mesh;
+  const RenderPlan& plan;
+  Planes planes;
+  Viewport viewport;
+  std::vector<Vec4> clip;
+  std::vector<std::uint8_t> outside;  ///< bit p: outside plane p; 0x40: inside but not projectable; 0x80: not finite
+  std::vector<SetupVertex> screen;    ///< valid where outside == 0
 
-void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup, StopMeter& meter) {
-  const PrimitivePlan& mode = draw.mode;
-  const ViewPlan& view = plan.view;
-  const Mat4 model_to_clip = view.world_to_clip * mesh.transform;
-  const Planes planes{1 + 2 * kGuardPx / plan.width, 1 + 2 * kGuardPx / plan.height};
-  const Viewport viewport{static_cast<double>(plan.width), static_cast<double>(plan.height)};
+  MeshView(const Mesh& m, const RenderPlan& p)
+      : mesh(m), plan(p), planes{1 + 2 * kGuardPx / p.width, 1 + 2 * kGuardPx / p.height},
+        viewport{static_cast<double>(p.width), static_cast<double>(p.height)} {}
 
-  // Per vertex, once: clip-space position, which clip planes it is outside of, and (inside all of them)
-  // its projected, snapped screen position, so a triangle that needs no clipping costs no projection.
-  const std::size_t nv = mesh.positions.size();
-  std::vector<Vec4> clip(nv);
-  std::vector<std::uint8_t> outside(nv);  // bit p: outside plane p; 0x80: not finite
-  std::vector<SetupVertex> screen(nv);
-  for (std::size_t i = 0; i < nv; ++i) {
-    if (meter.add(StopMeter::kRowWork)) return;  // deadline: a model can have millions of vertices
-    const Vec4 c = clip[i] = transform(model_to_clip, mesh.positions[i]);
-    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
-      outside[i] = 0x80;
-      continue;
+  /// False when `meter` stopped it.
+  bool project(StopMeter& meter) {
+    const Mat4 model_to_clip = plan.view.world_to_clip * mesh.transform;
+    const std::size_t nv = mesh.positions.size();
+    clip.resize(nv), outside.resize(nv), screen.resize(nv);
+    for (std::size_t i = 0; i < nv; ++i) {
+      if (meter.add(StopMeter::kRowWork)) return false;  // deadline: a model can have millions of vertices
+      const Vec4 c = clip[i] = transform(model_to_clip, mesh.positions[i]);
+      if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+        outside[i] = 0x80;
+        continue;
+      }
+      const ClipVertex v{c.x, c.y, c.z, c.w, {}};
+      std::uint8_t bits = 0;
+      for (int plane = 0; plane < kPlaneCount; ++plane) bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
+      outside[i] = bits;
+      if (bits) continue;
+      double sx, sy, depth, inv_w;
+      viewport.project(v, sx, sy, depth, inv_w);
+      if (!in_guard_band(sx, sy, inv_w)) {
+        outside[i] = 0x40;  // inside every plane yet not projectable: dropped like a clipped one would be
+        continue;
+      }
+      SetupVertex& out = screen[i];
+      out.x = snap(sx), out.y = snap(sy);
+      out.depth = static_cast<float>(depth), out.inv_w = static_cast<float>(inv_w);
     }
-    const ClipVertex v{c.x, c.y, c.z, c.w, {}};
-    std::uint8_t bits = 0;
-    for (int plane = 0; plane < kPlaneCount; ++plane) bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
-    outside[i] = bits;
-    if (bits) continue;
-    double sx, sy, depth, inv_w;
-    viewport.project(v, sx, sy, depth, inv_w);
-    if (!in_guard_band(sx, sy, inv_w)) {
-      outside[i] = 0x40;  // inside every plane yet not projectable: dropped like a clipped one would be
-      continue;
-    }
-    SetupVertex& out = screen[i];
-    out.x = snap(sx), out.y = snap(sy);
-    out.depth = static_cast<float>(depth), out.inv_w = static_cast<float>(inv_w);
+    return true;
   }
-  auto vertex_color = [&](std::uint32_t vertex) {
+
+  Rgba8 vertex_color(std::uint32_t vertex) const {
     return mesh.colors.size() == 1 ? mesh.colors[0] : mesh.colors[vertex];
-  };
-  auto color_at = [&](std::size_t triangle, std::uint32_t vertex) {
+  }
+  Rgba8 color_at(std::size_t triangle, std::uint32_t vertex) const {
     return mesh.face_colors.empty() ? vertex_color(vertex) : mesh.face_colors[triangle];
-  };
-  auto clip_vertex = [&](std::uint32_t i, Rgba8 c) {
+  }
+  ClipVertex clip_vertex(std::uint32_t i, Rgba8 c) const {
     ClipVertex v{clip[i].x, clip[i].y, clip[i].z, clip[i].w, {}};
     v.attr[0] = c.r, v.attr[1] = c.g, v.attr[2] = c.b, v.attr[3] = c.a;
     return v;
-  };
-
-  if (!mesh.wireframe && !mesh.triangles.empty()) {
-    const bool light_per_pixel = mode.light_per_pixel;
-    std::vector<Vec3> world(mesh.positions.size());
-    for (std::size_t i = 0; i < world.size(); ++i) {
-      if (meter.add(StopMeter::kRowWork)) return;
-      world[i] = transform_point(mesh.transform, mesh.positions[i]);
-    }
-    std::vector<Vec3> normals;  // world space, per position (computed) or per OBJ normal index (given)
-    const Mat4 to_world_normal = normal_matrix(mesh.transform);
-    if (light_per_pixel) {
-      if (mode.compute_normals)
-        normals = vertex_normals(mesh, world, meter);
-      else
-        for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
-    }
-    const Vec3 to_light = view.to_light;
-    const Vec3 forward = normalize(view.target - view.eye);
-    DrawCall call = make_call(mode);
-    call.to_light[0] = to_light.x, call.to_light[1] = to_light.y, call.to_light[2] = to_light.z;
-    call.ambient = view.ambient;
-    const std::uint32_t call_index = setup.add_call(call);
-    const std::size_t count = mesh.triangles.size();  // before clipping, which rarely adds any
-    setup.triangles.reserve(setup.triangles.size() + count);
-    setup.order.reserve(setup.order.size() + count);
-    setup.attributes.reserve(setup.attributes.size() + count * AttributeLayout::of(mode).size);
-
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      if (meter.add(StopMeter::kPrimitiveWork)) break;  // deadline: a mesh can be millions of triangles
-      const auto& tri = mesh.triangles[t];
-      // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
-      // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
-      const std::uint8_t any_out = outside[tri[0]] | outside[tri[1]] | outside[tri[2]];
-      if (any_out & 0x80) continue;
-      if (outside[tri[0]] & outside[tri[1]] & outside[tri[2]] & 0x3f) continue;  // all beyond one plane
-      // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
-      // front when the counter-clockwise normal points toward the eye.
-      const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
-      const Vec3 toward_eye =
-          view.projection == Projection::perspective ? view.eye - world[tri[0]] : forward * -1.0;
-      const bool back = dot(face, toward_eye) < 0;
-      if (back && mesh.cull == Cull::back) continue;
-
-      float shade = 1;
-      if (mode.lit && !light_per_pixel) {  // flat: one Lambert term per face, lit from the side seen
-        const Vec3 n = normalize(back ? face * -1.0 : face);
-        shade = static_cast<float>(lambert(dot(n, to_light), view.ambient));
-      }
-      auto normal_of = [&](int k) {
-        return mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
-      };
-      if (any_out == 0) {  // inside every plane: the vertices were projected once, above
-        SetupVertex dv[3] = {screen[tri[0]], screen[tri[1]], screen[tri[2]]};
-        for (int k = 0; k < 3; ++k) {
-          const Rgba8 c = color_at(t, tri[k]);
-          dv[k].color[0] = c.r * shade, dv[k].color[1] = c.g * shade, dv[k].color[2] = c.b * shade;
-          dv[k].color[3] = c.a;
-          if (light_per_pixel) {
-            const Vec3 n = normal_of(k);
-            dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
-            dv[k].normal[2] = static_cast<float>(n.z);
-          }
-        }
-        setup.add_triangle(call_index, dv, back);
-        continue;
-      }
-      if (any_out & 0x40) continue;
-      std::array<ClipVertex, 9> poly;
-      for (int k = 0; k < 3; ++k) {
-        poly[k] = clip_vertex(tri[k], color_at(t, tri[k]));
-        for (int c = 0; c < 3; ++c) poly[k].attr[c] *= shade;
-        if (light_per_pixel) {
-          const Vec3 n = normal_of(k);
-          poly[k].attr[4] = static_cast<float>(n.x), poly[k].attr[5] = static_cast<float>(n.y),
-          poly[k].attr[6] = static_cast<float>(n.z);
-        }
-      }
-      SetupVertex dv[9];
-      const int n = clip_polygon(poly, 3, planes);
-      bool usable = true;
-      for (int k = 0; k < n && usable; ++k) {
-        double sx, sy, depth, inv_w;
-        viewport.project(poly[k], sx, sy, depth, inv_w);
-        usable = in_guard_band(sx, sy, inv_w);
-        if (!usable) break;
-        dv[k].x = snap(sx), dv[k].y = snap(sy);
-        dv[k].depth = static_cast<float>(depth);
-        dv[k].inv_w = static_cast<float>(inv_w);
-        std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
-        std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
-      }
-      for (int k = 1; usable && k + 1 < n; ++k) setup.add_triangle(call_index, {dv[0], dv[k], dv[k + 1]}, back);
-    }
   }
+};
 
-  // Lines: the mesh's own segments, and for wireframes every triangle edge once.
+// A triangle that crosses a clip plane: clipped in homogeneous space, projected, fanned into records.
+void add_clipped(const MeshView& view, std::array<ClipVertex, 9>& poly, std::uint32_t call, bool back,
+                 Setup& setup) {
+  SetupVertex dv[9];
+  const int n = clip_polygon(poly, 3, view.planes);
+  for (int k = 0; k < n; ++k) {
+    double sx, sy, depth, inv_w;
+    view.viewport.project(poly[k], sx, sy, depth, inv_w);
+    if (!in_guard_band(sx, sy, inv_w)) return;
+    dv[k].x = snap(sx), dv[k].y = snap(sy);
+    dv[k].depth = static_cast<float>(depth);
+    dv[k].inv_w = static_cast<float>(inv_w);
+    std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
+    std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
+  }
+  for (int k = 1; k + 1 < n; ++k) setup.add_triangle(call, {dv[0], dv[k], dv[k + 1]}, back);
+}
+
+void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  const ViewPlan& camera = view.plan.view;
+  const bool light_per_pixel = mode.light_per_pixel;
+  std::vector<Vec3> world(mesh.positions.size());
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    if (meter.add(StopMeter::kRowWork)) return;
+    world[i] = transform_point(mesh.transform, mesh.positions[i]);
+  }
+  std::vector<Vec3> normals;  // world space, per position (computed) or per OBJ normal index (given)
+  if (light_per_pixel) {
+    const Mat4 to_world_normal = normal_matrix(mesh.transform);
+    if (mode.compute_normals)
+      normals = vertex_normals(mesh, world, meter);
+    else
+      for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
+  }
+  const Vec3 to_light = camera.to_light;
+  const Vec3 forward = normalize(camera.target - camera.eye);
+  DrawCall call = make_call(mode);
+  call.to_light[0] = to_light.x, call.to_light[1] = to_light.y, call.to_light[2] = to_light.z;
+  call.ambient = camera.ambient;
+  const std::uint32_t call_index = setup.add_call(call);
+  const std::size_t count = mesh.triangles.size();  // before clipping, which rarely adds any
+  setup.triangles.reserve(setup.triangles.size() + count);
+  setup.order.reserve(setup.order.size() + count);
+  setup.attributes.reserve(setup.attributes.size() + count * setup.calls[call_index].layout.size);
+
+  for (std::size_t t = 0; t < count; ++t) {
+    if (meter.add(StopMeter::kPrimitiveWork)) break;  // deadline: a mesh can be millions of triangles
+    const auto& tri = mesh.triangles[t];
+    // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
+    // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
+    const std::uint8_t any_out = view.outside[tri[0]] | view.outside[tri[1]] | view.outside[tri[2]];
+    if (any_out & 0xc0) continue;
+    if (view.outside[tri[0]] & view.outside[tri[1]] & view.outside[tri[2]]) continue;  // beyond one plane
+    // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
+    // front when the counter-clockwise normal points toward the eye.
+    const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
+    const Vec3 toward_eye =
+        camera.projection == Projection::perspective ? camera.eye - world[tri[0]] : forward * -1.0;
+    const bool back = dot(face, toward_eye) < 0;
+    if (back && mesh.cull == Cull::back) continue;
+
+    float shade = 1;
+    if (mode.lit && !light_per_pixel) {  // flat: one Lambert term per face, lit from the side seen
+      const Vec3 n = normalize(back ? face * -1.0 : face);
+      shade = static_cast<float>(lambert(dot(n, to_light), camera.ambient));
+    }
+    // The vertices' colours (lit per face) and normals, onto the projected vertices or the clip polygon.
+    SetupVertex dv[3] = {view.screen[tri[0]], view.screen[tri[1]], view.screen[tri[2]]};
+    for (int k = 0; k < 3; ++k) {
+      const Rgba8 c = view.color_at(t, tri[k]);
+      dv[k].color[0] = c.r * shade, dv[k].color[1] = c.g * shade, dv[k].color[2] = c.b * shade;
+      dv[k].color[3] = c.a;
+      if (light_per_pixel) {
+        const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
+        dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
+        dv[k].normal[2] = static_cast<float>(n.z);
+      }
+    }
+    if (any_out == 0) {  // inside every plane: the vertices were projected once
+      setup.add_triangle(call_index, dv, back);
+      continue;
+    }
+    std::array<ClipVertex, 9> poly;
+    for (int k = 0; k < 3; ++k) {
+      poly[k] = view.clip_vertex(tri[k], {});
+      std::copy(dv[k].color, dv[k].color + 4, poly[k].attr);
+      std::copy(dv[k].normal, dv[k].normal + 3, poly[k].attr + 4);
+    }
+    add_clipped(view, poly, call_index, back, setup);
+  }
+}
+
+// Lines: the mesh's own segments, and for wireframes every triangle edge once.
+void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
   std::vector<std::array<std::uint32_t, 2>> segments = mesh.segments;
   std::vector<std::array<Rgba8, 2>> segment_colors;
-  for (const auto& s : mesh.segments) segment_colors.push_back({vertex_color(s[0]), vertex_color(s[1])});
+  for (const auto& s : mesh.segments) segment_colors.push_back({view.vertex_color(s[0]), view.vertex_color(s[1])});
   if (mesh.wireframe) {
     std::vector<std::tuple<std::uint32_t, std::uint32_t, std::size_t>> edges;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -299,20 +310,20 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
       const auto [a, b, t] = edges[i];
       if (i > 0 && std::get<0>(edges[i - 1]) == a && std::get<1>(edges[i - 1]) == b) continue;
       segments.push_back({a, b});
-      segment_colors.push_back({color_at(t, a), color_at(t, b)});
+      segment_colors.push_back({view.color_at(t, a), view.color_at(t, b)});
     }
   }
   if (segments.empty()) return;
-  const std::uint32_t line_call = setup.add_call(make_call(draw.line_mode));
+  const std::uint32_t line_call = setup.add_call(make_call(line_mode));
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;
-    if ((outside[segments[s][0]] | outside[segments[s][1]]) & 0x80) continue;
-    ClipVertex a = clip_vertex(segments[s][0], segment_colors[s][0]),
-               b = clip_vertex(segments[s][1], segment_colors[s][1]);
-    if (!clip_segment(a, b, planes)) continue;
+    if ((view.outside[segments[s][0]] | view.outside[segments[s][1]]) & 0x80) continue;
+    ClipVertex a = view.clip_vertex(segments[s][0], segment_colors[s][0]),
+               b = view.clip_vertex(segments[s][1], segment_colors[s][1]);
+    if (!clip_segment(a, b, view.planes)) continue;
     double ax, ay, ad, aw, bx, by, bd, bw;
-    viewport.project(a, ax, ay, ad, aw);
-    viewport.project(b, bx, by, bd, bw);
+    view.viewport.project(a, ax, ay, ad, aw);
+    view.viewport.project(b, bx, by, bd, bw);
     if (!in_guard_band(ax, ay, aw) || !in_guard_band(bx, by, bw)) continue;
     LineRecord line;
     line.x0 = std::floor(ax), line.y0 = std::floor(ay), line.x1 = std::floor(bx), line.y1 = std::floor(by);
@@ -321,6 +332,15 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
     line.call = line_call;
     setup.add_line(line);
   }
+}
+
+}  // namespace
+
+void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup, StopMeter& meter) {
+  MeshView view(mesh, plan);
+  if (!view.project(meter)) return;
+  if (!mesh.wireframe && !mesh.triangles.empty()) add_triangles(view, draw.mode, setup, meter);
+  add_lines(view, draw.line_mode, setup, meter);
 }
 
 }  // namespace raster::detail
