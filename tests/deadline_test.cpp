@@ -27,7 +27,7 @@ raster::Scene covering_triangles(int side, int count, int samples = 1) {
 }
 
 // A clock that reads `t0` until its `expire_at`-th reading (1-based), and one hour later from then on; it
-// counts its readings. Thread-safe: every band reads it.
+// counts its readings. Thread-safe: every thread reads it.
 struct FakeClock {
   const Clock::time_point t0 = Clock::now();
   std::atomic<int> readings{0};
@@ -45,7 +45,7 @@ struct FakeClock {
   }
 };
 
-// The plan, with exactly `threads` bands (the planner would keep small work on one).
+// The plan, with exactly `threads` threads (the planner would keep small work on one).
 raster::RenderPlan plan_with_threads(const raster::Scene& scene, int threads) {
   raster::RenderPlan plan = raster::plan(scene);
   plan.threads = threads;
@@ -90,7 +90,7 @@ TEST(Deadline, OneImageSizedTriangleIsCheckedWhileItIsDrawn) {
 }
 
 // Anti-aliasing draws each sample plane and then reads them all in the resolve: both are metered, and
-// a deadline passing in the middle stops every band, whatever the thread count.
+// a deadline passing in the middle stops every thread, whatever the thread count.
 TEST(Deadline, AntialiasedRendersStopInsideAPlaneOrTheResolve) {
   const raster::Scene scene = covering_triangles(1024, 1, 16);
   for (int threads : {1, 2, 3}) {
@@ -108,7 +108,7 @@ TEST(Deadline, AntialiasedRendersStopInsideAPlaneOrTheResolve) {
       control = expiring.control();
       EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled)
           << threads << " threads, expiring at look " << expire_at;
-      // Each band stops at its next look after the first one that saw the deadline.
+      // Each thread stops at its next look after the first one that saw the deadline.
       EXPECT_LE(expiring.readings, expire_at + threads) << threads << " threads";
     }
   }

@@ -211,7 +211,7 @@ TEST(Triangle, ThousandSliceFanIsWatertight) {
     }
 }
 
-// The production rasterizer (incremental, span-solving, band-clipped) against the literal reference on
+// The production rasterizer (blocks in tiles, corner accept/reject, SIMD lanes) against the literal reference on
 // seeded random triangles of every size and position: zero mismatching pixels, colours within 1/255.
 TEST(Triangle, MatchesExactReferenceOnRandomTriangles) {
   constexpr int w = 48, h = 40;

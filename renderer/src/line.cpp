@@ -147,7 +147,7 @@ bool line_fits_int128(const LineRecord& l) {
          std::fabs(l.y1) <= kLimit;
 }
 
-// A 1-px line steps one pixel per column (or row) of its longer axis, clipped to the band first.
+// A 1-px line steps one pixel per column (or row) of its longer axis, clipped to the tile first.
 std::int64_t line_work(const LineRecord& l, Rect clip) {
   const double steps = std::max(std::fabs(l.x1 - l.x0), std::fabs(l.y1 - l.y0));  // pixels
   const double most = std::max(clip.x1 - clip.x0, clip.y1 - clip.y0);

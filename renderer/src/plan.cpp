@@ -14,9 +14,9 @@ namespace raster {
 namespace {
 
 // Below this much estimated work (bounding-box pixels touched by visible primitives; clearing is not
-// split, so it does not count) a render stays on the calling thread. bench/parallel_threshold measured two
-// bands 1.30x slower at 5.6e4 and 0.82x at 1.1e5 for smooth triangles (crossover ~8.5e4; flat fills cost
-// less per pixel, so theirs is higher); see docs/performance.md.
+// split, so it does not count) a render stays on the calling thread. bench/parallel_threshold measured, with
+// v0.1's bands, two threads 1.30x slower at 5.6e4 and 0.82x at 1.1e5 (crossover ~8.5e4). With tiles the same
+// benchmark now shows two threads at about parity up to ~5e5 (docs/performance.md): not re-tuned yet.
 constexpr std::int64_t kParallelWorkThreshold = 100'000;
 // Small scenes never leave the calling thread, whatever their estimate: no hand-off for a thumbnail.
 constexpr std::int64_t kSmallScenePixels = 256 * 256;

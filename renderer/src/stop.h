@@ -9,8 +9,8 @@
 
 namespace raster::detail {
 
-/// When a render must stop: the caller's deadline and cancel flag. `stopped` is shared by all bands so
-/// that one band's discovery stops the others at their next check.
+/// When a render must stop: the caller's deadline and cancel flag. `stopped` is shared by all threads so
+/// that one thread's discovery stops the others at their next check.
 struct Stop {
   std::chrono::steady_clock::time_point deadline;
   const std::atomic<bool>* cancel;
@@ -19,7 +19,7 @@ struct Stop {
   bool now() const;
 };
 
-/// One band's account of work done since it last asked `Stop`: a pixel written or tested is 1 unit, a row
+/// One thread's account of work done since it last asked `Stop`: a pixel written or tested is 1 unit, a row
 /// of a primitive kRowWork, a primitive kPrimitiveWork. Every kWorkPerCheck units it asks again, so the
 /// time between two checks is bounded by what ~64k pixels cost (under a millisecond with full shading),
 /// whether the work is a million small triangles or one that covers the image.
@@ -36,7 +36,7 @@ class StopMeter {
     work_ = 0;
     return stopped_ = stop_.now();
   }
-  /// Asks now, whatever the count: at the start of a band, so an expired deadline stops even a tiny render.
+  /// Asks now, whatever the count: when a thread starts, so an expired deadline stops even a tiny render.
   bool check() { return stopped_ = stop_.now(); }
   bool stopped() const { return stopped_; }
 

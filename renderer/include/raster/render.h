@@ -36,7 +36,7 @@ struct RenderControl {
   const std::atomic<bool>* cancel = nullptr;  ///< optional; true stops the render (e.g. on shutdown)
   RenderStats* stats = nullptr;               ///< optional; filled in by render()
   /// Optional; the time source for `deadline` (empty: steady_clock::now). Tests inject one to decide
-  /// when the deadline passes without depending on how fast the machine is. Called from every band's
+  /// when the deadline passes without depending on how fast the machine is. Called from every thread's
   /// thread, so it must be thread-safe.
   std::function<Clock::time_point()> clock;
 };
