@@ -11,24 +11,11 @@
 #include <vector>
 
 #include "raster/raster.h"
+#include "peer.h"
 #include "scenes.h"
 #include "timing.h"
 
 namespace {
-
-// LP_NUM_THREADS=t osmesa_peer: llvmpipe reads its thread count once per process.
-std::map<std::string, double> peer_ms(const std::string& peer, int threads, int runs) {
-  std::map<std::string, double> out;
-  const std::string command =
-      "LP_NUM_THREADS=" + std::to_string(threads) + " " + peer + " " + std::to_string(runs);
-  if (FILE* f = popen(command.c_str(), "r")) {
-    char name[32];
-    double ms = 0;
-    while (std::fscanf(f, "%31s %lf", name, &ms) == 2) out[name] = ms;
-    pclose(f);
-  }
-  return out;
-}
 
 // Pixels a scene's triangles cover, from their areas (edges shared or overlapping count twice, as they
 // are written twice).
@@ -48,7 +35,7 @@ int main(int argc, char** argv) {
   const std::string peer = argc > 2 ? argv[2] : "";
   std::map<int, std::map<std::string, double>> llvmpipe;
   if (!peer.empty())
-    for (int t : {1, 2}) llvmpipe[t] = peer_ms(peer, t, runs);
+    for (int t : {1, 2}) llvmpipe[t] = bench::peer_ms(peer, t, runs);
 
   struct Target {
     const char* kind;

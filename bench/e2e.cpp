@@ -11,28 +11,11 @@
 #include <vector>
 
 #include "raster/raster.h"
+#include "peer.h"
 #include "scenes.h"
 #include "stb_stock.h"
 #include "timing.h"
 #include "wall.h"
-
-namespace {
-
-// LP_NUM_THREADS=t osmesa_peer: llvmpipe reads its thread count once per process.
-std::map<std::string, double> peer_ms(const std::string& peer, int threads, int runs) {
-  std::map<std::string, double> out;
-  const std::string command =
-      "LP_NUM_THREADS=" + std::to_string(threads) + " " + peer + " " + std::to_string(runs);
-  if (FILE* f = popen(command.c_str(), "r")) {
-    char name[32];
-    double ms = 0;
-    while (std::fscanf(f, "%31s %lf", name, &ms) == 2) out[name] = ms;
-    pclose(f);
-  }
-  return out;
-}
-
-}  // namespace
 
 // Usage: e2e [runs] [path/to/osmesa_peer] [path/to/rasterd]. Prints a Markdown table (one row per scene and
 // thread count) and the ratios against llvmpipe + stock stb.
@@ -53,7 +36,7 @@ int main(int argc, char** argv) {
   std::map<std::string, std::map<int, Result>> results;
   std::map<int, std::map<std::string, double>> llvmpipe;
   if (!peer.empty())
-    for (int t : {1, 2}) llvmpipe[t] = peer_ms(peer, t, runs);
+    for (int t : {1, 2}) llvmpipe[t] = bench::peer_ms(peer, t, runs);
   for (const char* kind : {"small", "large", "grid"}) {
     const raster::Scene generated = bench::make_scene(kind, 1);
     const std::string json = bench::scene_json(generated);
