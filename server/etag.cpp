@@ -83,7 +83,7 @@ std::string scene_etag(const raster::Scene& scene) {
   Digest d;
   const std::string_view version = "rasterd " RASTERD_VERSION;
   d.bytes(version.data(), version.size() + 1);  // with its NUL, so it cannot run into the scene's bytes
-  d.value(scene.width), d.value(scene.height), d.value(scene.samples);
+  d.value(scene.width), d.value(scene.height), d.value(scene.samples), d.value(scene.area);
   d.bytes(&scene.background, sizeof scene.background);
   // Primitives field by field: bools and a float share the struct, and only the fields are defined bytes.
   d.value(static_cast<std::uint64_t>(scene.primitives.size()));

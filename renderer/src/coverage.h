@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <type_traits>
@@ -210,6 +212,192 @@ void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, St
       for (int k = 0; k < 3; ++k) e[k] += block_x[k];
     }
     for (int k = 0; k < 3; ++k) row_start[k] += block_y[k];
+  }
+}
+
+}  // namespace raster::detail
+
+namespace raster::detail {
+
+/// Area coverage: the share of a pixel's square inside a triangle, in (0, 1], for the pixels an edge cuts.
+/// Entry 8 r + i is pixel (x0 + i, y0 + r) of the block; only the entries of `partial`'s set bits are
+/// meaningful.
+struct AreaCover {
+  std::uint64_t partial = 0;  ///< pixels cut by an edge: some but not all of their square is inside
+  float share[64];            ///< covered share of those pixels' squares
+};
+
+namespace coverage_detail {
+
+/// The share of the unit square [0, 1]^2 where t + A (u - 1/2) + B (v - 1/2) >= 0, for a line that crosses
+/// it (|t| < (|A| + |B|) / 2). It depends only on t, p = max(|A|, |B|) and q = min(|A|, |B|): a trapezoid
+/// while the line crosses two opposite sides, a corner triangle (or its complement) beyond that.
+inline double half_plane_share(double t, double A, double B) {
+  const double p = std::max(std::fabs(A), std::fabs(B)), q = std::min(std::fabs(A), std::fabs(B));
+  const double band = (p - q) / 2;
+  if (std::fabs(t) <= band) return 0.5 + t / p;
+  const double r = (p + q) / 2 - std::fabs(t);  // distance (in E) from the far corner, in (0, q)
+  const double corner = r * r / (2 * p * q);
+  return t > 0 ? 1 - corner : corner;
+}
+
+/// The share of the unit square inside several half-planes t_k + A_k (u - 1/2) + B_k (v - 1/2) >= 0: the
+/// square clipped by each (Sutherland-Hodgman), then the shoelace area. Near a vertex, and in slivers.
+inline double clipped_share(int n, const double* t, const double* A, const double* B) {
+  double xs[2][8] = {{0, 1, 1, 0}}, ys[2][8] = {{0, 0, 1, 1}};
+  int count = 4, from = 0;
+  for (int k = 0; k < n && count > 0; ++k) {
+    const double* x = xs[from];
+    const double* y = ys[from];
+    double* ox = xs[1 - from];
+    double* oy = ys[1 - from];
+    double f[8];
+    for (int j = 0; j < count; ++j) f[j] = t[k] + A[k] * (x[j] - 0.5) + B[k] * (y[j] - 0.5);
+    int out = 0;
+    for (int j = 0; j < count; ++j) {
+      const int next = j + 1 == count ? 0 : j + 1;
+      if (f[j] >= 0) ox[out] = x[j], oy[out] = y[j], ++out;
+      if ((f[j] >= 0) != (f[next] >= 0)) {
+        const double s = f[j] / (f[j] - f[next]);
+        ox[out] = x[j] + s * (x[next] - x[j]), oy[out] = y[j] + s * (y[next] - y[j]), ++out;
+      }
+    }
+    count = out, from = 1 - from;
+  }
+  double twice = 0;
+  for (int j = 0; j < count; ++j) {
+    const int next = j + 1 == count ? 0 : j + 1;
+    twice += xs[from][j] * ys[from][next] - xs[from][next] * ys[from][j];
+  }
+  return std::fabs(twice) / 2;
+}
+
+/// The top-left bias folded into c (1 for edges that are neither top nor left, see setup.cpp): area
+/// coverage measures the triangle itself, so it adds the bias back.
+template <typename C>
+bool biased(const C& a, const C& b) {
+  return !(a > C(0) || (a == C(0) && b > C(0)));
+}
+
+}  // namespace coverage_detail
+
+/// Area coverage of `edges` over the pixels of `clip`: the same blocks as cover(), tested against the
+/// pixel squares instead of one sample point. Edge k's value at a pixel centre is t_k and it changes by
+/// h_k = 128 (|a_k| + |b_k|) toward the square's farthest corner, so a pixel lies wholly inside when
+/// t_k - h_k >= 0 for every k and touches the triangle's interior only when t_k + h_k > 0 for every k:
+/// two sets of edges offset by constants, whose masks come from the same block tests and lanes as the
+/// aliased ones. Whole pixels go to shade(block) exactly as aliased coverage would send them (and a clip
+/// wholly inside to shade.rect); cut pixels to shade.area(block, cover) with their exact share: one edge
+/// by a closed form, several by clipping the square.
+template <typename T, typename Shade>
+void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const int bx0 = clip.x0 - clip.x0 % kBlock, by0 = clip.y0 - clip.y0 % kBlock;
+  const T half_px(kSubpixelScale / 2);
+  T step_x[3], step_y[3], block_x[3], block_y[3], centre[3], inner[3], outer[3], low_extent[3], high_extent[3];
+  const T sx(std::int64_t{bx0} * kSubpixelScale + kSubpixelScale / 2),
+      sy(std::int64_t{by0} * kSubpixelScale + kSubpixelScale / 2);
+  for (int k = 0; k < 3; ++k) {
+    const T a(edges.a[k]), b(edges.b[k]);
+    step_x[k] = a * T(kSubpixelScale), step_y[k] = b * T(kSubpixelScale);
+    block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
+    const T biased_c = a * sx + b * sy + edges.c[k];  // what aliased coverage tests, for shading
+    centre[k] = biased_c + (biased(a, b) ? T(1) : T(0));
+    const T a_abs = a < T(0) ? -a : a, b_abs = b < T(0) ? -b : b;
+    const T h = (a_abs + b_abs) * half_px;
+    inner[k] = centre[k] - h;
+    outer[k] = centre[k] + h - T(1);  // >= 0 exactly when centre + h > 0
+    const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
+    low_extent[k] = std::min(ex, T(0)) + std::min(ey, T(0));
+    high_extent[k] = std::max(ex, T(0)) + std::max(ey, T(0));
+    centre[k] = biased_c;  // from here on: the biased values, stepped with the others
+  }
+  Block block;
+  block.area = to_double(edges.area);
+  double bias[3];
+  for (int k = 0; k < 3; ++k) {
+    block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
+    bias[k] = biased(edges.a[k], edges.b[k]) ? 1 : 0;
+  }
+  {  // The whole clip wholly inside: a rectangle, as aliased coverage would draw it.
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      const T first = inner[k] + step_x[k] * T(clip.x0 - bx0) + step_y[k] * T(clip.y0 - by0);
+      const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
+      inside = !(first + std::min(w, T(0)) + std::min(h, T(0)) < T(0));
+    }
+    if (inside) {
+      block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
+      for (int k = 0; k < 3; ++k) block.e[k] = to_double(centre[k]);
+      shade.rect(clip, block);
+      meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
+      return;
+    }
+  }
+  AreaCover cut;
+  for (int y0 = by0; y0 < clip.y1; y0 += kBlock) {
+    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
+    const std::uint64_t rows = row_mask(r0, r1);
+    T in[3] = {inner[0], inner[1], inner[2]}, out[3] = {outer[0], outer[1], outer[2]};
+    T e[3] = {centre[0], centre[1], centre[2]};
+    for (int x0 = bx0; x0 < clip.x1; x0 += kBlock) {
+      bool reject = false, accept = true;
+      unsigned crossing_in = 0, crossing_out = 0;
+      for (int k = 0; k < 3; ++k) {
+        reject = reject || out[k] + high_extent[k] < T(0);
+        accept = accept && !(in[k] + low_extent[k] < T(0));
+        crossing_in |= (in[k] + low_extent[k] < T(0) ? 1u : 0u) << k;
+        crossing_out |= (out[k] + low_extent[k] < T(0) ? 1u : 0u) << k;
+      }
+      if (!reject) {
+        const std::uint64_t clipped =
+            rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+        std::uint64_t whole = clipped, touched = clipped;
+        if (!accept) {
+          if constexpr (std::is_same_v<T, std::int64_t>) {
+            if (lanes == Lanes::simd) {
+              whole &= partial_mask_lanes(in, step_x, step_y, crossing_in, r0, r1);
+              touched &= partial_mask_lanes(out, step_x, step_y, crossing_out, r0, r1);
+            } else {
+              whole &= partial_mask_scalar(in, step_x, step_y, r0, r1);
+              touched &= partial_mask_scalar(out, step_x, step_y, r0, r1);
+            }
+          } else {
+            whole &= partial_mask_scalar(in, step_x, step_y, r0, r1);
+            touched &= partial_mask_scalar(out, step_x, step_y, r0, r1);
+          }
+        }
+        block.x0 = x0, block.y0 = y0;
+        for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k]);
+        if (whole) {
+          block.mask = whole;
+          shade(block);
+        }
+        cut.partial = 0;
+        for (std::uint64_t m = touched & ~whole; m; m &= m - 1) {
+          const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+          double t[3], A[3], B[3];
+          int n = 0;
+          for (int k = 0; k < 3; ++k) {
+            const double value = block.e[k] + bias[k] + i * block.dx[k] + r * block.dy[k];
+            if (value >= 0.5 * (std::fabs(block.dx[k]) + std::fabs(block.dy[k]))) continue;  // wholly inside
+            t[n] = value, A[n] = block.dx[k], B[n] = block.dy[k], ++n;
+          }
+          const double share = n == 1 ? half_plane_share(t[0], A[0], B[0]) : clipped_share(n, t, A, B);
+          if (!(share > 0)) continue;  // touches only where two edges meet outside the square
+          cut.share[bit] = static_cast<float>(std::min(share, 1.0));
+          cut.partial |= std::uint64_t{1} << bit;
+        }
+        if (cut.partial) {
+          block.mask = cut.partial;
+          shade.area(block, cut);
+        }
+        if (meter.add(kBlock * kBlock)) return;
+      }
+      for (int k = 0; k < 3; ++k) in[k] += block_x[k], out[k] += block_x[k], e[k] += block_x[k];
+    }
+    for (int k = 0; k < 3; ++k) inner[k] += block_y[k], outer[k] += block_y[k], centre[k] += block_y[k];
   }
 }
 

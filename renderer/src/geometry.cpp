@@ -79,8 +79,10 @@ Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) 
       add_mesh(scene.meshes[prim.mesh], draw, plan, setup, meter);
       continue;
     }
-    // Consecutive primitives drawn the same way share one call.
-    if (setup.calls.empty() || !(setup.calls.back().mode == draw.mode)) setup.add_call(make_call(draw.mode));
+    // Consecutive primitives drawn the same way share one call; a union-coverage primitive has its own,
+    // which is how the tiles know where its accumulation ends.
+    if (setup.calls.empty() || !(setup.calls.back().mode == draw.mode) || draw.mode.union_coverage)
+      setup.add_call(make_call(draw.mode));
     const auto call = static_cast<std::uint32_t>(setup.calls.size() - 1);
     if (prim.kind == PrimitiveKind::triangle && prim.fill)
       add_triangle(scene, prim, call, setup);

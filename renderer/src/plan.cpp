@@ -24,6 +24,8 @@ constexpr std::size_t kSmallScenePrimitives = 100;
 // Tile side for images larger than a thumbnail (bench/core measures 32, 64 and 128; see
 // docs/performance.md).
 constexpr int kTile = 64;
+// "antialias": "area" on a scene with 3D content: multisampling at this many samples (docs/accuracy.md).
+constexpr int kAreaFallbackSamples = 8;
 
 struct Box {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -172,7 +174,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   const bool alpha = !scene.background.is_opaque();  // drawing over an opaque background stays opaque
   std::int64_t work = 0;
 
-  bool any_3d = false;
+  bool any_3d = false, any_union = false;
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& prim = scene.primitives[i];
     DrawPlan draw;
@@ -214,7 +216,9 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       continue;
     }
     const bool filled = prim.kind == PrimitiveKind::triangle && prim.fill;
-    pp.line_rectangles = !filled && (scene.samples > 1 || prim.width != 1);
+    pp.line_rectangles = !filled && (scene.samples > 1 || scene.area || prim.width != 1);
+    pp.union_coverage = pp.line_rectangles && scene.area;
+    any_union |= pp.union_coverage;
     Box b = bounds(scene, prim);
     if (!filled) {  // a wide line reaches half its width beyond its points
       const double pad = prim.width * 0.5;
@@ -246,8 +250,12 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   out.format = grey ? (alpha ? PixelFormat::grey_alpha8 : PixelFormat::grey8)
                     : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
   out.memory.color_bytes = image_pixels * channel_count(out.format);
-  out.samples = scene.samples;
-  if (out.samples > 1) out.memory.sample_bytes = image_pixels * out.samples * channel_count(out.format);
+  // "area" is exact for 2D shapes composited one after another; with depth the share of a pixel each
+  // triangle covers is not what is visible (and abutting mesh triangles would seam), so 3D gets samples.
+  out.area = scene.area && !any_3d;
+  out.samples = scene.area && any_3d ? kAreaFallbackSamples : scene.samples;
+  if (scene.area && any_3d)
+    for (DrawPlan& d : out.draws) d.mode.union_coverage = false, any_union = false;
   if (any_3d) {
     out.depth_buffer = true;
     out.view = resolve_view(scene, static_cast<double>(scene.width) / scene.height);
@@ -268,7 +276,13 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   // (the only depth buffer there is). Counted against the limit like the rest; small next to the image.
   const std::int64_t tile_pixels = std::int64_t{out.tile_width()} * out.tile_height();
   out.memory.tile_bytes = out.threads * tile_pixels * channel_count(out.format);
-  out.memory.depth_bytes = any_3d ? out.threads * tile_pixels * static_cast<std::int64_t>(sizeof(float)) : 0;
+  out.memory.depth_bytes =
+      any_3d ? out.threads * tile_pixels * out.samples * static_cast<std::int64_t>(sizeof(float)) : 0;
+  // Multisampling: a colour per sample, used only where a pixel's samples differ (one bit a pixel says so).
+  if (out.samples > 1)
+    out.memory.sample_bytes = out.threads * tile_pixels * (out.samples * channel_count(out.format)) +
+                              out.threads * tile_pixels / 8;
+  if (any_union) out.memory.coverage_bytes = out.threads * tile_pixels * 5 * std::int64_t{sizeof(float)};
   if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +
@@ -310,6 +324,7 @@ std::string explain_json(const RenderPlan& p) {
   j["channels"] = channel_count(p.format);
   j["depth_buffer"] = p.depth_buffer;
   j["samples"] = p.samples;
+  j["antialias"] = p.area ? "area" : p.samples > 1 ? "multisample" : "none";
   j["primitives"] = {{"flat", p.flat_count},   {"smooth", p.smooth_count},
                      {"blend", p.blend_count}, {"culled", p.culled_count},
                      {"lit", p.lit_count},     {"triangles_3d", p.triangles_3d}};
@@ -331,6 +346,7 @@ std::string explain_json(const RenderPlan& p) {
                        {"depth", p.memory.depth_bytes},
                        {"samples", p.memory.sample_bytes},
                        {"tiles", p.memory.tile_bytes},
+                       {"coverage", p.memory.coverage_bytes},
                        {"total", p.memory.total()}};
   j["png"] = {{"color_type", p.png.color_type}, {"deflate_level", p.png.deflate_level}};
   return j.dump(2);
@@ -338,7 +354,7 @@ std::string explain_json(const RenderPlan& p) {
 
 std::string explain_line(const RenderPlan& p) {
   return std::string(format_name(p.format)) + " depth=" + (p.depth_buffer ? "f32" : "none") +
-         " samples=" + std::to_string(p.samples) + " flat=" + std::to_string(p.flat_count) +
+         " samples=" + (p.area ? std::string("area") : std::to_string(p.samples)) + " flat=" + std::to_string(p.flat_count) +
          " smooth=" + std::to_string(p.smooth_count) + " blend=" + std::to_string(p.blend_count) +
          " culled=" + std::to_string(p.culled_count) +
          (p.lit_count ? " lit=" + std::to_string(p.lit_count) : "") + " threads=" + std::to_string(p.threads);

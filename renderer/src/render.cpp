@@ -32,15 +32,22 @@ struct Frame {
   std::vector<Image>& planes;  // one per sample when anti-aliased, else empty
 };
 
-/// One thread's tile storage (RenderPlan::memory.tile_bytes): the tile's colour, and depth for 3D.
+/// One thread's tile storage (RenderPlan::memory): the tile's colour, depth for 3D, and the accumulation
+/// of union-coverage primitives for area coverage.
 struct Scratch {
   std::vector<std::uint8_t> color;
   std::vector<float> depth;
+  std::vector<float> coverage;
 };
+
+/// How a triangle's pixels are covered: at one sample point per pixel (aliased and each sample pass), or
+/// by the share of the pixel's square (area).
+enum class Coverage : std::uint8_t { sample, area };
 
 template <int C>
 void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, const detail::Surface& surface,
-                   Rect clip, detail::SamplePoint sample, detail::Lanes lanes, detail::StopMeter& meter) {
+                   Rect clip, Coverage coverage, detail::SamplePoint sample, detail::Lanes lanes,
+                   detail::StopMeter& meter) {
   const float* attributes = setup.attributes.data() + t.attributes;
   if (t.wide != detail::TriangleRecord::kFast) {
     const detail::Edges<detail::Wide>& e = setup.wide_edges[t.wide];
@@ -48,7 +55,10 @@ void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, 
     const double dx[3] = {(e.a[0] * scale).to_double(), (e.a[1] * scale).to_double(), (e.a[2] * scale).to_double()};
     const double dy[3] = {(e.b[0] * scale).to_double(), (e.b[1] * scale).to_double(), (e.b[2] * scale).to_double()};
     detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, e.area.to_double());
-    detail::cover(e, clip, sample, lanes, meter, shader);
+    if (coverage == Coverage::area)
+      detail::cover_area(e, clip, lanes, meter, shader);
+    else
+      detail::cover(e, clip, sample, lanes, meter, shader);
   } else {
     const detail::Edges<std::int64_t>& e = t.edges;
     const double dx[3] = {double(e.a[0] * detail::kSubpixelScale), double(e.a[1] * detail::kSubpixelScale),
@@ -56,7 +66,10 @@ void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, 
     const double dy[3] = {double(e.b[0] * detail::kSubpixelScale), double(e.b[1] * detail::kSubpixelScale),
                           double(e.b[2] * detail::kSubpixelScale)};
     detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, double(e.area));
-    detail::cover(e, clip, sample, lanes, meter, shader);
+    if (coverage == Coverage::area)
+      detail::cover_area(e, clip, lanes, meter, shader);
+    else
+      detail::cover(e, clip, sample, lanes, meter, shader);
   }
 }
 
@@ -93,12 +106,23 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
               detail::StopMeter& meter) {
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::Lanes lanes = f.plan.scalar_coverage ? detail::Lanes::scalar : detail::Lanes::simd;
+  const Coverage coverage = f.plan.area ? Coverage::area : Coverage::sample;
+  // A union-coverage primitive (its own draw call) accumulates over its consecutive records, and is
+  // composited over the pixels they reached when the next record belongs to another call.
+  constexpr std::uint32_t kNone = ~0u;
+  std::uint32_t open = kNone;
+  Rect reached;
+  auto close = [&] {
+    if (open != kNone) detail::composite_union<C>(surface, reached);
+    open = kNone;
+  };
   const std::uint32_t end = f.bins.offsets[tile + 1];
   for (std::uint32_t i = f.bins.offsets[tile]; i < end; ++i) {
     if (meter.add(detail::StopMeter::kPrimitiveWork)) return;
     prefetch(f.setup, f.bins, i, end);
     const std::uint32_t ref = f.bins.records[i].value;
     if (ref & detail::RecordRef::kLineBit) {
+      close();
       const detail::LineRecord& line = f.setup.lines[ref & ~detail::RecordRef::kLineBit];
       detail::draw_line(line, f.setup.calls[line.call].mode, surface, rect, meter);
       continue;
@@ -106,8 +130,16 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
     const detail::TriangleRecord& t = f.setup.triangles[ref];
     const Rect clip{std::max(rect.x0, t.box.x0), std::max(rect.y0, t.box.y0), std::min(rect.x1, t.box.x1),
                     std::min(rect.y1, t.box.y1)};
-    draw_triangle<C>(f.setup, t, surface, clip, sample, lanes, meter);
+    if (t.call != open) {
+      close();
+      if (surface.coverage && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
+    } else {
+      reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0), std::max(reached.x1, clip.x1),
+                 std::max(reached.y1, clip.y1)};
+    }
+    draw_triangle<C>(f.setup, t, surface, clip, coverage, sample, lanes, meter);
   }
+  close();
 }
 
 // Draws one tile: per sample position, its bin into the thread's tile storage (filled from the target,
@@ -120,6 +152,7 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
   // Rows of the storage are whole blocks wide: a block at the image's right edge stays in its own row.
   const int stride = (w + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
   const detail::Surface surface{scratch.color.data(), scratch.depth.empty() ? nullptr : scratch.depth.data(),
+                                scratch.coverage.empty() ? nullptr : scratch.coverage.data(),
                                 stride, rect.x0, rect.y0, c};
   for (std::size_t s = 0; s < pattern.size(); ++s) {
     Image& target = f.planes.empty() ? f.image : f.planes[s];
@@ -188,12 +221,13 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   for (Scratch& t : scratch) {
     t.color.resize(tile_pixels * image.channels());
     if (plan.depth_buffer) t.depth.resize(tile_pixels);
+    if (plan.memory.coverage_bytes) t.coverage.resize(tile_pixels * detail::kUnionFloats);
   }
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
     for (const Image& p : planes) bytes += static_cast<std::int64_t>(p.pixels.size());
     for (const Scratch& t : scratch)
-      bytes += static_cast<std::int64_t>(t.color.size() + t.depth.size() * sizeof(float));
+      bytes += static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float));
     control.stats->pixel_bytes = bytes;
     control.stats->bin_bytes = static_cast<std::int64_t>(bins.records.size() * sizeof(detail::RecordRef) +
                                                          bins.offsets.size() * sizeof(std::uint32_t));

@@ -36,6 +36,7 @@ struct Rect {
 struct Surface {
   std::uint8_t* color = nullptr;  ///< channels per pixel as the image's format
   float* depth = nullptr;         ///< z / w (reversed: larger is nearer), or nullptr without 3D
+  float* coverage = nullptr;      ///< area coverage of union primitives: kUnionFloats (shade.h) a pixel
   int width = 0;                  ///< pixels per row of both
   int x0 = 0, y0 = 0;             ///< image coordinates of the first pixel
   int channels = 3;

@@ -80,6 +80,54 @@ inline void blend(std::uint8_t* px, Rgba8 c) {
   }
 }
 
+/// Source-over of `c` at opacity `w` in [0, 1] (a covered share times the colour's own alpha / 255), rounded
+/// to nearest: how area coverage composites a cut pixel.
+template <int C>
+inline void blend_weighted(std::uint8_t* px, Rgba8 c, float w) {
+  if constexpr (C == 1 || C == 3) {
+    // d + (s - d) w lies between s and d, so adding 0.5 and truncating rounds without leaving 0..255.
+    auto mix = [&](std::uint8_t s, std::uint8_t d) {
+      return static_cast<std::uint8_t>(static_cast<float>(d) + static_cast<float>(s - d) * w + 0.5f);
+    };
+    px[0] = mix(c.r, px[0]);
+    if constexpr (C == 3) px[1] = mix(c.g, px[1]), px[2] = mix(c.b, px[2]);
+  } else {
+    constexpr int alpha_index = C - 1;
+    const float da = px[alpha_index] / 255.0f, keep = da * (1 - w), oa = w + keep;
+    if (!(oa > 0)) {
+      store<C>(px, Rgba8{0, 0, 0, 0});
+      return;
+    }
+    auto mix = [&](std::uint8_t s, std::uint8_t d) {
+      return static_cast<std::uint8_t>((static_cast<float>(s) * w + static_cast<float>(d) * keep) / oa + 0.5f);
+    };
+    px[0] = mix(c.r, px[0]);
+    if constexpr (C == 4) px[1] = mix(c.g, px[1]), px[2] = mix(c.b, px[2]);
+    px[alpha_index] = static_cast<std::uint8_t>(oa * 255 + 0.5f);
+  }
+}
+
+/// Floats a pixel of a union-coverage tile holds (Surface::coverage): the summed share, then the sums of
+/// share x R, G, B, A (0..255 scale).
+inline constexpr int kUnionFloats = 5;
+
+/// Composites the primitive accumulated in `surface.coverage` over `rect`: each pixel with a share takes the
+/// share-weighted mean colour at opacity min(1, summed share) x alpha; the accumulation is cleared for the
+/// next primitive.
+template <int C>
+void composite_union(const Surface& surface, Rect rect) {
+  for (int y = rect.y0; y < rect.y1; ++y)
+    for (int x = rect.x0; x < rect.x1; ++x) {
+      float* acc = surface.coverage + surface.index(x, y) * kUnionFloats;
+      const float share = acc[0];
+      if (!(share > 0)) continue;
+      auto channel = [&](int k) { return static_cast<std::uint8_t>(std::min(255.0f, acc[1 + k] / share + 0.5f)); };
+      const Rgba8 c{channel(0), channel(1), channel(2), channel(3)};
+      blend_weighted<C>(surface.pixel(x, y), c, std::min(share, 1.0f) * (c.a / 255.0f));
+      std::fill_n(acc, kUnionFloats, 0.0f);
+    }
+}
+
 /// floor(x) for |x| < 2^62, without a library call.
 inline std::int64_t floor_to_int(double x) {
   const auto i = static_cast<std::int64_t>(x);  // toward zero
@@ -117,7 +165,7 @@ class TriangleShader {
   TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
                  const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
       : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
-        flip_(record.back_facing ? -1.0 : 1.0) {
+        flip_(record.back_facing ? -1.0 : 1.0), union_(call.mode.union_coverage && surface.coverage) {
     const AttributeLayout& layout = call.layout;
     depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
     inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;
@@ -152,7 +200,7 @@ class TriangleShader {
   /// all ones, its values exact). Flat opaque colour fills the rows as long runs; anything else is shaded
   /// block by block with exactly the values the blocks would have had.
   void rect(Rect clip, const Block& first) {
-    if (kind_ == Kind::flat && !mode_.blend) {
+    if (kind_ == Kind::flat && !mode_.blend && !union_) {
       for (int y = clip.y0; y < clip.y1; ++y) fill_run(pixel(clip.x0, y), clip.x1 - clip.x0);
       return;
     }
@@ -171,6 +219,7 @@ class TriangleShader {
   }
 
   void operator()(const Block& b) {
+    if (union_) return accumulate(b, nullptr);
     switch (kind_) {
       case Kind::flat:
         return shade_flat(b);
@@ -181,8 +230,44 @@ class TriangleShader {
     }
   }
 
+  /// Area coverage: the pixels of `b.mask` are cut by an edge; each takes its colour at the pixel centre
+  /// at opacity share x alpha (or, for a union, adds its share to the primitive's accumulation).
+  void area(const Block& b, const AreaCover& cut) {
+    if (union_) return accumulate(b, cut.share);
+    for (std::uint64_t m = b.mask; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const Rgba8 c = color_at(b, i, r);
+      blend_weighted<C>(pixel(b.x0 + i, b.y0 + r), c, cut.share[bit] * (c.a / 255.0f));
+    }
+  }
+
  private:
   std::uint8_t* pixel(int x, int y) const { return surface_.color + surface_.index(x, y) * C; }
+
+  // The colour at a pixel's centre, from the exact edge values; smooth colours clamp to the vertices' range
+  // (a cut pixel's centre may lie outside the triangle).
+  Rgba8 color_at(const Block& b, int i, int r) const {
+    if (kind_ != Kind::smooth) return flat_;
+    double e[3];
+    for (int k = 0; k < 3; ++k) e[k] = b.e[k] + i * b.dx[k] + r * b.dy[k];
+    std::uint8_t out[4];
+    for (int ch = 0; ch < 4; ++ch) {
+      const double v = (e[0] * attr_[ch] + e[1] * attr_[4 + ch] + e[2] * attr_[8 + ch]) / b.area;
+      out[ch] = to_byte(std::clamp(v, lo_[ch], hi_[ch]));
+    }
+    return {out[0], out[1], out[2], out[3]};
+  }
+
+  // Union coverage: adds share (1 for whole pixels, `shares` for cut ones) and share x colour per pixel.
+  void accumulate(const Block& b, const float* shares) const {
+    for (std::uint64_t m = b.mask; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const Rgba8 c = color_at(b, i, r);
+      const float share = shares ? shares[bit] : 1.0f;
+      float* acc = surface_.coverage + surface_.index(b.x0 + i, b.y0 + r) * kUnionFloats;
+      acc[0] += share, acc[1] += share * c.r, acc[2] += share * c.g, acc[3] += share * c.b, acc[4] += share * c.a;
+    }
+  }
 
   void write(std::uint8_t* p, Rgba8 c) const {
     if (mode_.blend)
@@ -526,6 +611,7 @@ class TriangleShader {
   const float* attr_;
   const Surface& surface_;
   const double flip_;  // two-sided lighting: a back face is lit from the side seen
+  const bool union_;   // area coverage of a multi-triangle primitive: accumulated, composited at its end
   const float* depth_at_ = nullptr;
   const float* inv_w_at_ = nullptr;
   const float* normal_at_ = nullptr;

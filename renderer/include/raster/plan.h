@@ -25,6 +25,10 @@ struct PrimitivePlan {
       false;  ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
   bool line_rectangles =
       false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
+  /// Area coverage: the primitive's triangles (a line's two, a polyline's segments) add up their coverage
+  /// of each pixel, at most 1, and the primitive is composited once: no seam along a rectangle's diagonal,
+  /// no darker joints where translucent segments overlap.
+  bool union_coverage = false;
   friend bool operator==(const PrimitivePlan&, const PrimitivePlan&) = default;
 };
 
@@ -53,10 +57,13 @@ struct ViewPlan {
 /// Bytes of pixel storage each buffer will take; checked against the limits before allocation.
 struct MemoryPlan {
   std::int64_t color_bytes = 0;   ///< the colour buffer, which is also the output Image
-  std::int64_t depth_bytes = 0;   ///< depth: one tile's per thread (4 bytes a pixel); 0 for 2D scenes
-  std::int64_t sample_bytes = 0;  ///< multisample colour planes; 0 unless antialias > 1
+  std::int64_t depth_bytes = 0;   ///< depth: one tile's per thread (4 bytes a sample); 0 for 2D scenes
+  std::int64_t sample_bytes = 0;  ///< multisampling: each thread's tile of colour per sample, plus a bit per
+                                  ///< pixel saying whether its samples differ; 0 unless antialias > 1
   std::int64_t tile_bytes = 0;    ///< each thread's tile of colour, where a tile is drawn before it is copied out
-  std::int64_t total() const { return color_bytes + depth_bytes + sample_bytes + tile_bytes; }
+  std::int64_t coverage_bytes = 0;  ///< area coverage: each thread's tile of summed coverage and colour (5
+                                    ///< floats a pixel), when some primitive has union_coverage; else 0
+  std::int64_t total() const { return color_bytes + depth_bytes + sample_bytes + tile_bytes + coverage_bytes; }
 };
 
 /// PNG settings: the colour type follows the pixel format (0 grey, 4 grey+alpha, 2 RGB, 6 RGBA). Rows are
@@ -76,7 +83,8 @@ struct RenderPlan {
   int height = 0;                          ///< pixels
   PixelFormat format = PixelFormat::rgb8;  ///< fewest channels that hold every colour the render can make
   bool depth_buffer = false;               ///< only 3D content needs one; 2D never does
-  int samples = 1;                         ///< per pixel; 1 = aliased, no sample storage
+  int samples = 1;                         ///< per pixel; 1 = aliased or area, no sample storage
+  bool area = false;  ///< exact area coverage (2D scenes with "antialias": "area"); samples is then 1
   std::vector<DrawPlan> draws;             ///< the visible primitives, in scene order
 
   // Counts of the per-primitive decisions, for the explain output and the X-Render-Plan header.

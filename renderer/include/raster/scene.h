@@ -118,7 +118,9 @@ struct Scene {
   std::vector<Mesh> meshes;           ///< 3D content, referenced by mesh primitives
   Camera camera;                      ///< used only when the scene has 3D content
   Light light;
-  int samples = 1;  ///< "antialias": samples per pixel, 1 (aliased), 4, 8 or 16
+  int samples = 1;    ///< "antialias" as a number: samples per pixel, 1 (aliased), 4, 8 or 16
+  bool area = false;  ///< "antialias": "area": every pixel takes the exact share of its square each shape
+                      ///< covers (samples stays 1); 3D content gets multisampling instead (see the plan)
   /// Field by field; the two scene readers are tested to agree by it.
   friend bool operator==(const Scene&, const Scene&) = default;
 
