@@ -1,13 +1,16 @@
-// Anti-aliasing: sample planes at the standard positions, resolved once; and the plan's memory accounting
+// Anti-aliasing: multisampling at the standard positions (coverage per sample, shading once per pixel, one
+// resolve per tile), checked against the literal reference per sample; and the plan's memory accounting
 // for every scene class, checked against what a render actually allocates.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "coverage.h"
+#include "reference.h"
 #include "support.h"
 
 namespace {
@@ -310,11 +313,12 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
     EXPECT_EQ(plan.samples, c.samples) << c.name;
     const std::int64_t pixels = static_cast<std::int64_t>(scene.width) * scene.height;
     EXPECT_EQ(plan.memory.color_bytes, pixels * raster::channel_count(c.format)) << c.name;
-    // Depth lives in each thread's tile (3D only); sample planes are colour only.
+    // Depth lives in each thread's tile (3D only), one value per sample; multisampling keeps a tile of colour
+    // per sample and a bit per pixel, per thread: nothing the size of the image.
     const std::int64_t tile = std::int64_t{plan.threads} * plan.tile_width() * plan.tile_height();
-    EXPECT_EQ(plan.memory.depth_bytes, c.depth ? tile * 4 : 0) << c.name;
+    EXPECT_EQ(plan.memory.depth_bytes, c.depth ? tile * 4 * c.samples : 0) << c.name;
     EXPECT_EQ(plan.memory.tile_bytes, tile * raster::channel_count(c.format)) << c.name;
-    EXPECT_EQ(plan.memory.sample_bytes, c.samples > 1 ? pixels * c.samples * raster::channel_count(c.format) : 0)
+    EXPECT_EQ(plan.memory.sample_bytes, c.samples > 1 ? tile * c.samples * raster::channel_count(c.format) + tile / 8 : 0)
         << c.name;
     raster::RenderStats stats;
     raster::RenderControl control;
@@ -324,6 +328,91 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
     EXPECT_EQ(test::decode_png(raster::encode_png(img, plan.png)).channels, raster::channel_count(c.format))
         << c.name;
   }
+}
+
+}  // namespace
+
+namespace {
+
+using raster::Point2;
+
+// Multisampling against the literal reference at each sample position: a sample at (x + ox/256, y +
+// oy/256) is inside a triangle exactly when the pixel centre is inside the triangle moved by
+// ((128 - ox) / 256, (128 - oy) / 256), an exact move on the 1/256 grid that keeps the top-left rule. So
+// every resolved pixel is round(255 k / N) for the k samples the rule covers, and each pixel with any
+// covered sample is shaded once, not once per sample.
+TEST(Multisample, EverySampleFollowsTheRuleAndEachPixelIsShadedOnce) {
+  std::mt19937 rng(1414);
+  std::uniform_real_distribution<double> at(-4, 52), d(-30, 30);
+  constexpr int kSide = 48;
+  for (int samples : {4, 8, 16}) {
+    const auto& pattern = raster::detail::sample_pattern(samples);
+    for (int n = 0; n < 12; ++n) {
+      const Point2 a{at(rng), at(rng)}, b{a.x + d(rng), a.y + d(rng)}, c{a.x + d(rng), a.y + d(rng)};
+      std::vector<int> count(kSide * kSide, 0);
+      for (const auto& s : pattern) {
+        const double mx = (128 - s.x) / 256.0, my = (128 - s.y) / 256.0;
+        const ref::Coverage cov = ref::triangle(a.x + mx, a.y + my, b.x + mx, b.y + my, c.x + mx, c.y + my, kSide, kSide);
+        for (int i = 0; i < kSide * kSide; ++i) count[i] += cov.mask[i];
+      }
+      test::SceneBuilder flat(kSide, kSide, kBlack);
+      flat.triangle(a, b, c, test::kWhite);
+      flat.scene.samples = samples;
+      const raster::Image img = test::render(flat.scene);
+      int touched = 0;
+      for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) {
+          const int k = count[y * kSide + x];
+          touched += k > 0;
+          ASSERT_EQ(test::pixel(img, x, y).r, (255 * k + samples / 2) / samples)
+              << samples << " samples, triangle " << n << ", pixel " << x << "," << y << ": " << k << " inside";
+        }
+      // The same triangle with three vertex colours: shaded once per pixel it touches.
+      test::SceneBuilder smooth(kSide, kSide, kBlack);
+      smooth.triangle(a, b, c, test::kRed, test::kGreen, test::kBlue);
+      smooth.scene.samples = samples;
+      raster::RenderStats stats;
+      raster::RenderControl control;
+      control.stats = &stats;
+      raster::render(smooth.scene, raster::plan(smooth.scene), control);
+      EXPECT_EQ(stats.shaded_pixels, touched) << samples << " samples, triangle " << n;
+    }
+  }
+}
+
+// 3D: depth per sample, and the mesh shaded once per pixel per triangle it is seen through.
+TEST(Multisample, MeshesAreShadedOncePerPixelPerVisibleTriangle) {
+  const raster::Scene scene = raster::parse_scene(R"({"width": 64, "height": 64, "antialias": 16, "primitives": [
+      {"type": "mesh", "positions": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]], "indices": [[0, 1, 2]],
+       "colors": ["#ff0000", "#00ff00", "#0000ff"], "shading": "unlit"}]})");
+  raster::RenderStats stats;
+  raster::RenderControl control;
+  control.stats = &stats;
+  const raster::Image img = raster::render(scene, raster::plan(scene), control);
+  EXPECT_EQ(stats.shaded_pixels, test::count_not(img, kBlack));
+  EXPECT_GT(stats.shaded_pixels, 500);
+}
+
+}  // namespace
+
+namespace {
+
+// 3D lines and wireframes are anti-aliased too: multisampled, they are rectangles a pixel wide with
+// depth, so their edges take intermediate values where aliased ones are only the line or the background.
+TEST(Multisample, WireframesAreAntialiased) {
+  auto levels = [](int samples) {
+    const std::string text = R"({"width": 96, "height": 96, "background": "#ffffff", "antialias": )" +
+                             std::to_string(samples) + R"(, "primitives": [{"type": "mesh", "wireframe": true,
+        "color": "#000000", "positions": [[-1, -1, 0], [1, -1, 0], [0.3, 1, 0]], "indices": [[0, 1, 2]],
+        "transform": {"rotate": [20, 30, 0]}}]})";
+    const raster::Image img = test::render(raster::parse_scene(text));
+    std::set<int> seen;
+    for (int y = 0; y < 96; ++y)
+      for (int x = 0; x < 96; ++x) seen.insert(test::pixel(img, x, y).r);
+    return seen.size();
+  };
+  EXPECT_EQ(levels(1), 2u);
+  EXPECT_GT(levels(8), 6u);
 }
 
 }  // namespace

@@ -19,12 +19,6 @@
 
 namespace raster::detail {
 
-/// Where in each pixel coverage is tested: 1/256 px from the pixel's top-left corner; (128, 128) is the
-/// centre. Anti-aliasing draws each tile once per sample position of the standard patterns.
-struct SamplePoint {
-  std::int32_t x = 128, y = 128;
-};
-
 /// The standard (Direct3D) sample patterns for 1, 4, 8 and 16 samples, on the 1/256 px grid.
 const std::vector<SamplePoint>& sample_pattern(int samples);
 
@@ -398,6 +392,107 @@ void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter,
       for (int k = 0; k < 3; ++k) in[k] += block_x[k], out[k] += block_x[k], e[k] += block_x[k];
     }
     for (int k = 0; k < 3; ++k) inner[k] += block_y[k], outer[k] += block_y[k], centre[k] += block_y[k];
+  }
+}
+
+}  // namespace raster::detail
+
+namespace raster::detail {
+
+/// Multisampled coverage of `edges` over the pixels of `clip`: per block, a mask for each of the
+/// `count` sample positions of `pattern`, from the same corner tests and lanes as cover(). Blocks whose
+/// every sample is inside go to shade(block) (all samples covered), a clip wholly inside to shade.rect;
+/// others to shade.samples(block, masks), block.mask being the pixels with any sample covered. The edge
+/// values in a Block are at the pixel centres (where shading is evaluated), whatever the pattern.
+template <typename T, typename Shade>
+void cover_samples(const Edges<T>& edges, Rect clip, const SamplePoint* pattern, int count, Lanes lanes,
+                   StopMeter& meter, Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const int bx0 = clip.x0 - clip.x0 % kBlock, by0 = clip.y0 - clip.y0 % kBlock;
+  T step_x[3], step_y[3], block_x[3], block_y[3], corner[3], low_extent[3], high_extent[3];
+  T offset[16][3], least[3], most[3], centre[3];  // E's change from a pixel's corner to each sample
+  const T sx(std::int64_t{bx0} * kSubpixelScale), sy(std::int64_t{by0} * kSubpixelScale);
+  for (int k = 0; k < 3; ++k) {
+    const T a(edges.a[k]), b(edges.b[k]);
+    step_x[k] = a * T(kSubpixelScale), step_y[k] = b * T(kSubpixelScale);
+    block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
+    corner[k] = a * sx + b * sy + edges.c[k];
+    for (int s = 0; s < count; ++s) {
+      offset[s][k] = a * T(pattern[s].x) + b * T(pattern[s].y);
+      least[k] = s == 0 ? offset[s][k] : std::min(least[k], offset[s][k]);
+      most[k] = s == 0 ? offset[s][k] : std::max(most[k], offset[s][k]);
+    }
+    centre[k] = (a + b) * T(kSubpixelScale / 2);
+    const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
+    low_extent[k] = std::min(ex, T(0)) + std::min(ey, T(0)) + least[k];
+    high_extent[k] = std::max(ex, T(0)) + std::max(ey, T(0)) + most[k];
+  }
+  Block block;
+  block.area = to_double(edges.area);
+  for (int k = 0; k < 3; ++k) block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
+  {  // every sample of the clip inside: a rectangle
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      const T first = corner[k] + step_x[k] * T(clip.x0 - bx0) + step_y[k] * T(clip.y0 - by0) + least[k];
+      const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
+      inside = !(first + std::min(w, T(0)) + std::min(h, T(0)) < T(0));
+    }
+    if (inside) {
+      block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
+      for (int k = 0; k < 3; ++k) block.e[k] = to_double(corner[k] + centre[k]);
+      shade.rect(clip, block);
+      meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
+      return;
+    }
+  }
+  std::uint64_t masks[16];
+  for (int y0 = by0; y0 < clip.y1; y0 += kBlock) {
+    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
+    const std::uint64_t rows = row_mask(r0, r1);
+    T e[3] = {corner[0], corner[1], corner[2]};
+    for (int x0 = bx0; x0 < clip.x1; x0 += kBlock) {
+      bool reject = false, accept = true;
+      for (int k = 0; k < 3; ++k) {
+        reject = reject || e[k] + high_extent[k] < T(0);
+        accept = accept && !(e[k] + low_extent[k] < T(0));
+      }
+      if (!reject) {
+        const std::uint64_t clipped = rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+        block.x0 = x0, block.y0 = y0;
+        for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k] + centre[k]);
+        if (accept) {
+          block.mask = clipped;
+          shade(block);
+        } else {
+          std::uint64_t any = 0;
+          for (int s = 0; s < count; ++s) {
+            T es[3], sample_low[3];
+            unsigned crossing = 0;
+            for (int k = 0; k < 3; ++k) {
+              es[k] = e[k] + offset[s][k];
+              sample_low[k] = low_extent[k] - least[k];
+              crossing |= (es[k] + sample_low[k] < T(0) ? 1u : 0u) << k;
+            }
+            std::uint64_t m = clipped;
+            if constexpr (std::is_same_v<T, std::int64_t>) {
+              m &= lanes == Lanes::simd ? partial_mask_lanes(es, step_x, step_y, crossing, r0, r1)
+                                        : partial_mask_scalar(es, step_x, step_y, r0, r1);
+            } else {
+              m &= partial_mask_scalar(es, step_x, step_y, r0, r1);
+            }
+            masks[s] = m, any |= m;
+          }
+          if (any) {
+            block.mask = any;
+            shade.samples(block, masks);
+          }
+        }
+        if (meter.add(kBlock * kBlock)) return;
+      }
+      for (int k = 0; k < 3; ++k) e[k] += block_x[k];
+    }
+    for (int k = 0; k < 3; ++k) corner[k] += block_y[k];
   }
 }
 

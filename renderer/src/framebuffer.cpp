@@ -26,7 +26,7 @@ bool grow_filled(std::vector<T>& v, std::size_t count, T value, StopMeter& meter
 
 }  // namespace
 
-Image make_color_buffer(const RenderPlan& plan, Rgba8 background, StopMeter& meter, bool output) {
+Image make_color_buffer(const RenderPlan& plan, Rgba8 background, StopMeter& meter) {
   Image image;
   image.width = plan.width;
   image.height = plan.height;
@@ -34,7 +34,7 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background, StopMeter& met
   const auto bytes = static_cast<std::size_t>(plan.memory.color_bytes);
   // The output gets one byte per row more than the pixels: room for the PNG filter bytes, so
   // encode_png(Image&&) filters in place instead of allocating a second image.
-  image.pixels.reserve(bytes + (output ? static_cast<std::size_t>(plan.height) : 0));
+  image.pixels.reserve(bytes + static_cast<std::size_t>(plan.height));
   const std::uint8_t all[4] = {background.r, background.g, background.b, background.a};
   std::uint8_t texel[4] = {};
   switch (plan.format) {
@@ -59,35 +59,6 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background, StopMeter& met
   if (!grow_filled(image.pixels, bytes, std::uint8_t{0}, meter)) return image;
   for (std::size_t i = 0; i < image.pixels.size(); i += c) std::memcpy(&image.pixels[i], texel, c);
   return image;
-}
-
-void resolve(const std::vector<Image>& planes, Image& out, Rect rect) {
-  const int c = out.channels();
-  const auto n = static_cast<std::uint32_t>(planes.size());
-  const bool alpha = out.format == PixelFormat::grey_alpha8 || out.format == PixelFormat::rgba8;
-  for (int y = rect.y0; y < rect.y1; ++y) {
-    const std::size_t begin = (static_cast<std::size_t>(y) * out.width + rect.x0) * c,
-                      end = (static_cast<std::size_t>(y) * out.width + rect.x1) * c;
-    for (std::size_t i = begin; i < end; i += c) {
-      if (!alpha) {
-        for (int k = 0; k < c; ++k) {
-          std::uint32_t sum = 0;
-          for (const Image& p : planes) sum += p.pixels[i + k];
-          out.pixels[i + k] = static_cast<std::uint8_t>((sum + n / 2) / n);
-        }
-        continue;
-      }
-      std::uint32_t alpha_sum = 0;
-      for (const Image& p : planes) alpha_sum += p.pixels[i + c - 1];
-      for (int k = 0; k + 1 < c; ++k) {
-        std::uint32_t weighted = 0;
-        for (const Image& p : planes)
-          weighted += static_cast<std::uint32_t>(p.pixels[i + k]) * p.pixels[i + c - 1];
-        out.pixels[i + k] = alpha_sum ? static_cast<std::uint8_t>((weighted + alpha_sum / 2) / alpha_sum) : 0;
-      }
-      out.pixels[i + c - 1] = static_cast<std::uint8_t>((alpha_sum + n / 2) / n);
-    }
-  }
 }
 
 }  // namespace raster::detail

@@ -290,6 +290,25 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   }
 }
 
+// A projected segment as the rectangle one pixel wide around it (butt caps), two triangles whose depth and
+// 1/w are the endpoints' across the width: how multisampling draws 3D lines.
+void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, double ay, double ad, double aw,
+                        double bx, double by, double bd, double bw, std::uint32_t call, Setup& setup) {
+  const double dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
+  if (!(len > 0)) return;
+  const double nx = -dy / len * 0.5, ny = dx / len * 0.5;
+  SetupVertex q[4];
+  const double px[4] = {ax + nx, bx + nx, bx - nx, ax - nx}, py[4] = {ay + ny, by + ny, by - ny, ay - ny};
+  for (int k = 0; k < 4; ++k) {
+    const bool at_a = k == 0 || k == 3;
+    q[k].x = snap(px[k]), q[k].y = snap(py[k]);
+    std::copy((at_a ? a : b).attr, (at_a ? a : b).attr + 4, q[k].color);
+    q[k].depth = static_cast<float>(at_a ? ad : bd), q[k].inv_w = static_cast<float>(at_a ? aw : bw);
+  }
+  setup.add_triangle(call, {q[0], q[1], q[2]});
+  setup.add_triangle(call, {q[0], q[2], q[3]});
+}
+
 // Lines: the mesh's own segments, and for wireframes every triangle edge once.
 void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setup, StopMeter& meter) {
   const Mesh& mesh = view.mesh;
@@ -325,6 +344,10 @@ void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setu
     view.viewport.project(a, ax, ay, ad, aw);
     view.viewport.project(b, bx, by, bd, bw);
     if (!in_guard_band(ax, ay, aw) || !in_guard_band(bx, by, bw)) continue;
+    if (line_mode.line_rectangles) {
+      add_line_rectangle(a, b, ax, ay, ad, aw, bx, by, bd, bw, line_call, setup);
+      continue;
+    }
     LineRecord line;
     line.x0 = std::floor(ax), line.y0 = std::floor(ay), line.x1 = std::floor(bx), line.y1 = std::floor(by);
     line.c0 = to_rgba8(a.attr), line.c1 = to_rgba8(b.attr);

@@ -256,6 +256,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   out.samples = scene.area && any_3d ? kAreaFallbackSamples : scene.samples;
   if (scene.area && any_3d)
     for (DrawPlan& d : out.draws) d.mode.union_coverage = false, any_union = false;
+  // Multisampled 3D lines are rectangles a pixel wide, so their edges are covered per sample like the rest.
+  for (DrawPlan& d : out.draws) d.line_mode.line_rectangles = d.line_mode.depth && out.samples > 1;
   if (any_3d) {
     out.depth_buffer = true;
     out.view = resolve_view(scene, static_cast<double>(scene.width) / scene.height);

@@ -29,25 +29,40 @@ struct Frame {
   const detail::Bins& bins;
   const RenderPlan& plan;
   Image& image;
-  std::vector<Image>& planes;  // one per sample when anti-aliased, else empty
 };
 
 /// One thread's tile storage (RenderPlan::memory): the tile's colour, depth for 3D, and the accumulation
 /// of union-coverage primitives for area coverage.
 struct Scratch {
   std::vector<std::uint8_t> color;
-  std::vector<float> depth;
-  std::vector<float> coverage;
+  std::vector<float> depth;      // a plane per sample
+  std::vector<float> coverage;   // area: union primitives' accumulation
+  std::vector<std::uint8_t> samples;  // multisampling: a colour plane per sample
+  std::vector<std::uint64_t> expanded;  // multisampling: which pixels' samples differ, a word per block
+  std::int64_t shaded = 0;       // pixels shaded, for RenderStats
 };
 
-/// How a triangle's pixels are covered: at one sample point per pixel (aliased and each sample pass), or
-/// by the share of the pixel's square (area).
-enum class Coverage : std::uint8_t { sample, area };
+/// How a triangle's pixels are covered: at the pixel centre (aliased), at each sample position of the
+/// pattern (multisampling), or by the share of the pixel's square (area).
+enum class Coverage : std::uint8_t { centre, samples, area };
+
+// The coverage routine the plan's anti-aliasing asks for.
+template <typename T, typename Shader>
+void cover(const detail::Edges<T>& e, Rect clip, Coverage coverage, const detail::Surface& surface,
+           detail::Lanes lanes, detail::StopMeter& meter, Shader& shader) {
+  switch (coverage) {
+    case Coverage::centre:
+      return detail::cover(e, clip, detail::SamplePoint{}, lanes, meter, shader);
+    case Coverage::samples:
+      return detail::cover_samples(e, clip, surface.pattern, surface.sample_count, lanes, meter, shader);
+    case Coverage::area:
+      return detail::cover_area(e, clip, lanes, meter, shader);
+  }
+}
 
 template <int C>
 void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, const detail::Surface& surface,
-                   Rect clip, Coverage coverage, detail::SamplePoint sample, detail::Lanes lanes,
-                   detail::StopMeter& meter) {
+                   Rect clip, Coverage coverage, detail::Lanes lanes, detail::StopMeter& meter) {
   const float* attributes = setup.attributes.data() + t.attributes;
   if (t.wide != detail::TriangleRecord::kFast) {
     const detail::Edges<detail::Wide>& e = setup.wide_edges[t.wide];
@@ -55,10 +70,7 @@ void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, 
     const double dx[3] = {(e.a[0] * scale).to_double(), (e.a[1] * scale).to_double(), (e.a[2] * scale).to_double()};
     const double dy[3] = {(e.b[0] * scale).to_double(), (e.b[1] * scale).to_double(), (e.b[2] * scale).to_double()};
     detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, e.area.to_double());
-    if (coverage == Coverage::area)
-      detail::cover_area(e, clip, lanes, meter, shader);
-    else
-      detail::cover(e, clip, sample, lanes, meter, shader);
+    cover(e, clip, coverage, surface, lanes, meter, shader);
   } else {
     const detail::Edges<std::int64_t>& e = t.edges;
     const double dx[3] = {double(e.a[0] * detail::kSubpixelScale), double(e.a[1] * detail::kSubpixelScale),
@@ -66,10 +78,7 @@ void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, 
     const double dy[3] = {double(e.b[0] * detail::kSubpixelScale), double(e.b[1] * detail::kSubpixelScale),
                           double(e.b[2] * detail::kSubpixelScale)};
     detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, double(e.area));
-    if (coverage == Coverage::area)
-      detail::cover_area(e, clip, lanes, meter, shader);
-    else
-      detail::cover(e, clip, sample, lanes, meter, shader);
+    cover(e, clip, coverage, surface, lanes, meter, shader);
   }
 }
 
@@ -102,11 +111,10 @@ inline void prefetch(const detail::Setup& setup, const detail::Bins& bins, std::
 }
 
 template <int C>
-void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::SamplePoint sample,
-              detail::StopMeter& meter) {
+void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::StopMeter& meter) {
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::Lanes lanes = f.plan.scalar_coverage ? detail::Lanes::scalar : detail::Lanes::simd;
-  const Coverage coverage = f.plan.area ? Coverage::area : Coverage::sample;
+  const Coverage coverage = f.plan.area ? Coverage::area : f.plan.samples > 1 ? Coverage::samples : Coverage::centre;
   // A union-coverage primitive (its own draw call) accumulates over its consecutive records, and is
   // composited over the pixels they reached when the next record belongs to another call.
   constexpr std::uint32_t kNone = ~0u;
@@ -137,51 +145,59 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
       reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0), std::max(reached.x1, clip.x1),
                  std::max(reached.y1, clip.y1)};
     }
-    draw_triangle<C>(f.setup, t, surface, clip, coverage, sample, lanes, meter);
+    draw_triangle<C>(f.setup, t, surface, clip, coverage, lanes, meter);
   }
   close();
 }
 
-// Draws one tile: per sample position, its bin into the thread's tile storage (filled from the target,
-// which holds the background there, and with depth cleared), copied back; then (anti-aliased) the resolve.
+// Draws one tile: its bin into the thread's tile storage (filled from the image, which holds the background
+// there, with depth and the multisampling state cleared), resolved when multisampled, copied back.
+template <int C>
 void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
-  const std::vector<detail::SamplePoint>& pattern = detail::sample_pattern(f.plan.samples);
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
-  const int c = f.image.channels(), w = rect.x1 - rect.x0;
-  const std::size_t row_bytes = static_cast<std::size_t>(w) * c;
-  // Rows of the storage are whole blocks wide: a block at the image's right edge stays in its own row.
+  const int w = rect.x1 - rect.x0, rows = rect.y1 - rect.y0;
+  const std::size_t row_bytes = static_cast<std::size_t>(w) * C;
+  // Rows of the storage are whole blocks wide (and planes whole blocks tall): a block at the image's edge
+  // stays in its own rows.
   const int stride = (w + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
-  const detail::Surface surface{scratch.color.data(), scratch.depth.empty() ? nullptr : scratch.depth.data(),
-                                scratch.coverage.empty() ? nullptr : scratch.coverage.data(),
-                                stride, rect.x0, rect.y0, c};
-  for (std::size_t s = 0; s < pattern.size(); ++s) {
-    Image& target = f.planes.empty() ? f.image : f.planes[s];
-    auto row_of = [&](int y) {
-      return target.pixels.data() + (static_cast<std::size_t>(y) * target.width + rect.x0) * c;
-    };
-    for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(surface.pixel(rect.x0, y), row_of(y), row_bytes);
-    if (surface.depth) std::fill_n(surface.depth, static_cast<std::size_t>(stride) * (rect.y1 - rect.y0), 0.0f);
-    switch (c) {
-      case 1:
-        draw_bin<1>(f, tile, surface, pattern[s], meter);
-        break;
-      case 2:
-        draw_bin<2>(f, tile, surface, pattern[s], meter);
-        break;
-      case 3:
-        draw_bin<3>(f, tile, surface, pattern[s], meter);
-        break;
-      default:
-        draw_bin<4>(f, tile, surface, pattern[s], meter);
-        break;
-    }
-    if (meter.stopped()) return;
-    for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(row_of(y), surface.pixel(rect.x0, y), row_bytes);
+  const int block_rows = (rows + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
+  detail::Surface surface{scratch.color.data(), scratch.depth.empty() ? nullptr : scratch.depth.data(),
+                          scratch.coverage.empty() ? nullptr : scratch.coverage.data(),
+                          stride, rect.x0, rect.y0, C};
+  surface.shaded = &scratch.shaded;
+  surface.plane = static_cast<std::size_t>(stride) * block_rows;
+  if (f.plan.samples > 1) {
+    surface.sample_count = f.plan.samples;
+    surface.pattern = detail::sample_pattern(f.plan.samples).data();
+    surface.samples = scratch.samples.data();
+    surface.expanded = scratch.expanded.data();
+    std::fill_n(surface.expanded, surface.plane / 64, 0);
   }
-  if (f.planes.empty()) return;
-  // The resolve reads every sample plane of the tile: metered like drawing.
-  detail::resolve(f.planes, f.image, rect);
-  meter.add(std::int64_t{rect.x1 - rect.x0} * (rect.y1 - rect.y0) * f.plan.samples);
+  auto row_of = [&](int y) {
+    return f.image.pixels.data() + (static_cast<std::size_t>(y) * f.image.width + rect.x0) * C;
+  };
+  for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(surface.pixel(rect.x0, y), row_of(y), row_bytes);
+  if (surface.depth) std::fill_n(surface.depth, surface.plane * surface.sample_count, 0.0f);
+  draw_bin<C>(f, tile, surface, meter);
+  if (meter.stopped()) return;
+  if (surface.sample_count > 1) {
+    detail::resolve_samples<C>(surface, rect);
+    meter.add(std::int64_t{w} * rows);
+  }
+  for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(row_of(y), surface.pixel(rect.x0, y), row_bytes);
+}
+
+void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
+  switch (f.image.channels()) {
+    case 1:
+      return draw_tile<1>(f, tile, scratch, meter);
+    case 2:
+      return draw_tile<2>(f, tile, scratch, meter);
+    case 3:
+      return draw_tile<3>(f, tile, scratch, meter);
+    default:
+      return draw_tile<4>(f, tile, scratch, meter);
+  }
 }
 
 }  // namespace
@@ -205,12 +221,6 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
 
   // Buffers are cleared as they are allocated, looking at the deadline every megabyte.
   Image image = detail::make_color_buffer(plan, scene.background, meter);
-  // Anti-aliasing: one colour plane per sample position, drawn like an aliased image whose coverage is
-  // tested at that position, then resolved into `image`. Aliased: `image` itself.
-  std::vector<Image> planes;
-  if (plan.samples > 1)
-    for (int s = 0; s < plan.samples; ++s)
-      planes.push_back(detail::make_color_buffer(plan, scene.background, meter, false));
   if (meter.stopped()) throw cancelled();
 
   const int tiles = bins.columns * bins.rows;
@@ -218,16 +228,18 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   // Each thread's tile storage, allocated here so the stats below can count it.
   std::vector<Scratch> scratch(static_cast<std::size_t>(std::max(threads, 1)));
   const std::size_t tile_pixels = static_cast<std::size_t>(plan.tile_width()) * plan.tile_height();
+  const auto samples = static_cast<std::size_t>(plan.samples);
   for (Scratch& t : scratch) {
     t.color.resize(tile_pixels * image.channels());
-    if (plan.depth_buffer) t.depth.resize(tile_pixels);
+    if (plan.depth_buffer) t.depth.resize(tile_pixels * samples);
     if (plan.memory.coverage_bytes) t.coverage.resize(tile_pixels * detail::kUnionFloats);
+    if (samples > 1) t.samples.resize(tile_pixels * samples * image.channels()), t.expanded.resize(tile_pixels / 64);
   }
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
-    for (const Image& p : planes) bytes += static_cast<std::int64_t>(p.pixels.size());
     for (const Scratch& t : scratch)
-      bytes += static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float));
+      bytes += static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float) +
+                                         t.samples.size() + t.expanded.size() * sizeof(std::uint64_t));
     control.stats->pixel_bytes = bytes;
     control.stats->bin_bytes = static_cast<std::int64_t>(bins.records.size() * sizeof(detail::RecordRef) +
                                                          bins.offsets.size() * sizeof(std::uint32_t));
@@ -235,7 +247,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     control.stats->bin_entries = static_cast<std::int64_t>(bins.records.size());
   }
   lap(&RenderStats::clear_ms);
-  const Frame frame{setup, bins, plan, image, planes};
+  const Frame frame{setup, bins, plan, image};
   std::atomic<int> next{0};  // tiles are taken in order; which thread takes one does not change its bytes
   auto worker = [&](Scratch& own) {
     detail::StopMeter tile_meter(stop);  // each thread counts its own work
@@ -255,6 +267,10 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   }  // jthreads join here
   if (stopped) throw cancelled();
   lap(&RenderStats::tiles_ms);
+  if (control.stats) {
+    control.stats->shaded_pixels = 0;
+    for (const Scratch& t : scratch) control.stats->shaded_pixels += t.shaded;
+  }
   return image;
 }
 

@@ -30,16 +30,35 @@ struct Rect {
   bool empty() const { return x0 >= x1 || y0 >= y1; }
 };
 
+/// Where in each pixel coverage is tested: 1/256 px from the pixel's top-left corner; (128, 128) is the
+/// centre. Multisampling tests every position of a standard pattern.
+struct SamplePoint {
+  std::int32_t x = 128, y = 128;
+};
+
 /// Where a tile draws: a tile's own colour (and depth) storage, row-major, holding the pixels of image
 /// rectangle [x0, x0 + width) x [y0, ...). Small and contiguous, so a tile's pixels stay in the nearest
 /// cache however wide the image is (rows of a 1024-px RGB image are 3 KiB apart and alias in the L1).
 struct Surface {
   std::uint8_t* color = nullptr;  ///< channels per pixel as the image's format
-  float* depth = nullptr;         ///< z / w (reversed: larger is nearer), or nullptr without 3D
+  float* depth = nullptr;         ///< z / w (reversed: larger is nearer) per sample, or nullptr without 3D;
+                                  ///< multisampled: `sample_count` planes of `plane` values, sample-major
   float* coverage = nullptr;      ///< area coverage of union primitives: kUnionFloats (shade.h) a pixel
-  int width = 0;                  ///< pixels per row of both
+  int width = 0;                  ///< pixels per row of all of them (whole blocks)
   int x0 = 0, y0 = 0;             ///< image coordinates of the first pixel
   int channels = 3;
+  // Multisampling (sample_count > 1). A pixel whose samples all hold one colour keeps it in `color` alone;
+  // its bit in `expanded` says when they differ, and then `samples` holds one colour per sample.
+  int sample_count = 1;
+  const SamplePoint* pattern = nullptr;  ///< the sample positions, sample_count of them
+  std::size_t plane = 0;                 ///< pixels per sample plane (width x the tile's rows in blocks)
+  std::uint8_t* samples = nullptr;       ///< sample_count planes of colour, each laid out like `color`
+  std::uint64_t* expanded = nullptr;     ///< one word per 8x8 block, row-major; bit 8 r + i per pixel
+  std::int64_t* shaded = nullptr;        ///< counts pixels shaded (once per pixel per triangle)
+  std::uint64_t& expanded_bits(int bx, int by) const {  // the word of the block at image pixel (bx, by)
+    return expanded[static_cast<std::size_t>((by - y0) / 8) * static_cast<std::size_t>(width / 8) +
+                    static_cast<std::size_t>((bx - x0) / 8)];
+  }
   std::size_t index(int x, int y) const {
     return static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x - x0);
   }

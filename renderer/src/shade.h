@@ -128,6 +128,41 @@ void composite_union(const Surface& surface, Rect rect) {
     }
 }
 
+/// Multisampling: each pixel of `rect` whose samples differ becomes their mean, rounded to nearest (for
+/// formats with alpha, the mean of premultiplied values: a transparent sample adds no colour); the others
+/// already hold their one colour.
+template <int C>
+void resolve_samples(const Surface& surface, Rect rect) {
+  const int n = surface.sample_count;
+  for (int y0 = rect.y0; y0 < rect.y1; y0 += 8)
+    for (int x0 = rect.x0; x0 < rect.x1; x0 += 8) {
+      std::uint64_t& bits = surface.expanded_bits(x0, y0);
+      for (std::uint64_t m = bits; m; m &= m - 1) {
+        const int bit = std::countr_zero(m);
+        const std::size_t index = surface.index(x0 + (bit & 7), y0 + (bit >> 3));
+        auto sample = [&](int s) { return surface.samples + (static_cast<std::size_t>(s) * surface.plane + index) * C; };
+        std::uint8_t* out = surface.color + index * C;
+        if constexpr (C == 1 || C == 3) {
+          for (int k = 0; k < C; ++k) {
+            std::uint32_t sum = 0;
+            for (int s = 0; s < n; ++s) sum += sample(s)[k];
+            out[k] = static_cast<std::uint8_t>((sum + n / 2) / n);
+          }
+        } else {
+          std::uint32_t alpha = 0;
+          for (int s = 0; s < n; ++s) alpha += sample(s)[C - 1];
+          for (int k = 0; k + 1 < C; ++k) {
+            std::uint32_t weighted = 0;
+            for (int s = 0; s < n; ++s) weighted += std::uint32_t{sample(s)[k]} * sample(s)[C - 1];
+            out[k] = alpha ? static_cast<std::uint8_t>((weighted + alpha / 2) / alpha) : 0;
+          }
+          out[C - 1] = static_cast<std::uint8_t>((alpha + n / 2) / n);
+        }
+      }
+      bits = 0;
+    }
+}
+
 /// floor(x) for |x| < 2^62, without a library call.
 inline std::int64_t floor_to_int(double x) {
   const auto i = static_cast<std::int64_t>(x);  // toward zero
@@ -165,13 +200,22 @@ class TriangleShader {
   TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
                  const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
       : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
-        flip_(record.back_facing ? -1.0 : 1.0), union_(call.mode.union_coverage && surface.coverage) {
+        flip_(record.back_facing ? -1.0 : 1.0), union_(call.mode.union_coverage && surface.coverage),
+        msaa_(surface.sample_count > 1) {
     const AttributeLayout& layout = call.layout;
     depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
     inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;
     normal_at_ = layout.normal >= 0 ? attr_ + layout.normal : nullptr;
     flat_ = {to_byte(attr_[0]), to_byte(attr_[1]), to_byte(attr_[2]), to_byte(attr_[3])};
     kind_ = depth_at_ ? Kind::depth : mode_.varying_color ? Kind::smooth : Kind::flat;
+    if (msaa_ && depth_at_) {
+      // Depth is affine in screen space: each sample's z is the centre's plus a constant per sample.
+      double dz_dx = 0, dz_dy = 0;
+      for (int k = 0; k < 3; ++k) dz_dx += step_x[k] * depth_at_[k] / area, dz_dy += step_y[k] * depth_at_[k] / area;
+      for (int s = 0; s < surface.sample_count; ++s)
+        z_offset_[s] = static_cast<float>(dz_dx * (surface.pattern[s].x - 128) / 256.0 +
+                                          dz_dy * (surface.pattern[s].y - 128) / 256.0);
+    }
     if (kind_ == Kind::flat) {
       for (int i = 0; i < kBlock; ++i) store<C>(row_bytes_ + i * C, flat_);
 #if defined(__SSE2__)
@@ -202,6 +246,14 @@ class TriangleShader {
   void rect(Rect clip, const Block& first) {
     if (kind_ == Kind::flat && !mode_.blend && !union_) {
       for (int y = clip.y0; y < clip.y1; ++y) fill_run(pixel(clip.x0, y), clip.x1 - clip.x0);
+      if (msaa_) {  // every sample of these pixels now holds the colour: one value each again
+        for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock)
+          for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock)
+            surface_.expanded_bits(x0, y0) &=
+                ~(coverage_detail::row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0)) &
+                  coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0)));
+        *surface_.shaded += std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0);
+      }
       return;
     }
     Block b = first;
@@ -220,6 +272,37 @@ class TriangleShader {
 
   void operator()(const Block& b) {
     if (union_) return accumulate(b, nullptr);
+    if (msaa_) return whole(b);
+    shade_aliased(b);
+  }
+
+  /// Multisampling: `masks[s]` are the pixels whose sample s is covered, `b.mask` their union. Each pixel
+  /// is shaded once (at its centre, or at the centroid of its covered samples when the centre is outside)
+  /// and the colour goes to the covered samples; whole pixels take the aliased path.
+  void samples(const Block& b, const std::uint64_t* masks) {
+    const int n = surface_.sample_count;
+    if (kind_ == Kind::depth) return depth_samples(b, masks);
+    std::uint64_t all = b.mask;
+    for (int s = 0; s < n; ++s) all &= masks[s];
+    if (all) {
+      Block w = b;
+      w.mask = all;
+      whole(w);
+    }
+    std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
+    for (std::uint64_t m = b.mask & ~all; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      unsigned covered = 0;
+      for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
+      const Rgba8 c = color_at(b, i, r, covered);
+      const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
+      if (!((expanded >> bit) & 1)) expand(index), expanded |= std::uint64_t{1} << bit;
+      for (unsigned k = covered; k; k &= k - 1) write(sample_pixel(std::countr_zero(k), index), c);
+    }
+    *surface_.shaded += std::popcount(b.mask & ~all);
+  }
+
+  void shade_aliased(const Block& b) {
     switch (kind_) {
       case Kind::flat:
         return shade_flat(b);
@@ -243,16 +326,115 @@ class TriangleShader {
 
  private:
   std::uint8_t* pixel(int x, int y) const { return surface_.color + surface_.index(x, y) * C; }
+  std::uint8_t* sample_pixel(int s, std::size_t index) const {
+    return surface_.samples + (static_cast<std::size_t>(s) * surface_.plane + index) * C;
+  }
+
+  // A pixel about to get different colours in different samples: each sample starts as its one colour.
+  void expand(std::size_t index) const {
+    const std::uint8_t* from = surface_.color + index * C;
+    for (int s = 0; s < surface_.sample_count; ++s) std::memcpy(sample_pixel(s, index), from, C);
+  }
+
+  // Multisampling, pixels with every sample covered (2D). Opaque stores make a pixel's samples one colour
+  // again; blending keeps them apart, each sample blended.
+  void whole(const Block& b) {
+    if (kind_ == Kind::depth) {
+      std::uint64_t masks[16];
+      std::fill_n(masks, surface_.sample_count, b.mask);
+      return depth_samples(b, masks);
+    }
+    std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
+    *surface_.shaded += std::popcount(b.mask);
+    if (!mode_.blend) {
+      expanded &= ~b.mask;
+      return shade_aliased(b);
+    }
+    const std::uint64_t mixed = b.mask & expanded;
+    if (mixed != b.mask) {
+      Block u = b;
+      u.mask = b.mask & ~mixed;
+      shade_aliased(u);
+    }
+    const unsigned all = (1u << surface_.sample_count) - 1;
+    for (std::uint64_t m = mixed; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const Rgba8 c = color_at(b, i, r, all);
+      const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
+      for (int s = 0; s < surface_.sample_count; ++s) blend<C>(sample_pixel(s, index), c);
+    }
+  }
+
+  // 3D multisampling: depth tested per sample (the plane at each position), shaded once per pixel.
+  void depth_samples(const Block& b, const std::uint64_t* masks) {
+    const int n = surface_.sample_count;
+    const unsigned all = (1u << n) - 1;
+    const double inv_area = 1.0 / b.area;
+    const float* z = depth_at_;
+    std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
+    for (std::uint64_t m = b.mask; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
+      double l[3];
+      for (int k = 0; k < 3; ++k) l[k] = (b.e[k] + i * b.dx[k] + r * b.dy[k]) * inv_area;
+      const float centre = static_cast<float>(l[0] * z[0] + l[1] * z[1] + l[2] * z[2]);
+      unsigned pass = 0;
+      for (int s = 0; s < n; ++s) {
+        if (!((masks[s] >> bit) & 1)) continue;
+        const float depth = centre + z_offset_[s];
+        float& stored = surface_.depth[static_cast<std::size_t>(s) * surface_.plane + index];
+        if (depth > stored) stored = depth, pass |= 1u << s;
+      }
+      if (!pass) continue;
+      ++*surface_.shaded;
+      unsigned covered = 0;
+      for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
+      shading_point(b, i, r, covered, l);
+      const Rgba8 c = mode_.smooth ? smooth_color(l) : flat_;
+      if (pass == all && !mode_.blend) {
+        store<C>(surface_.color + index * C, c);
+        expanded &= ~(std::uint64_t{1} << bit);
+        continue;
+      }
+      if (!((expanded >> bit) & 1)) {
+        if (pass == all) {  // blending over a pixel whose samples agree: still one colour
+          blend<C>(surface_.color + index * C, c);
+          continue;
+        }
+        expand(index), expanded |= std::uint64_t{1} << bit;
+      }
+      for (unsigned k = pass; k; k &= k - 1) write(sample_pixel(std::countr_zero(k), index), c);
+    }
+  }
+
+  // Barycentric weights where a pixel is shaded: its centre when the triangle covers the centre (or every
+  // sample), else the centroid of its covered samples. `l` holds the centre's on entry.
+  void shading_point(const Block& b, int i, int r, unsigned covered, double (&l)[3]) const {
+    const unsigned all = (1u << surface_.sample_count) - 1;
+    if (covered == all || (!(b.e[0] + i * b.dx[0] + r * b.dy[0] < 0) && !(b.e[1] + i * b.dx[1] + r * b.dy[1] < 0) &&
+                           !(b.e[2] + i * b.dx[2] + r * b.dy[2] < 0)))
+      return;
+    double cx = 0, cy = 0;
+    for (unsigned k = covered; k; k &= k - 1) {
+      const SamplePoint p = surface_.pattern[std::countr_zero(k)];
+      cx += p.x - 128, cy += p.y - 128;
+    }
+    const double count = std::popcount(covered) * 256.0;
+    cx /= count, cy /= count;  // pixels from the centre
+    for (int k = 0; k < 3; ++k) l[k] += (cx * b.dx[k] + cy * b.dy[k]) / b.area;
+  }
 
   // The colour at a pixel's centre, from the exact edge values; smooth colours clamp to the vertices' range
   // (a cut pixel's centre may lie outside the triangle).
-  Rgba8 color_at(const Block& b, int i, int r) const {
+  // Multisampled, the shading point of a pixel whose samples `covered` are covered (see shading_point).
+  Rgba8 color_at(const Block& b, int i, int r, unsigned covered = 0) const {
     if (kind_ != Kind::smooth) return flat_;
-    double e[3];
-    for (int k = 0; k < 3; ++k) e[k] = b.e[k] + i * b.dx[k] + r * b.dy[k];
+    double l[3];
+    for (int k = 0; k < 3; ++k) l[k] = (b.e[k] + i * b.dx[k] + r * b.dy[k]) / b.area;
+    if (covered) shading_point(b, i, r, covered, l);
     std::uint8_t out[4];
     for (int ch = 0; ch < 4; ++ch) {
-      const double v = (e[0] * attr_[ch] + e[1] * attr_[4 + ch] + e[2] * attr_[8 + ch]) / b.area;
+      const double v = l[0] * attr_[ch] + l[1] * attr_[4 + ch] + l[2] * attr_[8 + ch];
       out[ch] = to_byte(std::clamp(v, lo_[ch], hi_[ch]));
     }
     return {out[0], out[1], out[2], out[3]};
@@ -612,6 +794,8 @@ class TriangleShader {
   const Surface& surface_;
   const double flip_;  // two-sided lighting: a back face is lit from the side seen
   const bool union_;   // area coverage of a multi-triangle primitive: accumulated, composited at its end
+  const bool msaa_;    // multisampling: samples() and whole() keep the pixels' samples
+  float z_offset_[16] = {};  // 3D multisampling: each sample's depth minus the pixel centre's
   const float* depth_at_ = nullptr;
   const float* inv_w_at_ = nullptr;
   const float* normal_at_ = nullptr;

@@ -15,14 +15,16 @@ namespace raster {
 
 /// What a render reports back.
 struct RenderStats {
-  std::int64_t pixel_bytes = 0;  ///< bytes allocated for pixel storage: output, sample planes, depth
+  std::int64_t pixel_bytes = 0;  ///< bytes allocated for pixel storage: output, tile storage, samples, depth
   std::int64_t bin_bytes = 0;    ///< bytes of the tile bins: 4 per record per tile it may touch, 4 per tile
   std::int64_t records = 0;      ///< triangle and line records set up
   std::int64_t bin_entries = 0;  ///< record-tile pairs in the bins
+  std::int64_t shaded_pixels = 0;  ///< multisampled renders: pixels shaded, once per pixel per triangle
+                                   ///< whatever the samples it covers; 0 for other renders
   // Wall time of each stage, milliseconds (filled only when stats are asked for):
   double geometry_ms = 0;  ///< transform, lighting per face, clipping, projection and setup of every record
   double bin_ms = 0;       ///< binning the records to tiles
-  double clear_ms = 0;     ///< allocating and clearing the colour buffer and sample planes
+  double clear_ms = 0;     ///< allocating and clearing the colour buffer and the tile storage
   double tiles_ms = 0;     ///< coverage and shading of every tile (all threads), and the resolve
 };
 
