@@ -284,7 +284,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   if (out.samples > 1)
     out.memory.sample_bytes = out.threads * tile_pixels * (out.samples * channel_count(out.format)) +
                               out.threads * tile_pixels / 8;
-  if (any_union) out.memory.coverage_bytes = out.threads * tile_pixels * 5 * std::int64_t{sizeof(float)};
+  if (any_union)  // 5 floats a pixel, and a bit a pixel saying which were reached
+    out.memory.coverage_bytes = out.threads * tile_pixels * 5 * std::int64_t{sizeof(float)} + out.threads * tile_pixels / 8;
   if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -37,8 +38,11 @@ struct Scratch {
   std::vector<std::uint8_t> color;
   std::vector<float> depth;      // a plane per sample
   std::vector<float> coverage;   // area: union primitives' accumulation
-  std::vector<std::uint8_t> samples;  // multisampling: a colour plane per sample
-  std::vector<std::uint64_t> expanded;  // multisampling: which pixels' samples differ, a word per block
+  // Multisampling: a colour plane per sample, written before it is read (so never cleared).
+  std::unique_ptr<std::uint8_t[]> samples;
+  std::size_t sample_bytes = 0;
+  std::vector<std::uint64_t> expanded;  // a word per block: which pixels' samples differ (or, area: are
+                                        // accumulated in)
   std::int64_t shaded = 0;       // pixels shaded, for RenderStats
 };
 
@@ -169,7 +173,9 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
   if (f.plan.samples > 1) {
     surface.sample_count = f.plan.samples;
     surface.pattern = detail::sample_pattern(f.plan.samples).data();
-    surface.samples = scratch.samples.data();
+    surface.samples = scratch.samples.get();
+  }
+  if (!scratch.expanded.empty()) {
     surface.expanded = scratch.expanded.data();
     std::fill_n(surface.expanded, surface.plane / 64, 0);
   }
@@ -233,13 +239,17 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     t.color.resize(tile_pixels * image.channels());
     if (plan.depth_buffer) t.depth.resize(tile_pixels * samples);
     if (plan.memory.coverage_bytes) t.coverage.resize(tile_pixels * detail::kUnionFloats);
-    if (samples > 1) t.samples.resize(tile_pixels * samples * image.channels()), t.expanded.resize(tile_pixels / 64);
+    if (samples > 1) {
+      t.sample_bytes = tile_pixels * samples * image.channels();
+      t.samples.reset(new std::uint8_t[t.sample_bytes]);
+    }
+    if (samples > 1 || plan.memory.coverage_bytes) t.expanded.resize(tile_pixels / 64);
   }
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
     for (const Scratch& t : scratch)
       bytes += static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float) +
-                                         t.samples.size() + t.expanded.size() * sizeof(std::uint64_t));
+                                         t.sample_bytes + t.expanded.size() * sizeof(std::uint64_t));
     control.stats->pixel_bytes = bytes;
     control.stats->bin_bytes = static_cast<std::int64_t>(bins.records.size() * sizeof(detail::RecordRef) +
                                                          bins.offsets.size() * sizeof(std::uint32_t));

@@ -53,7 +53,9 @@ struct Surface {
   const SamplePoint* pattern = nullptr;  ///< the sample positions, sample_count of them
   std::size_t plane = 0;                 ///< pixels per sample plane (width x the tile's rows in blocks)
   std::uint8_t* samples = nullptr;       ///< sample_count planes of colour, each laid out like `color`
-  std::uint64_t* expanded = nullptr;     ///< one word per 8x8 block, row-major; bit 8 r + i per pixel
+  /// One word per 8x8 block, row-major, bit 8 r + i per pixel: multisampling, the pixels whose samples
+  /// differ; area coverage, the pixels a union primitive has accumulated coverage in.
+  std::uint64_t* expanded = nullptr;
   std::int64_t* shaded = nullptr;        ///< counts pixels shaded (once per pixel per triangle)
   std::uint64_t& expanded_bits(int bx, int by) const {  // the word of the block at image pixel (bx, by)
     return expanded[static_cast<std::size_t>((by - y0) / 8) * static_cast<std::size_t>(width / 8) +

@@ -116,15 +116,21 @@ inline constexpr int kUnionFloats = 5;
 /// next primitive.
 template <int C>
 void composite_union(const Surface& surface, Rect rect) {
-  for (int y = rect.y0; y < rect.y1; ++y)
-    for (int x = rect.x0; x < rect.x1; ++x) {
-      float* acc = surface.coverage + surface.index(x, y) * kUnionFloats;
-      const float share = acc[0];
-      if (!(share > 0)) continue;
-      auto channel = [&](int k) { return static_cast<std::uint8_t>(std::min(255.0f, acc[1 + k] / share + 0.5f)); };
-      const Rgba8 c{channel(0), channel(1), channel(2), channel(3)};
-      blend_weighted<C>(surface.pixel(x, y), c, std::min(share, 1.0f) * (c.a / 255.0f));
-      std::fill_n(acc, kUnionFloats, 0.0f);
+  // Only the pixels accumulated into (Surface::expanded's bits): a thin diagonal line reaches few of its
+  // box's pixels.
+  for (int y0 = rect.y0 - (rect.y0 - surface.y0) % 8; y0 < rect.y1; y0 += 8)
+    for (int x0 = rect.x0 - (rect.x0 - surface.x0) % 8; x0 < rect.x1; x0 += 8) {
+      std::uint64_t& touched = surface.expanded_bits(x0, y0);
+      for (std::uint64_t m = touched; m; m &= m - 1) {
+        const int bit = std::countr_zero(m), x = x0 + (bit & 7), y = y0 + (bit >> 3);
+        float* acc = surface.coverage + surface.index(x, y) * kUnionFloats;
+        const float share = acc[0];
+        auto channel = [&](int k) { return static_cast<std::uint8_t>(std::min(255.0f, acc[1 + k] / share + 0.5f)); };
+        const Rgba8 c{channel(0), channel(1), channel(2), channel(3)};
+        blend_weighted<C>(surface.pixel(x, y), c, std::min(share, 1.0f) * (c.a / 255.0f));
+        std::fill_n(acc, kUnionFloats, 0.0f);
+      }
+      touched = 0;
     }
 }
 
@@ -442,6 +448,7 @@ class TriangleShader {
 
   // Union coverage: adds share (1 for whole pixels, `shares` for cut ones) and share x colour per pixel.
   void accumulate(const Block& b, const float* shares) const {
+    surface_.expanded_bits(b.x0, b.y0) |= b.mask;
     for (std::uint64_t m = b.mask; m; m &= m - 1) {
       const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
       const Rgba8 c = color_at(b, i, r);

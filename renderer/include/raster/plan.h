@@ -62,7 +62,7 @@ struct MemoryPlan {
                                   ///< pixel saying whether its samples differ; 0 unless antialias > 1
   std::int64_t tile_bytes = 0;    ///< each thread's tile of colour, where a tile is drawn before it is copied out
   std::int64_t coverage_bytes = 0;  ///< area coverage: each thread's tile of summed coverage and colour (5
-                                    ///< floats a pixel), when some primitive has union_coverage; else 0
+                                    ///< floats and a bit a pixel), when some primitive has union_coverage
   std::int64_t total() const { return color_bytes + depth_bytes + sample_bytes + tile_bytes + coverage_bytes; }
 };
 
