@@ -270,7 +270,11 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   const bool small = image_pixels <= kSmallScenePixels && scene.primitives.size() <= kSmallScenePrimitives;
   // Small images are one tile: binning a thumbnail costs more than it saves.
   const int one_tile = (std::max(scene.width, scene.height) + 7) / 8 * 8;
-  out.tile = options.tile > 0 ? (options.tile + 7) / 8 * 8 : image_pixels <= kSmallScenePixels ? one_tile : kTile;
+  // Multisampling keeps a colour per sample of a tile: 64 px tiles keep that in the cache (and reuse its
+  // pages) however small the image.
+  out.tile = options.tile > 0                                        ? (options.tile + 7) / 8 * 8
+             : image_pixels <= kSmallScenePixels && out.samples == 1 ? one_tile
+                                                                     : std::min(kTile, one_tile);
   const int tiles = ((scene.width + out.tile - 1) / out.tile) * ((scene.height + out.tile - 1) / out.tile);
   out.threads = small || work < kParallelWorkThreshold ? 1 : std::clamp(tiles, 1, cores);
   out.scalar_coverage = options.scalar_coverage;
