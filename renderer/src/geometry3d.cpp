@@ -114,10 +114,25 @@ Rgba8 to_rgba8(const float* c) {
   return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
 }
 
+// Per-vertex arrays of a big model are tens of megabytes, and zeroing fresh pages is most of what sizing
+// them costs: they are reserved, then sized a chunk at a time inside that capacity between looks at the
+// deadline, so a render stops on time even before its first vertex is transformed.
+constexpr std::size_t kGrowChunk = 16384;
+template <typename... V>
+void grow_chunk(std::size_t total, V&... v) {
+  const std::size_t n = std::min(total, (v.size(), ...) + kGrowChunk);
+  (v.resize(n), ...);
+}
+
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
 // the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
 std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& world, StopMeter& meter) {
-  std::vector<Vec3> normals(world.size());
+  std::vector<Vec3> normals;
+  normals.reserve(world.size());
+  while (normals.size() < world.size()) {
+    if (meter.check()) return normals;
+    grow_chunk(world.size(), normals);
+  }
   for (const auto& t : mesh.triangles) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;  // the caller sees meter.stopped() and draws nothing
     const Vec3 p[3] = {world[t[0]], world[t[1]], world[t[2]]};
@@ -158,9 +173,10 @@ struct MeshView {
   bool project(StopMeter& meter) {
     const Mat4 model_to_clip = plan.view.world_to_clip * mesh.transform;
     const std::size_t nv = mesh.positions.size();
-    clip.resize(nv), outside.resize(nv), screen.resize(nv);
+    clip.reserve(nv), outside.reserve(nv), screen.reserve(nv);
     for (std::size_t i = 0; i < nv; ++i) {
       if (meter.add(StopMeter::kRowWork)) return false;  // deadline: a model can have millions of vertices
+      if (i == clip.size()) grow_chunk(nv, clip, outside, screen);
       const Vec4 c = clip[i] = transform(model_to_clip, mesh.positions[i]);
       if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
         outside[i] = 0x80;
@@ -219,10 +235,11 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
   const bool light_per_pixel = mode.light_per_pixel;
-  std::vector<Vec3> world(mesh.positions.size());
-  for (std::size_t i = 0; i < world.size(); ++i) {
+  std::vector<Vec3> world;
+  world.reserve(mesh.positions.size());
+  for (const Vec3& p : mesh.positions) {
     if (meter.add(StopMeter::kRowWork)) return;
-    world[i] = transform_point(mesh.transform, mesh.positions[i]);
+    world.push_back(transform_point(mesh.transform, p));
   }
   std::vector<Vec3> normals;  // world space, per position (computed) or per OBJ normal index (given)
   if (light_per_pixel) {

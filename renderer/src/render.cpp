@@ -222,7 +222,8 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const detail::Setup setup = detail::build_setup(scene, plan, meter);
   if (meter.stopped()) throw cancelled();
   lap(&RenderStats::geometry_ms);
-  const detail::Bins bins = detail::bin(setup, plan.tile);
+  const detail::Bins bins = detail::bin(setup, plan.tile, meter);
+  if (meter.stopped()) throw cancelled();
   lap(&RenderStats::bin_ms);
 
   // Buffers are cleared as they are allocated, looking at the deadline every megabyte.

@@ -139,7 +139,7 @@ Rect Bins::tile_rect(int index, int width, int height) const {
   return {tx * tile, ty * tile, std::min(width, (tx + 1) * tile), std::min(height, (ty + 1) * tile)};
 }
 
-Bins bin(const Setup& setup, int tile) {
+Bins bin(const Setup& setup, int tile, StopMeter& meter) {
   Bins bins;
   bins.tile = tile;
   bins.columns = (setup.width + tile - 1) / tile;
@@ -161,12 +161,19 @@ Bins bin(const Setup& setup, int tile) {
         visit(at);
       }
   };
-  for (const RecordRef ref : setup.order) for_each_tile(ref, [&](int at) { ++count[at + 1]; });
+  // Both passes look at the deadline: millions of records take tens of milliseconds.
+  for (const RecordRef ref : setup.order) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return bins;  // the caller sees meter.stopped()
+    for_each_tile(ref, [&](int at) { ++count[at + 1]; });
+  }
   bins.offsets.resize(tiles + 1);
   for (std::size_t t = 0; t < tiles; ++t) count[t + 1] += count[t];
   bins.offsets = count;
   bins.records.resize(count[tiles]);
-  for (const RecordRef ref : setup.order) for_each_tile(ref, [&](int at) { bins.records[count[at]++] = ref; });
+  for (const RecordRef ref : setup.order) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return bins;
+    for_each_tile(ref, [&](int at) { bins.records[count[at]++] = ref; });
+  }
   return bins;
 }
 

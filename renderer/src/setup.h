@@ -9,6 +9,7 @@
 
 #include "raster/plan.h"
 #include "raster/scene.h"
+#include "stop.h"
 #include "wide.h"
 
 namespace raster::detail {
@@ -178,7 +179,8 @@ struct Bins {
 };
 
 /// Bins every record of `setup` by its bounding box, skipping tiles a triangle's edges exclude entirely.
-Bins bin(const Setup& setup, int tile);
+/// Returns early, incomplete, once `meter` says the render must stop.
+Bins bin(const Setup& setup, int tile, StopMeter& meter);
 
 /// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
 /// whole pixels translates the result exactly.
