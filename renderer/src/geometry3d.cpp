@@ -118,10 +118,11 @@ Rgba8 to_rgba8(const float* c) {
 // them costs: they are reserved, then sized a chunk at a time inside that capacity between looks at the
 // deadline, so a render stops on time even before its first vertex is transformed.
 constexpr std::size_t kGrowChunk = 16384;
-template <typename... V>
-void grow_chunk(std::size_t total, V&... v) {
-  const std::size_t n = std::min(total, (v.size(), ...) + kGrowChunk);
-  (v.resize(n), ...);
+template <typename First, typename... Rest>
+void grow_chunk(std::size_t total, First& first, Rest&... rest) {
+  const std::size_t n = std::min(total, first.size() + kGrowChunk);  // all have the same size
+  first.resize(n);
+  (rest.resize(n), ...);
 }
 
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
