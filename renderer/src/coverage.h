@@ -62,6 +62,18 @@ inline std::uint64_t row_mask(int r0, int r1) {
   return below & ~((1ull << (8 * r0)) - 1);
 }
 
+/// Whether edge values `at_origin` (at the sample point of pixel (bx, by), the clip's block-grid origin)
+/// stay >= 0 over every pixel of `clip`: its nearest corner decides. Then the clip is accepted whole.
+template <typename T>
+bool clip_inside(const T (&at_origin)[3], const T (&step_x)[3], const T (&step_y)[3], Rect clip, int bx, int by) {
+  for (int k = 0; k < 3; ++k) {
+    const T first = at_origin[k] + step_x[k] * T(clip.x0 - bx) + step_y[k] * T(clip.y0 - by);
+    const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
+    if (first + std::min(w, T(0)) + std::min(h, T(0)) < T(0)) return false;
+  }
+  return true;
+}
+
 /// A block's mask one pixel at a time, in T: the reference the lanes are tested against.
 template <typename T>
 std::uint64_t partial_mask_scalar(const T (&e)[3], const T (&step_x)[3], const T (&step_y)[3], int r0 = 0,
@@ -156,14 +168,7 @@ void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, St
   if constexpr (std::is_same_v<T, std::int64_t>) {
     // The whole clip inside every edge (its corner samples are): accepted at once, and the shading covers
     // it as a rectangle. The first block's values are exact doubles; the shader steps them exactly.
-    bool inside = true;
-    const T cx(std::int64_t{clip.x0} * kSubpixelScale + sample.x), cy(std::int64_t{clip.y0} * kSubpixelScale + sample.y);
-    for (int k = 0; k < 3 && inside; ++k) {
-      const T corner = edges.a[k] * cx + edges.b[k] * cy + edges.c[k];
-      const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
-      inside = !(corner + std::min(w, T(0)) + std::min(h, T(0)) < T(0));
-    }
-    if (inside) {
+    if (clip_inside(row_start, step_x, step_y, clip, bx0, by0)) {
       block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
       for (int k = 0; k < 3; ++k) block.e[k] = to_double(row_start[k]);
       shade.rect(clip, block);
@@ -315,13 +320,7 @@ void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter,
     bias[k] = biased(edges.a[k], edges.b[k]) ? 1 : 0;
   }
   {  // The whole clip wholly inside: a rectangle, as aliased coverage would draw it.
-    bool inside = true;
-    for (int k = 0; k < 3 && inside; ++k) {
-      const T first = inner[k] + step_x[k] * T(clip.x0 - bx0) + step_y[k] * T(clip.y0 - by0);
-      const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
-      inside = !(first + std::min(w, T(0)) + std::min(h, T(0)) < T(0));
-    }
-    if (inside) {
+    if (clip_inside(inner, step_x, step_y, clip, bx0, by0)) {
       block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
       for (int k = 0; k < 3; ++k) block.e[k] = to_double(centre[k]);
       shade.rect(clip, block);
@@ -432,13 +431,8 @@ void cover_samples(const Edges<T>& edges, Rect clip, const SamplePoint* pattern,
   block.area = to_double(edges.area);
   for (int k = 0; k < 3; ++k) block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
   {  // every sample of the clip inside: a rectangle
-    bool inside = true;
-    for (int k = 0; k < 3 && inside; ++k) {
-      const T first = corner[k] + step_x[k] * T(clip.x0 - bx0) + step_y[k] * T(clip.y0 - by0) + least[k];
-      const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
-      inside = !(first + std::min(w, T(0)) + std::min(h, T(0)) < T(0));
-    }
-    if (inside) {
+    const T lowest[3] = {corner[0] + least[0], corner[1] + least[1], corner[2] + least[2]};
+    if (clip_inside(lowest, step_x, step_y, clip, bx0, by0)) {
       block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
       for (int k = 0; k < 3; ++k) block.e[k] = to_double(corner[k] + centre[k]);
       shade.rect(clip, block);
