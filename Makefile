@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: test-openapi deps build serve test test-asan fuzz bench-build bench bench-accuracy loadtest loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
+.PHONY: test-openapi deps build serve test test-asan fuzz bench-build bench lighting bench-accuracy loadtest loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
 
 deps:
 	@scripts/install-deps
@@ -27,7 +27,7 @@ test-asan:
 # Each libFuzzer target for FUZZ_SECONDS (default 600), seeded from examples/ and fuzz/corpus/.
 # Findings land in fuzz-out/; each one becomes a regression test.
 FUZZ_SECONDS ?= 600
-FUZZ_TARGETS ?= scene_fuzzer obj_fuzzer
+FUZZ_TARGETS ?= scene_fuzzer obj_fuzzer texture_fuzzer
 fuzz:
 	@scripts/install-deps fuzz
 	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRASTERD_BUILD_FUZZ=ON \
@@ -44,6 +44,10 @@ bench-build: build
 	@scripts/install-deps bench
 	@cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DRASTERD_BUILD_BENCH=ON -DRASTERD_BUILD_TESTS=OFF >/dev/null
 	@cmake --build build-bench -j$(JOBS) -- --no-print-directory
+
+# Measures the default light and rewrites docs/lighting.md.
+lighting: bench-build
+	@scripts/lighting
 
 # Measures and rewrites docs/performance.md (BENCH_RUNS=11 by default).
 bench: bench-build

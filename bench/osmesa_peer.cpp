@@ -101,10 +101,17 @@ int main(int argc, char** argv) {
     glEnable(GL_LIGHT0);
     glEnable(GL_NORMALIZE);
     glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
-    const float amb = static_cast<float>(plan.view.ambient), dif = 1 - amb;
+    // The scenes it draws are lit by ambient plus one directional light (bench/scenes.cpp): GL's model ambient
+    // and LIGHT0.
+    float amb = 0, dif = 0;
+    raster::Vec3 to_light{0, 0, 1};
+    for (const raster::LightPlan& l : plan.view.lights) {
+      if (l.kind == raster::LightKind::ambient) amb += static_cast<float>(l.rgb[0]);
+      if (l.kind == raster::LightKind::directional) dif = static_cast<float>(l.rgb[0]), to_light = l.to_light;
+    }
     const float ambient[4] = {amb, amb, amb, 1}, diffuse[4] = {dif, dif, dif, 1}, none[4] = {0, 0, 0, 1};
-    const float dir[4] = {static_cast<float>(plan.view.to_light.x), static_cast<float>(plan.view.to_light.y),
-                          static_cast<float>(plan.view.to_light.z), 0};
+    const float dir[4] = {static_cast<float>(to_light.x), static_cast<float>(to_light.y),
+                          static_cast<float>(to_light.z), 0};
     glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
     glLightfv(GL_LIGHT0, GL_AMBIENT, none);
     glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);

@@ -20,14 +20,17 @@ static_assert(sizeof(raster::Point2) == 2 * sizeof(double), "Point2 is hashed as
 static_assert(sizeof(raster::Vec3) == 3 * sizeof(double), "Vec3 is hashed as raw bytes: no padding");
 static_assert(sizeof(raster::Rgba8) == 4, "Rgba8 is hashed as raw bytes");
 static_assert(sizeof(raster::Primitive) == 24, "Primitive changed: hash its new field in scene_etag");
-static_assert(sizeof(raster::Mesh) == 7 * sizeof(std::vector<int>) + 8 + sizeof(raster::Mat4),
+static_assert(sizeof(raster::Edges) == 16, "Edges changed: hash its new field in scene_etag");
+static_assert(sizeof(raster::Mesh) == 11 * sizeof(std::vector<int>) + 8 + sizeof(raster::Edges) + sizeof(raster::Mat4),
               "Mesh changed: hash its new field in scene_etag");
-static_assert(sizeof(raster::Camera) == 8 + 3 * sizeof(raster::Vec3) + 4 * sizeof(double),
+static_assert(sizeof(raster::Texture) == 8 + sizeof(std::vector<int>) + 24 + sizeof(std::string),
+              "Texture changed: hash its new field in scene_etag");
+static_assert(sizeof(raster::Camera) == 16 + 3 * sizeof(raster::Vec3) + 4 * sizeof(double),
               "Camera changed: hash its new field in scene_etag");
-static_assert(sizeof(raster::Light) == 8 + sizeof(raster::Vec3) + sizeof(double),
+static_assert(sizeof(raster::Light) == 8 + 3 * sizeof(raster::Vec3) + sizeof(double),
               "Light changed: hash its new field in scene_etag");
 static_assert(sizeof(raster::Scene) ==
-                  16 + 4 * sizeof(std::vector<int>) + sizeof(raster::Camera) + sizeof(raster::Light) + 8,
+                  16 + 5 * sizeof(std::vector<int>) + sizeof(raster::Camera) + 8,
               "Scene changed: hash its new field in scene_etag");
 
 // SHA-256 fed through a 64 KiB buffer: a scene is millions of small fields, and one EVP call per field
@@ -97,14 +100,27 @@ std::string scene_etag(const raster::Scene& scene) {
   for (const raster::Mesh& m : scene.meshes) {
     d.vector(m.positions), d.vector(m.triangles), d.vector(m.segments), d.vector(m.normals);
     d.vector(m.normal_triangles), d.vector(m.colors), d.vector(m.face_colors);
+    d.vector(m.uvs), d.vector(m.uv_triangles), d.vector(m.face_textures);
+    d.value(static_cast<std::uint64_t>(m.textures.size()));
+    for (const raster::Texture& t : m.textures) {  // the name does not change a pixel: not hashed
+      d.value(t.width), d.value(t.height), d.vector(t.rgba), d.value(t.clamp);
+      d.value(t.scale[0]), d.value(t.scale[1]), d.value(t.offset[0]), d.value(t.offset[1]);
+    }
     d.value(m.shading), d.value(m.cull), d.value(m.wireframe);
+    d.value(m.edges.enabled), d.value(m.edges.color.r), d.value(m.edges.color.g), d.value(m.edges.color.b);
+    d.value(m.edges.color.a), d.value(m.edges.width), d.value(m.edges.crease_deg);
     for (double x : m.transform.m) d.value(x);
   }
   const raster::Camera& c = scene.camera;
   d.value(c.projection), d.value(c.has_eye), d.value(c.has_target), d.value(c.has_near), d.value(c.has_far);
-  d.value(c.has_height), d.vec3(c.eye), d.vec3(c.target), d.vec3(c.up);
+  d.value(c.has_height), d.value(c.view), d.value(c.has_view), d.value(c.has_up);
+  d.vec3(c.eye), d.vec3(c.target), d.vec3(c.up);
   d.value(c.fov_deg), d.value(c.near), d.value(c.far), d.value(c.height);
-  d.value(scene.light.headlight), d.vec3(scene.light.direction), d.value(scene.light.ambient);
+  d.value(static_cast<std::uint64_t>(scene.lights.size()));
+  for (const raster::Light& l : scene.lights) {
+    d.value(l.kind), d.value(l.camera_space), d.vec3(l.direction), d.vec3(l.position), d.vec3(l.color);
+    d.value(l.intensity);
+  }
 
   const auto hash = d.finish();
   static const char* hex = "0123456789abcdef";

@@ -25,8 +25,9 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   rasterd render SCENE.json [-o OUT.png] [--explain]   render a scene file ('-' = stdin / stdout)
-  rasterd render MODEL.obj [-o OUT.png] [--width N] [--height N] [--background C] [--projection P]
-                 [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--part NAME=FILE]
+  rasterd render MODEL.obj [-o OUT.png] [--width N] [--height N] [--background C] [--view V]
+                 [--projection P] [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z]
+                 [--part NAME=FILE]
                                                         a bare OBJ model with the default scene
   rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080)
 
@@ -81,7 +82,8 @@ int run_render(const std::vector<std::string>& args) {
       const std::string spec = args[++i];
       const std::size_t eq = spec.find('=');
       if (eq == std::string::npos) return usage_error("--part takes NAME=FILE");
-      if (!read_all(spec.substr(eq + 1), uploads[spec.substr(0, eq)])) {
+      const std::string file = spec.substr(eq + 1);
+      if (!read_all(file, uploads[rasterd::upload_key(spec.substr(0, eq), file)])) {
         std::cerr << "rasterd: cannot read " << spec.substr(eq + 1) << ": " << std::strerror(errno) << "\n";
         return 1;
       }

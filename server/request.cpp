@@ -56,8 +56,8 @@ std::string default_scene_json(const Params& params) {
       scene[name] = number(name, value);
     else if (name == "background")
       scene["background"] = value;
-    else if (name == "projection")
-      camera["projection"] = value;
+    else if (name == "projection" || name == "view")
+      camera[name] = value;
     else if (name == "fov")
       camera["fov"] = number(name, value);
     else if (name == "eye" || name == "target" || name == "up")
@@ -65,7 +65,7 @@ std::string default_scene_json(const Params& params) {
     else if (name == "explain")
       continue;  // the route's, not the scene's
     else
-      bad_param(name, "unknown; known: width, height, background, projection, fov, eye, target, up");
+      bad_param(name, "unknown; known: width, height, background, view, projection, fov, eye, target, up");
   }
   if (!camera.empty()) scene["camera"] = camera;
   scene["primitives"] = nlohmann::json::array({{{"type", "obj"}, {"source", "model"}}});
@@ -73,6 +73,13 @@ std::string default_scene_json(const Params& params) {
 }
 
 }  // namespace
+
+std::string upload_key(std::string_view part_name, std::string_view file_name) {
+  if (part_name == "scene" || part_name == "model" || part_name == "mtl") return std::string(part_name);
+  const std::size_t slash = file_name.find_last_of("/\\");
+  const std::string_view base = slash == std::string_view::npos ? file_name : file_name.substr(slash + 1);
+  return std::string(base.empty() ? part_name : base);
+}
 
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
                                  const raster::Limits& limits) {

@@ -14,6 +14,12 @@ namespace rasterd {
 /// width, height, background, projection, fov, eye, target, up (vectors as "x,y,z").
 using Params = std::map<std::string, std::string, std::less<>>;
 
+/// The name an uploaded part is kept under in raster::Uploads. "scene", "model" and "mtl" keep their
+/// names; any other part with a file name is kept under that file's name without folders, so a texture
+/// sent as `curl -F texture=@head_diffuse.png` is found by the name the MTL uses ("head_diffuse.png").
+/// Without a file name, a part keeps its own name.
+std::string upload_key(std::string_view part_name, std::string_view file_name);
+
 /// `body` starting with '{' (after whitespace) is a scene; anything else is an OBJ model drawn with the
 /// default scene (512x512, camera framing the model) adjusted by `params`. A body that looks like an OBJ
 /// whose line breaks were stripped (curl -d) is refused with a hint. Throws raster::SceneError.

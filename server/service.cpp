@@ -212,24 +212,42 @@ struct Service::State {
     bool complete;
     if (req.is_multipart_form_data()) {
       std::string* current = nullptr;
-      std::string bad_name;  // a part name that is not UTF-8: the names are echoed in errors
+      std::string bad_name;   // a part or file name that is not UTF-8: the names are echoed in errors
+      std::string duplicate;  // two parts kept under one name: which bytes are meant is not knowable
       complete = reader(
           [&](const httplib::MultipartFormData& part) {
-            if (raster::first_invalid_utf8(part.name) != std::string_view::npos) {
-              bad_name = part.name;
+            for (const std::string* name : {&part.name, &part.filename})
+              if (raster::first_invalid_utf8(*name) != std::string_view::npos) {
+                bad_name = *name;
+                return false;
+              }
+            if (part.name == "scene") {
+              current = &body;
+              return true;
+            }
+            const std::string key = upload_key(part.name, part.filename);
+            const auto [it, added] = uploads.try_emplace(key);
+            if (!added) {
+              duplicate = key;
               return false;
             }
-            current = part.name == "scene" ? &body : &uploads[part.name];
+            current = &it->second;
             return true;
           },
           [&](const char* data, std::size_t n) { return take(*current, data, n); });
       if (!bad_name.empty()) {
         try {
-          raster::require_utf8(bad_name, "a multipart part name");
+          raster::require_utf8(bad_name, "a multipart part or file name");
         } catch (const raster::SceneError& e) {
           return refuse(res, problem_from(e), "encoding");
         }
       }
+      if (!duplicate.empty())
+        return refuse(res,
+                      problem(400, "duplicate-part", "Two multipart parts have the same name",
+                              "more than one part is named \"" + duplicate +
+                                  "\" (texture parts are named by their file name); send each once"),
+                      "duplicate_part");
     } else {
       if (const auto declared = req.get_header_value<std::uint64_t>("Content-Length")) body.reserve(declared);
       complete = reader([&](const char* data, std::size_t n) { return take(body, data, n); });

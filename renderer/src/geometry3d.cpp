@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <tuple>
 
 #include "geometry.h"
@@ -16,14 +17,15 @@ namespace {
 /// interpolates them all with one routine.
 struct ClipVertex {
   double x = 0, y = 0, z = 0, w = 0;  ///< clip space (see ViewPlan)
-  float attr[7] = {};                 ///< r, g, b, a (0..255), normal x, y, z (world)
+  float attr[12] = {};  ///< r, g, b, a (0..255), normal x, y, z (world), u, v, position x, y, z (world)
 };
+constexpr int kAttributes = 12;
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
   ClipVertex r;
   r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t,
   r.w = a.w + (b.w - a.w) * t;
-  for (int k = 0; k < 7; ++k) r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
+  for (int k = 0; k < kAttributes; ++k) r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
   return r;
 }
 
@@ -228,6 +230,8 @@ void add_clipped(const MeshView& view, std::array<ClipVertex, 9>& poly, std::uin
     dv[k].inv_w = static_cast<float>(inv_w);
     std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
     std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
+    std::copy(poly[k].attr + 7, poly[k].attr + 9, dv[k].uv);
+    std::copy(poly[k].attr + 9, poly[k].attr + 12, dv[k].position);
   }
   for (int k = 1; k + 1 < n; ++k) setup.add_triangle(call, {dv[0], dv[k], dv[k + 1]}, back);
 }
@@ -250,12 +254,17 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
     else
       for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
   }
-  const Vec3 to_light = camera.to_light;
   const Vec3 forward = normalize(camera.target - camera.eye);
   DrawCall call = make_call(mode);
-  call.to_light[0] = to_light.x, call.to_light[1] = to_light.y, call.to_light[2] = to_light.z;
-  call.ambient = camera.ambient;
+  call.lights = camera.lights;
   const std::uint32_t call_index = setup.add_call(call);
+  // Textured: one call per texture, the same mode; faces without a texture keep `call_index` (no texture).
+  std::vector<std::uint32_t> texture_calls;
+  if (mode.textured)
+    for (const Texture& texture : mesh.textures) {
+      call.texture = &setup.textures.emplace_back(build_mips(texture));
+      texture_calls.push_back(setup.add_call(call));
+    }
   const std::size_t count = mesh.triangles.size();  // before clipping, which rarely adds any
   setup.triangles.reserve(setup.triangles.size() + count);
   setup.order.reserve(setup.order.size() + count);
@@ -277,25 +286,42 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
     const bool back = dot(face, toward_eye) < 0;
     if (back && mesh.cull == Cull::back) continue;
 
-    float shade = 1;
-    if (mode.lit && !light_per_pixel) {  // flat: one Lambert term per face, lit from the side seen
+    float shade[3] = {1, 1, 1};
+    if (mode.lit && !light_per_pixel) {  // flat: once per face, lit from the side seen, at its centroid
       const Vec3 n = normalize(back ? face * -1.0 : face);
-      shade = static_cast<float>(lambert(dot(n, to_light), camera.ambient));
+      const Vec3 c = (world[tri[0]] + world[tri[1]] + world[tri[2]]) * (1.0 / 3);
+      double lit[3];
+      light_at(camera.lights, {n.x, n.y, n.z}, {c.x, c.y, c.z}, lit);
+      for (int k = 0; k < 3; ++k) shade[k] = static_cast<float>(lit[k]);
     }
     // The vertices' colours (lit per face) and normals, onto the projected vertices or the clip polygon.
     SetupVertex dv[3] = {view.screen[tri[0]], view.screen[tri[1]], view.screen[tri[2]]};
+    std::uint32_t triangle_call = call_index;
+    if (mode.textured) {
+      const std::int32_t texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
+      if (texture >= 0) triangle_call = texture_calls[static_cast<std::size_t>(texture)];
+      for (int k = 0; k < 3; ++k) {
+        const auto& uv = mesh.uvs[mesh.uv_triangles[t][k]];
+        dv[k].uv[0] = uv[0], dv[k].uv[1] = uv[1];
+      }
+    }
     for (int k = 0; k < 3; ++k) {
       const Rgba8 c = view.color_at(t, tri[k]);
-      dv[k].color[0] = c.r * shade, dv[k].color[1] = c.g * shade, dv[k].color[2] = c.b * shade;
+      dv[k].color[0] = c.r * shade[0], dv[k].color[1] = c.g * shade[1], dv[k].color[2] = c.b * shade[2];
       dv[k].color[3] = c.a;
       if (light_per_pixel) {
         const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
         dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
         dv[k].normal[2] = static_cast<float>(n.z);
       }
+      if (mode.position_per_pixel) {
+        const Vec3& p = world[tri[k]];
+        dv[k].position[0] = static_cast<float>(p.x), dv[k].position[1] = static_cast<float>(p.y),
+        dv[k].position[2] = static_cast<float>(p.z);
+      }
     }
     if (any_out == 0) {  // inside every plane: the vertices were projected once
-      setup.add_triangle(call_index, dv, back);
+      setup.add_triangle(triangle_call, dv, back);
       continue;
     }
     std::array<ClipVertex, 9> poly;
@@ -303,18 +329,21 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
       poly[k] = view.clip_vertex(tri[k], {});
       std::copy(dv[k].color, dv[k].color + 4, poly[k].attr);
       std::copy(dv[k].normal, dv[k].normal + 3, poly[k].attr + 4);
+      std::copy(dv[k].uv, dv[k].uv + 2, poly[k].attr + 7);
+      std::copy(dv[k].position, dv[k].position + 3, poly[k].attr + 9);
     }
-    add_clipped(view, poly, call_index, back, setup);
+    add_clipped(view, poly, triangle_call, back, setup);
   }
 }
 
-// A projected segment as the rectangle one pixel wide around it (butt caps), two triangles whose depth and
-// 1/w are the endpoints' across the width: how multisampling draws 3D lines.
+// A projected segment as the rectangle `width` pixels wide around it (butt caps), two triangles whose depth
+// and 1/w are the endpoints' across the width: how multisampling draws 3D lines, and how wide edges are drawn.
 void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, double ay, double ad, double aw,
-                        double bx, double by, double bd, double bw, std::uint32_t call, Setup& setup) {
+                        double bx, double by, double bd, double bw, double width, std::uint32_t call,
+                        Setup& setup) {
   const double dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
   if (!(len > 0)) return;
-  const double nx = -dy / len * 0.5, ny = dx / len * 0.5;
+  const double nx = -dy / len * 0.5 * width, ny = dx / len * 0.5 * width;
   SetupVertex q[4];
   const double px[4] = {ax + nx, bx + nx, bx - nx, ax - nx}, py[4] = {ay + ny, by + ny, by - ny, ay - ny};
   for (int k = 0; k < 4; ++k) {
@@ -325,6 +354,27 @@ void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, dou
   }
   setup.add_triangle(call, {q[0], q[1], q[2]});
   setup.add_triangle(call, {q[0], q[2], q[3]});
+}
+
+// One 3D segment through clipping and projection: a line record, or with `mode.line_rectangles` the
+// rectangle `width` pixels wide around it.
+void add_segment(const MeshView& view, ClipVertex a, ClipVertex b, const PrimitivePlan& mode, std::uint32_t call,
+                 double width, Setup& setup) {
+  if (!clip_segment(a, b, view.planes)) return;
+  double ax, ay, ad, aw, bx, by, bd, bw;
+  view.viewport.project(a, ax, ay, ad, aw);
+  view.viewport.project(b, bx, by, bd, bw);
+  if (!in_guard_band(ax, ay, aw) || !in_guard_band(bx, by, bw)) return;
+  if (mode.line_rectangles) {
+    add_line_rectangle(a, b, ax, ay, ad, aw, bx, by, bd, bw, width, call, setup);
+    return;
+  }
+  LineRecord line;
+  line.x0 = std::floor(ax), line.y0 = std::floor(ay), line.x1 = std::floor(bx), line.y1 = std::floor(by);
+  line.c0 = to_rgba8(a.attr), line.c1 = to_rgba8(b.attr);
+  line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
+  line.call = call;
+  setup.add_line(line);
 }
 
 // Lines: the mesh's own segments, and for wireframes every triangle edge once.
@@ -355,23 +405,88 @@ void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setu
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;
     if ((view.outside[segments[s][0]] | view.outside[segments[s][1]]) & 0x80) continue;
-    ClipVertex a = view.clip_vertex(segments[s][0], segment_colors[s][0]),
-               b = view.clip_vertex(segments[s][1], segment_colors[s][1]);
-    if (!clip_segment(a, b, view.planes)) continue;
-    double ax, ay, ad, aw, bx, by, bd, bw;
-    view.viewport.project(a, ax, ay, ad, aw);
-    view.viewport.project(b, bx, by, bd, bw);
-    if (!in_guard_band(ax, ay, aw) || !in_guard_band(bx, by, bw)) continue;
-    if (line_mode.line_rectangles) {
-      add_line_rectangle(a, b, ax, ay, ad, aw, bx, by, bd, bw, line_call, setup);
-      continue;
+    add_segment(view, view.clip_vertex(segments[s][0], segment_colors[s][0]),
+                view.clip_vertex(segments[s][1], segment_colors[s][1]), line_mode, line_call, 1, setup);
+  }
+}
+
+// Feature edges (scene.h: Edges): each edge of the triangles once, kept when it bounds one face, is shared by
+// more than two, or its two faces' normals differ by more than the crease angle; drawn in the edge colour
+// with its endpoints moved toward the eye by two pixels' worth of distance (a polygon offset), so the faces
+// they lie on, whose depth at a pixel differs from the line's by up to their slope, do not half-hide them.
+void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  const ViewPlan& camera = view.plan.view;
+  std::vector<Vec3> world;
+  world.reserve(mesh.positions.size());
+  for (const Vec3& p : mesh.positions) {
+    if (meter.add(StopMeter::kRowWork)) return;
+    world.push_back(transform_point(mesh.transform, p));
+  }
+  // Positions with equal coordinates are one point here: models that repeat a corner per face (UV seams,
+  // STL-like soups) still have shared edges, not a boundary around every face.
+  std::vector<std::uint32_t> same(world.size());
+  {
+    std::vector<std::uint32_t> order(world.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto key = [&](std::uint32_t i) { return std::tuple(world[i].x, world[i].y, world[i].z); };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t p, std::uint32_t q) { return key(p) < key(q); });
+    for (std::size_t k = 0; k < order.size(); ++k)
+      same[order[k]] = k > 0 && key(order[k]) == key(order[k - 1]) ? same[order[k - 1]] : order[k];
+  }
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> edges;  // (low, high, triangle)
+  edges.reserve(mesh.triangles.size() * 3);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = same[mesh.triangles[t][k]], b = same[mesh.triangles[t][(k + 1) % 3]];
+      if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t));
     }
-    LineRecord line;
-    line.x0 = std::floor(ax), line.y0 = std::floor(ay), line.x1 = std::floor(bx), line.y1 = std::floor(by);
-    line.c0 = to_rgba8(a.attr), line.c1 = to_rgba8(b.attr);
-    line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
-    line.call = line_call;
-    setup.add_line(line);
+  }
+  std::sort(edges.begin(), edges.end());  // not interruptible: n log n of the model's edges
+  auto face_normal = [&](std::uint32_t t) {
+    const auto& tri = mesh.triangles[t];
+    return normalize(cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]));
+  };
+  const double cos_crease = std::cos(mesh.edges.crease_deg * std::numbers::pi / 180);
+  const Vec3 forward = normalize(camera.target - camera.eye);
+  const double pixel_at_unit = (camera.projection == Projection::perspective
+                                    ? 2 * std::tan(camera.fov_deg * std::numbers::pi / 360)
+                                    : 0) /
+                               view.plan.height;
+  const double ortho_pixel = camera.height / view.plan.height;
+  auto pulled = [&](std::uint32_t i) {  // the endpoint two pixels nearer the eye, in clip space
+    const Vec3& p = world[i];
+    Vec3 toward_eye = forward * -1.0;
+    double pixel = ortho_pixel;
+    if (camera.projection == Projection::perspective) {
+      const double d = length(camera.eye - p);
+      toward_eye = normalize(camera.eye - p), pixel = d * pixel_at_unit;
+    }
+    const Vec4 c = transform(camera.world_to_clip, p + toward_eye * (2 * pixel));
+    ClipVertex v{c.x, c.y, c.z, c.w, {}};
+    const Rgba8 colour = mesh.edges.color;
+    v.attr[0] = colour.r, v.attr[1] = colour.g, v.attr[2] = colour.b, v.attr[3] = colour.a;
+    return v;
+  };
+  const std::uint32_t call = setup.add_call(make_call(edge_mode));
+  for (std::size_t i = 0; i < edges.size();) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return;
+    const auto [a, b, t] = edges[i];
+    std::size_t j = i + 1;
+    while (j < edges.size() && std::get<0>(edges[j]) == a && std::get<1>(edges[j]) == b) ++j;
+    const std::size_t faces = j - i;
+    bool feature = faces != 2;
+    if (faces == 2) {
+      const Vec3 n0 = face_normal(t), n1 = face_normal(std::get<2>(edges[i + 1]));
+      // A degenerate face has no normal (NaN): its edges are not creases of it.
+      feature = dot(n0, n1) < cos_crease;
+    }
+    i = j;
+    if (!feature || ((view.outside[a] | view.outside[b]) & 0x80)) continue;
+    ClipVertex va = pulled(a), vb = pulled(b);
+    if (!(std::isfinite(va.w) && std::isfinite(vb.w))) continue;
+    add_segment(view, va, vb, edge_mode, call, mesh.edges.width, setup);
   }
 }
 
@@ -382,6 +497,7 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
   if (!view.project(meter)) return;
   if (!mesh.wireframe && !mesh.triangles.empty()) add_triangles(view, draw.mode, setup, meter);
   add_lines(view, draw.line_mode, setup, meter);
+  if (draw.edge_mode.depth) add_edges(view, draw.edge_mode, setup, meter);
 }
 
 }  // namespace raster::detail

@@ -1,9 +1,12 @@
 // OBJ models: text -> Mesh, through tinyobjloader, after validating what tinyobjloader 2.0.0~rc10 does not
 // (face indices: negative ones are CVE-2020-28589, out-of-range positive ones only warn).
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <string>
 
 #include <tiny_obj_loader.h>
@@ -53,6 +56,14 @@ bool check_index(std::string_view text, std::int64_t defined, const char* what, 
   return true;
 }
 
+// A number as OBJ writers print it: what strtod reads, whole, including a leading '+' ("+1", assimp's
+// number_formats.obj), which std::from_chars alone refuses.
+bool obj_number(std::string_view word, double& d) {
+  if (word.size() > 1 && word[0] == '+' && word[1] != '-' && word[1] != '+') word.remove_prefix(1);
+  const auto [p, ec] = std::from_chars(word.data(), word.data() + word.size(), d);
+  return ec == std::errc() && p == word.data() + word.size() && std::isfinite(d);
+}
+
 struct Counts {
   std::int64_t v = 0, vt = 0, vn = 0, faces = 0, segments = 0, points = 0;
 };
@@ -75,14 +86,18 @@ Counts prescan(std::string_view text, const Limits& limits) {
       if (w.size() < 4) model_error(line_no, "a vertex needs x y z");
       for (std::size_t k = 1; k < w.size() && k <= 6; ++k) {
         double d = 0;
-        const auto [p, ec] = std::from_chars(w[k].data(), w[k].data() + w[k].size(), d);
-        if (ec != std::errc() || p != w[k].data() + w[k].size() || !std::isfinite(d) ||
-            std::fabs(d) > kMaxCoordinate)
+        if (!obj_number(w[k], d) || std::fabs(d) > kMaxCoordinate)
           model_error(line_no, "vertex component \"" + std::string(w[k]) +
                                    "\" is not a finite number within +-3.4e38");
       }
       ++n.v;
     } else if (key == "vt") {
+      if (w.size() < 2) model_error(line_no, "a texture coordinate needs u (and v)");
+      for (std::size_t k = 1; k < w.size() && k <= 3; ++k) {
+        double d = 0;
+        if (!obj_number(w[k], d))
+          model_error(line_no, "texture coordinate \"" + std::string(w[k]) + "\" is not a finite number");
+      }
       ++n.vt;
     } else if (key == "vn") {
       if (w.size() < 4) model_error(line_no, "a normal needs x y z");
@@ -124,13 +139,189 @@ Counts prescan(std::string_view text, const Limits& limits) {
   return n;
 }
 
+// ---- MTL: what tinyobjloader 2.0.0~rc10 reads differently from the MTL spec and from the files people
+// have, fixed in one pass over the text before it sees it (one output line per input line, so its line
+// numbers stay the file's):
+//  - keywords are case-insensitive ("map_KD", "KD" from some exporters): spelled as tinyobjloader expects;
+//  - trailing blanks (and a CR) are removed: tinyobjloader keeps a blank before the CR in names;
+//  - map_Kd is read here, not by tinyobjloader: its options take 1-3 numbers ("-s 2 2 file.png" would
+//    make tinyobjloader read "file.png" as the third number), names may hold spaces, and a path is
+//    reduced to its file name (textures arrive as uploads named by file, never from this disk). Without
+//    Kd, a map_Kd is shown as it is (Kd = 1), not darkened to tinyobjloader's 0.6.
+
+/// A material's diffuse map as the MTL gives it.
+struct DiffuseMap {
+  std::string file;     ///< file name without folders
+  std::size_t line = 0;  ///< MTL line, for errors
+  bool clamp = false;
+  std::array<float, 2> scale{1, 1}, offset{0, 0};
+};
+
+/// What the MTL pass learns per material (by name, as tinyobjloader names it).
+struct MaterialExtra {
+  bool has_kd = false;
+  bool has_map = false;
+  DiffuseMap map;
+};
+
+struct MtlPass {
+  std::string text;  ///< for tinyobjloader
+  std::map<std::string, MaterialExtra, std::less<>> materials;
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+bool is_number(std::string_view w, double* out = nullptr) {
+  double d = 0;
+  const auto [p, ec] = std::from_chars(w.data(), w.data() + w.size(), d);
+  if (ec != std::errc() || p != w.data() + w.size() || !std::isfinite(d)) return false;
+  if (out) *out = d;
+  return true;
+}
+
+[[noreturn]] void mtl_error(std::size_t line, const std::string& message) {
+  model_error(0, "the materials (MTL), line " + std::to_string(line) + ": " + message);
+}
+
+// "map_Kd [options] file name": the options of the MTL spec with their argument counts, then the name.
+DiffuseMap read_diffuse_map(std::string_view rest, std::size_t line) {
+  DiffuseMap map;
+  map.line = line;
+  std::size_t i = 0;
+  auto next_word = [&](std::size_t& start) {
+    while (i < rest.size() && is_space(rest[i])) ++i;
+    start = i;
+    while (i < rest.size() && !is_space(rest[i])) ++i;
+    return rest.substr(start, i - start);
+  };
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t before = i;
+    const std::string_view w = next_word(start);
+    if (w.empty()) mtl_error(line, "map_Kd names no texture file");
+    if (w.size() < 2 || w[0] != '-' || !std::isalpha(static_cast<unsigned char>(w[1]))) {
+      i = before;
+      break;  // the file name starts here
+    }
+    std::size_t at = 0;
+    auto numbers = [&](int min, int most, float* into) {
+      int n = 0;
+      for (; n < most; ++n) {
+        const std::size_t keep = i;
+        double d = 0;
+        if (!is_number(next_word(at), &d)) {
+          i = keep;
+          break;
+        }
+        if (into) into[n] = static_cast<float>(d);
+      }
+      if (n < min) mtl_error(line, "map_Kd option " + std::string(w) + " needs a number");
+    };
+    if (iequals(w, "-clamp") || iequals(w, "-blendu") || iequals(w, "-blendv") || iequals(w, "-cc")) {
+      const std::string_view v = next_word(at);
+      if (!iequals(v, "on") && !iequals(v, "off"))
+        mtl_error(line, "map_Kd option " + std::string(w) + " takes on or off, got \"" + std::string(v) + "\"");
+      if (iequals(w, "-clamp")) map.clamp = iequals(v, "on");
+    } else if (iequals(w, "-s")) {
+      float v[3] = {1, 1, 1};
+      numbers(1, 3, v);
+      map.scale = {v[0], v[1]};
+    } else if (iequals(w, "-o")) {
+      float v[3] = {0, 0, 0};
+      numbers(1, 3, v);
+      map.offset = {v[0], v[1]};
+    } else if (iequals(w, "-t")) {
+      numbers(1, 3, nullptr);
+    } else if (iequals(w, "-mm")) {
+      numbers(2, 2, nullptr);
+    } else if (iequals(w, "-bm") || iequals(w, "-boost") || iequals(w, "-texres")) {
+      numbers(1, 1, nullptr);
+    } else if (iequals(w, "-imfchan") || iequals(w, "-type") || iequals(w, "-colorspace")) {
+      next_word(at);
+    } else {
+      mtl_error(line, "map_Kd option " + std::string(w) + " is not an MTL texture option");
+    }
+  }
+  std::string name(trim(rest.substr(i)));
+  std::replace(name.begin(), name.end(), '\\', '/');
+  if (const std::size_t slash = name.rfind('/'); slash != std::string::npos) name.erase(0, slash + 1);
+  name = std::string(trim(name));
+  if (name.empty()) mtl_error(line, "map_Kd names a folder, not a texture file");
+  map.file = std::move(name);
+  return map;
+}
+
+MtlPass read_mtl(std::string_view mtl) {
+  // Keywords tinyobjloader matches, in its spelling; any case is accepted in the file.
+  static constexpr std::string_view kKeywords[] = {
+      "newmtl", "Ka", "Kd", "Ks", "Ke", "Kt", "Tf", "Ns", "Ni", "d", "Tr", "illum", "map_Ka", "map_Ks", "map_Ns",
+      "map_d", "map_bump", "bump", "disp", "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor",
+      "map_Pr", "map_Pm", "map_Ps", "map_Ke"};
+  MtlPass out;
+  out.text.reserve(mtl.size());
+  MaterialExtra* current = nullptr;
+  std::size_t line_no = 0;
+  for (std::size_t pos = 0; pos <= mtl.size();) {
+    std::size_t end = mtl.find('\n', pos);
+    if (end == std::string_view::npos) end = mtl.size();
+    const std::string_view line = trim(mtl.substr(pos, end - pos));
+    pos = end + 1;
+    ++line_no;
+    std::size_t k = 0;
+    while (k < line.size() && !is_space(line[k])) ++k;
+    const std::string_view key = line.substr(0, k), rest = trim(line.substr(k));
+    if (iequals(key, "map_Kd")) {
+      if (current) current->has_map = true, current->map = read_diffuse_map(rest, line_no);
+      out.text += '\n';
+      continue;
+    }
+    std::string_view spelled = key;
+    for (std::string_view known : kKeywords)
+      if (iequals(key, known)) spelled = known;
+    if (spelled == "newmtl") current = &out.materials[std::string(rest)];
+    if (spelled == "Kd" && current) current->has_kd = true;
+    out.text.append(spelled).append(rest.empty() ? "" : " ").append(rest) += '\n';
+  }
+  return out;
+}
+
+// The texture `file` among the uploads: by exact name, else by a name that differs only in case (models
+// made on Windows name "Head.PNG" for "head.png").
+const std::string* find_image(const Uploads& images, const std::string& file) {
+  if (auto it = images.find(file); it != images.end()) return &it->second;
+  const std::string* found = nullptr;
+  for (const auto& [name, bytes] : images)
+    if (iequals(name, file)) {
+      if (found) return nullptr;  // ambiguous
+      found = &bytes;
+    }
+  return found;
+}
+
+std::string names_of(const Uploads& images) {
+  if (images.empty()) return "none";
+  std::string out;
+  for (const auto& [name, bytes] : images) out += (out.empty() ? "\"" : ", \"") + name + "\"";
+  return out;
+}
+
 std::uint8_t unit_byte(double v) {
   return static_cast<std::uint8_t>(std::floor(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5));
 }
 
 }  // namespace
 
-Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits) {
+Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits, const Uploads& images) {
   // Checked first: names and tokens of the model are quoted in its errors.
   require_utf8(obj_text, "the model (OBJ)", true);
   require_utf8(mtl_text, "the materials (MTL)", true);
@@ -140,12 +331,14 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     model_error(0, counts.points ? "the model has only points ('p'); rasterd draws faces and lines"
                                  : "the model has no faces ('f') or lines ('l') to draw");
 
+  const MtlPass mtl = read_mtl(mtl_text);
+
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;  // colours only where the file has them (no white fallback)
   tinyobj::ObjReader reader;
   // From memory: a `mtllib` line reads the uploaded MTL text, never a file named in the upload.
-  if (!reader.ParseFromString(std::string(obj_text), std::string(mtl_text), config))
+  if (!reader.ParseFromString(std::string(obj_text), mtl.text, config))
     model_error(0, "the model could not be parsed: " + reader.Error());
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
@@ -163,6 +356,41 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   }
 
   const auto& materials = reader.GetMaterials();
+  // Per material: its MTL extras, and the index of its texture in mesh.textures once decoded (each file
+  // decoded once, however many materials use it), -1 without one.
+  std::vector<const MaterialExtra*> extras(materials.size(), nullptr);
+  std::vector<std::int32_t> material_texture(materials.size(), -1);
+  std::map<std::string, std::int32_t, std::less<>> decoded;
+  std::int64_t budget = limits.max_texture_pixels;
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const auto it = mtl.materials.find(materials[m].name);
+    if (it == mtl.materials.end()) continue;
+    extras[m] = &it->second;
+    if (!it->second.has_map) continue;
+    const DiffuseMap& map = it->second.map;
+    if (auto d = decoded.find(map.file); d != decoded.end()) {
+      material_texture[m] = d->second;
+      continue;
+    }
+    const std::string* bytes = find_image(images, map.file);
+    if (!bytes)
+      model_error(0, "the materials (MTL) line " + std::to_string(map.line) + " asks for texture \"" + map.file +
+                         "\" (map_Kd), which was not sent; sent: " + names_of(images) +
+                         ". Send it as a multipart part with that file name (curl -F 'texture=@" + map.file + "')");
+    Texture texture = decode_texture(*bytes, map.file, budget);
+    budget -= std::int64_t{texture.width} * texture.height;
+    texture.clamp = map.clamp, texture.scale = map.scale, texture.offset = map.offset;
+    material_texture[m] = decoded[map.file] = static_cast<std::int32_t>(mesh.textures.size());
+    mesh.textures.push_back(std::move(texture));
+  }
+  const std::size_t texcoords = attrib.texcoords.size() / 2;
+  if (!mesh.textures.empty()) {
+    mesh.uvs.reserve(texcoords + 1);
+    for (std::size_t i = 0; i < texcoords; ++i)
+      mesh.uvs.push_back({static_cast<float>(attrib.texcoords[2 * i]), static_cast<float>(attrib.texcoords[2 * i + 1])});
+    mesh.uvs.push_back({0, 0});  // for faces without "vt" references (drawn untextured)
+  }
+  const auto no_uv = static_cast<std::uint32_t>(texcoords);
   bool any_material = false, all_normals = true;
   std::vector<Rgba8> face_colors;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
@@ -179,13 +407,29 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
                                          static_cast<std::uint32_t>(c[1].normal_index),
                                          static_cast<std::uint32_t>(c[2].normal_index)});
       const int m = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
-      if (m >= 0 && static_cast<std::size_t>(m) < materials.size()) {
+      // tinyobjloader makes a black material of its own for a `usemtl` the MTL does not define (or with no
+      // MTL at all, as assimp's empty_mat.obj): such faces keep the default grey, like faces without one.
+      const bool material = m >= 0 && static_cast<std::size_t>(m) < materials.size() && extras[m];
+      if (material) {
         any_material = true;
         const auto& kd = materials[m].diffuse;
-        face_colors.push_back(
-            {unit_byte(kd[0]), unit_byte(kd[1]), unit_byte(kd[2]), unit_byte(materials[m].dissolve)});
+        // MTL: the texture is multiplied by Kd; a map without Kd is shown as it is.
+        const bool white = extras[m] && extras[m]->has_map && !extras[m]->has_kd;
+        face_colors.push_back({white ? std::uint8_t{255} : unit_byte(kd[0]), white ? std::uint8_t{255} : unit_byte(kd[1]),
+                               white ? std::uint8_t{255} : unit_byte(kd[2]), unit_byte(materials[m].dissolve)});
       } else {
         face_colors.push_back({204, 204, 204, 255});  // the default light grey
+      }
+      if (!mesh.textures.empty()) {
+        const bool has_uv = c[0].texcoord_index >= 0 && c[1].texcoord_index >= 0 && c[2].texcoord_index >= 0;
+        const std::int32_t texture = material && has_uv ? material_texture[m] : -1;
+        mesh.face_textures.push_back(texture);
+        if (texture >= 0)
+          mesh.uv_triangles.push_back({static_cast<std::uint32_t>(c[0].texcoord_index),
+                                       static_cast<std::uint32_t>(c[1].texcoord_index),
+                                       static_cast<std::uint32_t>(c[2].texcoord_index)});
+        else
+          mesh.uv_triangles.push_back({no_uv, no_uv, no_uv});
       }
     }
     const auto& li = shape.lines.indices;
@@ -213,6 +457,10 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   for (const auto& t : mesh.normal_triangles)
     for (std::uint32_t i : t)
       if (i >= mesh.normals.size()) model_error(0, "a face refers to a normal the model does not define");
+  for (const auto& t : mesh.uv_triangles)
+    for (std::uint32_t i : t)
+      if (i >= mesh.uvs.size())
+        model_error(0, "a face refers to a texture coordinate the model does not define");
   if (mesh.triangles.empty() && mesh.segments.empty())
     model_error(0, "the model has no faces or lines to draw");
   return mesh;

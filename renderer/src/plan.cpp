@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "texture.h"
 #include "vecmath.h"
 
 namespace raster {
@@ -100,11 +101,24 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   v.fov_deg = cam.fov_deg;
   v.up = cam.up;
   v.target = cam.has_target ? cam.target : centre;
+  // The side a fitted eye is on, and the up that goes with it when the scene gives none.
+  Vec3 side_of_view{0, 0, 1};
+  switch (cam.view) {
+    case View::front: side_of_view = {0, 0, 1}; break;
+    case View::back: side_of_view = {0, 0, -1}; break;
+    case View::right: side_of_view = {1, 0, 0}; break;
+    case View::left: side_of_view = {-1, 0, 0}; break;
+    case View::top: side_of_view = {0, 1, 0}; break;
+    case View::bottom: side_of_view = {0, -1, 0}; break;
+    case View::iso: side_of_view = normalize(Vec3{1, 1, 1}); break;
+  }
+  if (!cam.has_up && cam.view == View::top) v.up = {0, 0, -1};  // the front edge at the bottom, as in CAD
+  if (!cam.has_up && cam.view == View::bottom) v.up = {0, 0, 1};
   const double half = cam.fov_deg * std::numbers::pi / 360.0;
   // Distance at which the bounding sphere fits the narrower of the two fields of view.
   const double tan_fit = std::min(std::tan(half), std::tan(half) * aspect);
   const double fit_distance = radius * std::sqrt(1 + tan_fit * tan_fit) / tan_fit;
-  v.eye = cam.has_eye ? cam.eye : v.target + Vec3{0, 0, fit_distance + length(v.target - centre)};
+  v.eye = cam.has_eye ? cam.eye : v.target + side_of_view * (fit_distance + length(v.target - centre));
   const Vec3 forward = normalize(v.target - v.eye);
   if (length(forward) == 0)  // only a fitted target can meet a given eye: validate() rejects the rest
     camera_error("/camera/eye", "\"eye\" and \"target\" are the same point: the camera has no view direction");
@@ -151,10 +165,22 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
     proj(2, 2) = 1 / (f - n), proj(2, 3) = f / (f - n);  // z = (f - d) / (f - n), w = 1
   }
   v.world_to_clip = proj * view;
-  // The headlight travels along the view direction; to_light points back at its source.
-  const Vec3 travel = scene.light.headlight ? forward : normalize(scene.light.direction);
-  v.to_light = travel * -1.0;
-  v.ambient = scene.light.ambient;
+  // Lights into world space: a camera-space vector (x right, y up, z toward the viewer) is the same
+  // combination of the view's own axes.
+  auto from_camera = [&](const Vec3& c) { return side * c.x + up * c.y - forward * c.z; };
+  for (const Light& light : scene.lights.empty() ? default_lights() : scene.lights) {
+    LightPlan l;
+    l.kind = light.kind;
+    if (light.kind == LightKind::directional) {
+      const Vec3 travel = normalize(light.camera_space ? from_camera(light.direction) : light.direction);
+      l.to_light = travel * -1.0;
+    }
+    if (light.kind == LightKind::point)
+      l.position = light.camera_space ? v.eye + from_camera(light.position) : light.position;
+    l.rgb[0] = light.color.x * light.intensity, l.rgb[1] = light.color.y * light.intensity;
+    l.rgb[2] = light.color.z * light.intensity;
+    v.lights.push_back(l);
+  }
   return v;
 }
 
@@ -175,6 +201,12 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   std::int64_t work = 0;
 
   bool any_3d = false, any_union = false;
+  // Lit colours stay grey only under grey lights; point lights need the world position of each pixel.
+  bool grey_lights = true, point_lights = false;
+  for (const Light& l : scene.lights) {
+    grey_lights &= l.color.x == l.color.y && l.color.y == l.color.z;
+    point_lights |= l.kind == LightKind::point;
+  }
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& prim = scene.primitives[i];
     DrawPlan draw;
@@ -192,6 +224,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       pp.lit = draws_triangles && mesh.shading != Shading::unlit;
       pp.light_per_pixel = pp.lit && mesh.shading == Shading::smooth;
       pp.compute_normals = pp.light_per_pixel && mesh.normals.empty();
+      pp.position_per_pixel = pp.light_per_pixel && point_lights;
+      grey &= grey_lights || !pp.lit;
       const auto& colors = mesh.face_colors.empty() ? mesh.colors : mesh.face_colors;
       bool varied = false;
       for (const Rgba8& c : colors) {
@@ -202,11 +236,32 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       // Per-pixel work when colours vary per vertex or normals are interpolated; per-face colours and flat
       // lighting give one colour per triangle.
       pp.varying_color = varied && mesh.face_colors.empty() && mesh.colors.size() > 1;
-      pp.smooth = pp.varying_color || (pp.lit && mesh.shading == Shading::smooth);
+      // Textures: sampled per pixel at perspective-correct coordinates, so the mesh takes the smooth path.
+      pp.textured = draws_triangles && !mesh.textures.empty() && !mesh.uv_triangles.empty();
+      if (pp.textured) {
+        for (const Texture& t : mesh.textures) {
+          bool opaque = true, grey_texels = true;
+          for (std::size_t k = 0; k + 3 < t.rgba.size(); k += 4) {
+            opaque &= t.rgba[k + 3] == 255;
+            grey_texels &= t.rgba[k] == t.rgba[k + 1] && t.rgba[k + 1] == t.rgba[k + 2];
+          }
+          pp.blend |= !opaque;
+          grey &= grey_texels;
+          out.memory.texture_bytes += static_cast<std::int64_t>(t.rgba.size()) + detail::mip_bytes(t.width, t.height);
+        }
+        ++out.textured_count;
+      }
+      pp.smooth = pp.varying_color || pp.textured || (pp.lit && mesh.shading == Shading::smooth);
       // Lines (segments, wireframe edges) are unlit; their endpoint colours differ when the colours vary.
       draw.line_mode.depth = true;
       draw.line_mode.blend = pp.blend;
       draw.line_mode.smooth = draw.line_mode.varying_color = varied;
+      if (mesh.edges.enabled && draws_triangles) {
+        draw.edge_mode.depth = true;
+        draw.edge_mode.blend = !mesh.edges.color.is_opaque();
+        draw.edge_mode.line_rectangles = mesh.edges.width != 1;  // (and when multisampled, below)
+        grey &= mesh.edges.color.is_grey();
+      }
       (pp.smooth ? out.smooth_count : out.flat_count) += 1;
       out.blend_count += pp.blend ? 1 : 0;
       out.lit_count += pp.lit ? 1 : 0;
@@ -257,7 +312,10 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   if (scene.area && any_3d)
     for (DrawPlan& d : out.draws) d.mode.union_coverage = false, any_union = false;
   // Multisampled 3D lines are rectangles a pixel wide, so their edges are covered per sample like the rest.
-  for (DrawPlan& d : out.draws) d.line_mode.line_rectangles = d.line_mode.depth && out.samples > 1;
+  for (DrawPlan& d : out.draws) {
+    d.line_mode.line_rectangles = d.line_mode.depth && out.samples > 1;
+    d.edge_mode.line_rectangles |= d.edge_mode.depth && out.samples > 1;
+  }
   if (any_3d) {
     out.depth_buffer = true;
     out.view = resolve_view(scene, static_cast<double>(scene.width) / scene.height);
@@ -334,7 +392,8 @@ std::string explain_json(const RenderPlan& p) {
   j["antialias"] = p.area ? "area" : p.samples > 1 ? "multisample" : "none";
   j["primitives"] = {{"flat", p.flat_count},   {"smooth", p.smooth_count},
                      {"blend", p.blend_count}, {"culled", p.culled_count},
-                     {"lit", p.lit_count},     {"triangles_3d", p.triangles_3d}};
+                     {"lit", p.lit_count},     {"triangles_3d", p.triangles_3d},
+                     {"textured", p.textured_count}};
   if (p.depth_buffer) {
     const ViewPlan& v = p.view;
     j["camera"] = {{"projection", v.projection == Projection::perspective ? "perspective" : "orthographic"},
@@ -346,6 +405,18 @@ std::string explain_json(const RenderPlan& p) {
                    {"far", v.far},
                    {"height", v.height}};
   }
+  if (p.lit_count > 0) {  // in world space, as resolved for this view
+    nlohmann::ordered_json lights = nlohmann::ordered_json::array();
+    for (const LightPlan& l : p.view.lights) {
+      nlohmann::ordered_json o;
+      o["type"] = l.kind == LightKind::ambient ? "ambient" : l.kind == LightKind::point ? "point" : "directional";
+      if (l.kind == LightKind::directional) o["toward_light"] = {l.to_light.x, l.to_light.y, l.to_light.z};
+      if (l.kind == LightKind::point) o["position"] = {l.position.x, l.position.y, l.position.z};
+      o["rgb"] = {l.rgb[0], l.rgb[1], l.rgb[2]};
+      lights.push_back(o);
+    }
+    j["lights"] = lights;
+  }
   j["work"] = p.work;
   j["threads"] = p.threads;
   j["tile"] = p.tile;
@@ -354,6 +425,7 @@ std::string explain_json(const RenderPlan& p) {
                        {"samples", p.memory.sample_bytes},
                        {"tiles", p.memory.tile_bytes},
                        {"coverage", p.memory.coverage_bytes},
+                       {"textures", p.memory.texture_bytes},
                        {"total", p.memory.total()}};
   j["png"] = {{"color_type", p.png.color_type}, {"deflate_level", p.png.deflate_level}};
   return j.dump(2);

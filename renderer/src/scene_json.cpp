@@ -310,7 +310,37 @@ Mat4 read_transform(const json& v, const Path& pointer) {
 
 }  // namespace
 
-// Options shared by "mesh" and "obj": shading, wireframe, cull, transform.
+namespace {
+
+// "edges": true (the defaults) or {"color", "width", "angle"}.
+Edges read_edges(const json& v, const Path& pointer) {
+  Edges e;
+  if (v.is_boolean()) {
+    e.enabled = v.get<bool>();
+    return e;
+  }
+  if (!v.is_object())
+    invalid(pointer, std::string("expected true or {\"color\", \"width\", \"angle\"}, got ") + type_name(v));
+  check_keys(v, pointer, {"color", "width", "angle"});
+  e.enabled = true;
+  if (auto it = v.find("color"); it != v.end()) e.color = read_color(*it, Path(pointer, "color"));
+  if (auto it = v.find("width"); it != v.end()) {
+    const double w = read_number(*it, Path(pointer, "width"));
+    if (!(w > 0 && w <= 64)) invalid(Path(pointer, "width"), "edge width is in (0, 64] pixels; got " + it->dump());
+    e.width = static_cast<float>(w);
+  }
+  if (auto it = v.find("angle"); it != v.end()) {
+    const double a = read_number(*it, Path(pointer, "angle"));
+    if (!(a >= 0 && a <= 180))
+      invalid(Path(pointer, "angle"), "the crease angle is in 0..180 degrees; got " + it->dump());
+    e.crease_deg = static_cast<float>(a);
+  }
+  return e;
+}
+
+}  // namespace
+
+// Options shared by "mesh" and "obj": shading, wireframe, edges, cull, transform.
 void read_mesh_options(const json& v, const Path& pointer, Mesh& mesh) {
   if (auto it = v.find("shading"); it != v.end()) {
     const Path sp(pointer, "shading");
@@ -334,6 +364,7 @@ void read_mesh_options(const json& v, const Path& pointer, Mesh& mesh) {
   }
   if (auto it = v.find("wireframe"); it != v.end())
     mesh.wireframe = read_bool(*it, Path(pointer, "wireframe"));
+  if (auto it = v.find("edges"); it != v.end()) mesh.edges = read_edges(*it, Path(pointer, "edges"));
   if (auto it = v.find("transform"); it != v.end())
     mesh.transform = read_transform(*it, Path(pointer, "transform"));
 }
@@ -397,10 +428,126 @@ std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const Path
   return out;
 }
 
-Mesh read_mesh(const json& v, const Path& pointer, const Limits& limits) {
+// Standard base64 (RFC 4648 section 4, '=' padding optional), or a data URI holding it
+// ("data:image/png;base64,..."). False on any other character.
+bool decode_base64(std::string_view text, std::string& out) {
+  if (text.starts_with("data:")) {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string_view::npos || text.substr(0, comma).find(";base64") == std::string_view::npos)
+      return false;
+    text.remove_prefix(comma + 1);
+  }
+  while (!text.empty() && text.back() == '=') text.remove_suffix(1);
+  if (text.size() % 4 == 1) return false;
+  out.clear();
+  out.reserve(text.size() / 4 * 3 + 2);
+  std::uint32_t acc = 0;
+  int bits = 0;
+  for (const char c : text) {
+    int v;
+    if (c >= 'A' && c <= 'Z') v = c - 'A';
+    else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
+    else if (c >= '0' && c <= '9') v = c - '0' + 52;
+    else if (c == '+') v = 62;
+    else if (c == '/') v = 63;
+    else return false;
+    acc = (acc << 6) | static_cast<std::uint32_t>(v), bits += 6;
+    if (bits >= 8) bits -= 8, out.push_back(static_cast<char>((acc >> bits) & 0xff));
+  }
+  return true;
+}
+
+// Texels the scene's textures hold so far: what is left of the limit is what the next one may take.
+std::int64_t texels_left(const Scene& scene, const Limits& limits) {
+  std::int64_t used = 0;
+  for (const Mesh& m : scene.meshes)
+    for (const Texture& t : m.textures) used += std::int64_t{t.width} * t.height;
+  return limits.max_texture_pixels - used;
+}
+
+// The bytes of an image given as base64 text (JSON string `v` at `pointer`).
+std::string read_base64_image(const json& v, const Path& pointer) {
+  if (!v.is_string())
+    invalid(pointer, std::string("expected the image file as base64 text, got ") + type_name(v));
+  std::string bytes;
+  if (!decode_base64(v.get_ref<const std::string&>(), bytes))
+    invalid(pointer, "not base64 (RFC 4648, '+' and '/', optionally a data: URI)");
+  return bytes;
+}
+
+// A texture error from decode_texture, located at the field that gave the image.
+[[noreturn]] void rethrow_at(const SceneError& e, const Path& pointer) {
+  throw SceneError(e.kind(), e.what(), ErrorLocation{pointer.str(), 0, 0});
+}
+
+// A mesh's "texture": {"data": base64} or {"source": part name}, and "wrap": "repeat" | "clamp".
+Texture read_texture(const json& v, const Path& pointer, const Uploads& uploads, std::int64_t budget) {
+  if (!v.is_object())
+    invalid(pointer, std::string("expected {\"data\": base64} or {\"source\": part name}, got ") + type_name(v));
+  check_keys(v, pointer, {"data", "source", "wrap"});
+  auto data = v.find("data");
+  auto source = v.find("source");
+  if ((data == v.end()) == (source == v.end()))
+    invalid(pointer, "a texture needs \"data\" (the PNG or JPEG file as base64) or \"source\" (an uploaded part)");
+  Texture t;
+  try {
+    if (data != v.end()) {
+      t = decode_texture(read_base64_image(*data, Path(pointer, "data")), "data", budget);
+    } else {
+      const Path sp(pointer, "source");
+      if (!source->is_string())
+        invalid(sp, std::string("expected the name of an uploaded part, got ") + type_name(*source));
+      const std::string& name = source->get_ref<const std::string&>();
+      auto part = uploads.find(name);
+      if (part == uploads.end())
+        invalid(sp, "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
+      t = decode_texture(part->second, name, budget);
+    }
+  } catch (const SceneError& e) {
+    if (!e.where().pointer.empty()) throw;
+    rethrow_at(e, Path(pointer, data != v.end() ? "data" : "source"));
+  }
+  if (auto it = v.find("wrap"); it != v.end()) {
+    if (!it->is_string() || (*it != "repeat" && *it != "clamp"))
+      invalid(Path(pointer, "wrap"), "expected \"repeat\" or \"clamp\", got " + it->dump());
+    t.clamp = *it == "clamp";
+  }
+  return t;
+}
+
+// uvs: [[u, v], ...] or [u, v, u, v, ...], one pair per position.
+std::vector<std::array<float, 2>> read_uvs(const json& v, const Path& pointer, std::size_t positions) {
+  if (!v.is_array())
+    invalid(pointer, std::string("expected an array of [u, v] or of numbers, got ") + type_name(v));
+  std::vector<std::array<float, 2>> out;
+  auto number = [&](const json& e, const Path& p) {
+    const double d = read_number(e, p);
+    if (!(std::fabs(d) <= 1e30)) invalid(p, "a texture coordinate must be a number within +-1e30");
+    return static_cast<float>(d);
+  };
+  if (!v.empty() && v[0].is_number()) {
+    if (v.size() % 2 != 0)
+      invalid(pointer, "a flat list holds u, v pairs; its length " + std::to_string(v.size()) + " is odd");
+    for (std::size_t k = 0; k < v.size(); k += 2)
+      out.push_back({number(v[k], Path(pointer, k)), number(v[k + 1], Path(pointer, k + 1))});
+  } else {
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const Path p(pointer, k);
+      if (!v[k].is_array() || v[k].size() != 2) invalid(p, "expected a texture coordinate [u, v]");
+      out.push_back({number(v[k][0], Path(p, std::size_t{0})), number(v[k][1], Path(p, std::size_t{1}))});
+    }
+  }
+  if (out.size() != positions)
+    invalid(pointer, "\"uvs\" needs one [u, v] per position (" + std::to_string(positions) + "), got " +
+                         std::to_string(out.size()));
+  return out;
+}
+
+Mesh read_mesh(const json& v, const Path& pointer, const Scene& scene, const Limits& limits,
+               const Uploads& uploads) {
   check_keys(v, pointer,
-             {"type", "positions", "indices", "colors", "color", "normals", "shading", "wireframe", "cull",
-              "transform"});
+             {"type", "positions", "indices", "colors", "color", "normals", "uvs", "texture", "shading",
+              "wireframe", "edges", "cull", "transform"});
   Mesh mesh;
   auto pos = v.find("positions");
   if (pos == v.end()) invalid(pointer, "a mesh needs \"positions\"");
@@ -416,6 +563,16 @@ Mesh read_mesh(const json& v, const Path& pointer, const Limits& limits) {
               "\"normals\" needs one normal per position (" + std::to_string(mesh.positions.size()) + ")");
     mesh.normal_triangles = mesh.triangles;
   }
+  auto uvs = v.find("uvs");
+  auto texture = v.find("texture");
+  if ((uvs == v.end()) != (texture == v.end()))
+    invalid(pointer, uvs == v.end() ? "a \"texture\" needs \"uvs\" (one [u, v] per position)"
+                                    : "\"uvs\" are used with a \"texture\"; give both");
+  if (uvs != v.end()) {
+    mesh.uvs = read_uvs(*uvs, Path(pointer, "uvs"), mesh.positions.size());
+    mesh.uv_triangles = mesh.triangles;
+    mesh.textures.push_back(read_texture(*texture, Path(pointer, "texture"), uploads, texels_left(scene, limits)));
+  }
   read_mesh_options(v, pointer, mesh);
   return mesh;
 }
@@ -424,10 +581,11 @@ std::string located(const SceneError& e) {
   return e.where().line ? std::string(e.what()) + " (line " + std::to_string(e.where().line) + ")" : e.what();
 }
 
-Mesh read_obj(const json& v, const Path& pointer, const Limits& limits, const Uploads& uploads) {
-  check_keys(
-      v, pointer,
-      {"type", "data", "source", "mtl", "mtl_source", "color", "shading", "wireframe", "cull", "transform"});
+Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limits& limits,
+              const Uploads& uploads) {
+  check_keys(v, pointer,
+             {"type", "data", "source", "mtl", "mtl_source", "textures", "color", "shading", "wireframe", "edges", "cull",
+              "transform"});
   auto text_of = [&](const char* inline_key, const char* source_key, bool required) -> std::string_view {
     auto data = v.find(inline_key);
     auto source = v.find(source_key);
@@ -458,9 +616,19 @@ Mesh read_obj(const json& v, const Path& pointer, const Limits& limits, const Up
   if (mtl_text.empty() && v.contains("source") && !v.contains("mtl_source"))
     if (auto part = uploads.find("mtl"); part != uploads.end()) mtl_text = part->second;
 
+  // Textures: inline as {"file.png": base64, ...}, else the uploads (multipart parts by file name).
+  Uploads inline_images;
+  if (auto it = v.find("textures"); it != v.end()) {
+    const Path tp(pointer, "textures");
+    if (!it->is_object())
+      invalid(tp, std::string("expected an object of file name: base64 image, got ") + type_name(*it));
+    for (const auto& [name, value] : it->items()) inline_images[name] = read_base64_image(value, Path(tp, name));
+  }
+  Limits model_limits = limits;
+  model_limits.max_texture_pixels = texels_left(scene, limits);
   Mesh mesh;
   try {
-    mesh = parse_obj(obj_text, mtl_text, limits);
+    mesh = parse_obj(obj_text, mtl_text, model_limits, v.contains("textures") ? inline_images : uploads);
   } catch (const SceneError& e) {
     // An encoding error keeps its byte: the offset into the model's own text, which the message names.
     const std::size_t byte = e.kind() == ErrorKind::encoding ? e.where().byte : 0;
@@ -541,8 +709,8 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
   if (type == "mesh" || type == "obj") {
     p.kind = PrimitiveKind::mesh;
     p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
-    scene.meshes.push_back(type == "mesh" ? read_mesh(v, pointer, limits)
-                                          : read_obj(v, pointer, limits, uploads));
+    scene.meshes.push_back(type == "mesh" ? read_mesh(v, pointer, scene, limits, uploads)
+                                          : read_obj(v, pointer, scene, limits, uploads));
     scene.primitives.push_back(p);
     return;
   }
@@ -595,8 +763,22 @@ namespace {
 Camera read_camera(const json& v) {
   const Path pointer(kRoot, "camera");
   if (!v.is_object()) invalid(pointer, std::string("expected a camera object, got ") + type_name(v));
-  check_keys(v, pointer, {"projection", "eye", "target", "up", "fov", "near", "far", "height"});
+  check_keys(v, pointer, {"projection", "view", "eye", "target", "up", "fov", "near", "far", "height"});
   Camera c;
+  if (auto it = v.find("view"); it != v.end()) {
+    static constexpr std::pair<const char*, View> kViews[] = {
+        {"front", View::front}, {"back", View::back},     {"left", View::left}, {"right", View::right},
+        {"top", View::top},     {"bottom", View::bottom}, {"iso", View::iso}};
+    const auto named = it->is_string() ? std::find_if(std::begin(kViews), std::end(kViews),
+                                                      [&](const auto& kv) { return *it == kv.first; })
+                                       : std::end(kViews);
+    if (named == std::end(kViews))
+      invalid(Path(pointer, "view"),
+              "expected \"front\", \"back\", \"left\", \"right\", \"top\", \"bottom\" or \"iso\", got " + it->dump());
+    if (v.contains("eye"))
+      invalid(Path(pointer, "view"), "\"view\" and \"eye\" both place the camera: give one of them");
+    c.view = named->second, c.has_view = true;
+  }
   if (auto it = v.find("projection"); it != v.end()) {
     if (!it->is_string() || (*it != "perspective" && *it != "orthographic"))
       invalid(Path(pointer, "projection"), "expected \"perspective\" or \"orthographic\", got " + it->dump());
@@ -606,7 +788,7 @@ Camera read_camera(const json& v) {
   if (auto it = v.find("target"); it != v.end())
     c.target = read_vec3(*it, Path(pointer, "target")), c.has_target = true;
   if (auto it = v.find("up"); it != v.end()) {
-    c.up = read_vec3(*it, Path(pointer, "up"));
+    c.up = read_vec3(*it, Path(pointer, "up")), c.has_up = true;
     if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0)
       invalid(Path(pointer, "up"), "\"up\" must not be the zero vector");
   }
@@ -637,23 +819,83 @@ Camera read_camera(const json& v) {
   return c;
 }
 
-Light read_light(const json& v) {
+// "light": rasterd 0.1's one directional light plus ambient.
+std::vector<Light> read_light(const json& v) {
   const Path pointer(kRoot, "light");
   if (!v.is_object()) invalid(pointer, std::string("expected a light object, got ") + type_name(v));
   check_keys(v, pointer, {"direction", "ambient"});
-  Light l;
-  if (auto it = v.find("direction"); it != v.end()) {
-    l.direction = read_vec3(*it, Path(pointer, "direction"));
-    l.headlight = false;
-    if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0)
+  double ambient = 0.2;
+  Vec3 direction;
+  const bool directed = v.contains("direction");
+  if (directed) {
+    direction = read_vec3(v["direction"], Path(pointer, "direction"));
+    if (direction.x == 0 && direction.y == 0 && direction.z == 0)
       invalid(Path(pointer, "direction"), "the light direction must not be the zero vector");
   }
   if (auto it = v.find("ambient"); it != v.end()) {
-    l.ambient = read_number(*it, Path(pointer, "ambient"));
-    if (!(l.ambient >= 0 && l.ambient <= 1))
+    ambient = read_number(*it, Path(pointer, "ambient"));
+    if (!(ambient >= 0 && ambient <= 1))
       invalid(Path(pointer, "ambient"), "\"ambient\" is in 0..1; got " + it->dump());
   }
-  return l;
+  return single_light(ambient, directed ? &direction : nullptr);
+}
+
+// "lights": [{"type": "ambient" | "directional" | "point", ...}, ...].
+std::vector<Light> read_lights(const json& v) {
+  const Path pointer(kRoot, "lights");
+  if (!v.is_array()) invalid(pointer, std::string("expected an array of lights, got ") + type_name(v));
+  if (v.empty()) invalid(pointer, "an empty list of lights; leave \"lights\" out for the default ones");
+  if (v.size() > kMaxLights)
+    invalid(pointer, "at most " + std::to_string(kMaxLights) + " lights; got " + std::to_string(v.size()));
+  std::vector<Light> lights;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Path at(pointer, i);
+    const json& o = v[i];
+    if (!o.is_object()) invalid(at, std::string("expected a light object, got ") + type_name(o));
+    Light l;
+    const auto type = o.find("type");
+    if (type == o.end()) invalid(at, "missing \"type\": \"ambient\", \"directional\" or \"point\"");
+    if (*type == "ambient") {
+      l.kind = LightKind::ambient;
+      check_keys(o, at, {"type", "color", "intensity"});
+    } else if (*type == "directional") {
+      l.kind = LightKind::directional;
+      check_keys(o, at, {"type", "direction", "space", "color", "intensity"});
+    } else if (*type == "point") {
+      l.kind = LightKind::point;
+      check_keys(o, at, {"type", "position", "space", "color", "intensity"});
+    } else {
+      invalid(Path(at, "type"), "expected \"ambient\", \"directional\" or \"point\", got " + type->dump());
+    }
+    if (auto it = o.find("space"); it != o.end()) {
+      if (*it != "world" && *it != "camera")
+        invalid(Path(at, "space"), "expected \"world\" or \"camera\", got " + it->dump());
+      l.camera_space = *it == "camera";
+    }
+    if (auto it = o.find("direction"); it != o.end()) {
+      l.direction = read_vec3(*it, Path(at, "direction"));
+      if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0)
+        invalid(Path(at, "direction"), "the light direction must not be the zero vector");
+    }
+    if (l.kind == LightKind::point) {
+      const auto it = o.find("position");
+      if (it == o.end()) invalid(at, "a point light needs \"position\": [x, y, z]");
+      l.position = read_vec3(*it, Path(at, "position"));
+    }
+    if (auto it = o.find("color"); it != o.end()) {
+      const Rgba8 c = read_color(*it, Path(at, "color"));
+      if (c.a != 255) invalid(Path(at, "color"), "a light's colour is opaque (it has no alpha)");
+      l.color = {c.r / 255.0, c.g / 255.0, c.b / 255.0};
+    }
+    if (auto it = o.find("intensity"); it != o.end()) {
+      l.intensity = read_number(*it, Path(at, "intensity"));
+      if (!(l.intensity >= 0 && l.intensity <= kMaxLightIntensity))
+        invalid(Path(at, "intensity"),
+                "\"intensity\" is in 0.." + std::to_string(static_cast<int>(kMaxLightIntensity)) + "; got " + it->dump());
+    }
+    lights.push_back(l);
+  }
+  return lights;
 }
 
 // Byte offset (1-based) of the first bracket that opens level max_depth + 1, skipping strings.
@@ -732,7 +974,8 @@ json parse_document(std::string_view text, int max_depth) {
 
 void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
   if (!doc.is_object()) invalid(kRoot, std::string("a scene is a JSON object, got ") + type_name(doc));
-  check_keys(doc, kRoot, {"width", "height", "background", "antialias", "primitives", "camera", "light"});
+  check_keys(doc, kRoot,
+             {"width", "height", "background", "antialias", "primitives", "camera", "light", "lights"});
   auto read_side = [&](const char* key, int max_side) {
     auto it = doc.find(key);
     const Path pointer(kRoot, key);
@@ -768,7 +1011,12 @@ void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
     scene.background = read_color(*it, Path(kRoot, "background"));
 
   if (auto it = doc.find("camera"); it != doc.end()) scene.camera = read_camera(*it);
-  if (auto it = doc.find("light"); it != doc.end()) scene.light = read_light(*it);
+  if (auto it = doc.find("light"); it != doc.end()) {
+    if (doc.contains("lights"))
+      invalid(Path(kRoot, "lights"), "\"light\" (one light) and \"lights\" (a list) exclude each other");
+    scene.lights = read_light(*it);
+  }
+  if (auto it = doc.find("lights"); it != doc.end()) scene.lights = read_lights(*it);
 }
 
 Scene parse_scene_dom(std::string_view text, const Limits& limits, const Uploads& uploads) {

@@ -37,12 +37,22 @@ void check_references(const Scene& scene) {
     for (const auto& s : m.segments) ok = ok && s[0] < n && s[1] < n;
     for (const auto& t : m.normal_triangles)
       ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
+    ok = ok && (m.uv_triangles.empty() || m.uv_triangles.size() == m.triangles.size()) &&
+         (m.face_textures.empty() || m.face_textures.size() == m.triangles.size());
+    for (const auto& t : m.uv_triangles) ok = ok && t[0] < m.uvs.size() && t[1] < m.uvs.size() && t[2] < m.uvs.size();
+    for (const auto& uv : m.uvs) ok = ok && std::isfinite(uv[0]) && std::isfinite(uv[1]);
+    for (std::int32_t f : m.face_textures) ok = ok && f >= -1 && f < static_cast<std::int32_t>(m.textures.size());
+    for (const Texture& t : m.textures)
+      ok = ok && t.width >= 1 && t.height >= 1 && t.width <= kMaxTextureSide && t.height <= kMaxTextureSide &&
+           t.rgba.size() == std::size_t(t.width) * std::size_t(t.height) * 4 && std::isfinite(t.scale[0]) &&
+           std::isfinite(t.scale[1]) && std::isfinite(t.offset[0]) && std::isfinite(t.offset[1]);
     for (const Vec3& q : m.positions)
       ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate &&
            std::fabs(q.z) <= kMaxCoordinate;
     if (!ok)
       throw SceneError(ErrorKind::invalid,
-                       "mesh has indices, colours or normals that do not match its positions", {where, 0, 0});
+                       "mesh has indices, colours, normals, texture coordinates or textures that do not match its "
+                       "positions", {where, 0, 0});
   }
   // Scenes built in code skip the parser's checks; coverage relies on these bounds.
   for (std::size_t i = 0; i < scene.points.size(); ++i) {
@@ -68,13 +78,44 @@ void check_camera_and_light(const Scene& scene) {
     invalid("/camera/height", "\"height\" (orthographic view height) must be > 0");
   if (c.has_eye && c.has_target && c.eye == c.target)
     invalid("/camera/target", "\"eye\" and \"target\" are the same point: the camera has no view direction");
-  const Light& l = scene.light;
-  if (!l.headlight && l.direction == Vec3{})
-    invalid("/light/direction", "the light direction must not be the zero vector");
-  if (!(l.ambient >= 0 && l.ambient <= 1)) invalid("/light/ambient", "\"ambient\" is in 0..1");
+  if (scene.lights.size() > kMaxLights)
+    invalid("/lights", "at most " + std::to_string(kMaxLights) + " lights");
+  for (const Light& l : scene.lights) {
+    const double d = std::hypot(l.direction.x, l.direction.y, l.direction.z);
+    if (l.kind == LightKind::directional && !(d > 0 && std::isfinite(d)))
+      invalid("/lights", "a directional light's direction must be finite and not the zero vector");
+    if (l.kind == LightKind::point && !std::isfinite(std::hypot(l.position.x, l.position.y, l.position.z)))
+      invalid("/lights", "a point light's position must be finite");
+    if (!(l.intensity >= 0 && l.intensity <= kMaxLightIntensity)) invalid("/lights", "intensity out of range");
+    for (double c : {l.color.x, l.color.y, l.color.z})
+      if (!(c >= 0 && c <= 1)) invalid("/lights", "light colour components are in 0..1");
+  }
+}
+
+
+// A light of `kind` and `intensity`; camera-space directional lights travel `direction`.
+Light make_light(LightKind kind, double intensity, bool camera_space = false, Vec3 direction = {0, 0, -1}) {
+  Light l;
+  l.kind = kind, l.intensity = intensity, l.camera_space = camera_space, l.direction = direction;
+  return l;
 }
 
 }  // namespace
+
+std::vector<Light> default_lights() {
+  return {
+      make_light(LightKind::ambient, 0.35),
+      // From the viewer's upper left, as a photographer's key: travels right, down and away from the viewer.
+      make_light(LightKind::directional, 0.45, true, {1, -1, -1}),
+      // Along the view direction: every face seen gets some light, so none is left black.
+      make_light(LightKind::directional, 0.25, true, {0, 0, -1}),
+  };
+}
+
+std::vector<Light> single_light(double ambient, const Vec3* direction) {
+  if (direction) return {make_light(LightKind::ambient, ambient), make_light(LightKind::directional, 1 - ambient, false, *direction)};
+  return {make_light(LightKind::ambient, ambient), make_light(LightKind::directional, 1 - ambient, true)};  // the headlight
+}
 
 void validate(const Scene& scene) {
   if (scene.width < 1 || scene.height < 1)

@@ -60,6 +60,8 @@ AttributeLayout AttributeLayout::of(const PrimitivePlan& mode) {
     if (mode.smooth) l.inv_w = l.size, l.size += 3;
   }
   if (mode.light_per_pixel) l.normal = l.size, l.size += 9;
+  if (mode.textured) l.uv = l.size, l.size += 6;
+  if (mode.position_per_pixel) l.position = l.size, l.size += 9;
   return l;
 }
 
@@ -117,6 +119,8 @@ void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool
     if (layout.depth >= 0) out[layout.depth + k] = v[k]->depth;
     if (layout.inv_w >= 0) out[layout.inv_w + k] = v[k]->inv_w;
     if (layout.normal >= 0) std::copy(v[k]->normal, v[k]->normal + 3, out + layout.normal + 3 * k);
+    if (layout.uv >= 0) std::copy(v[k]->uv, v[k]->uv + 2, out + layout.uv + 2 * k);
+    if (layout.position >= 0) std::copy(v[k]->position, v[k]->position + 3, out + layout.position + 3 * k);
   }
   r.call = call;
   r.back_facing = back_facing;

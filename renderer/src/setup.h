@@ -4,12 +4,15 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
+#include <span>
 #include <type_traits>
 #include <vector>
 
 #include "raster/plan.h"
 #include "raster/scene.h"
 #include "stop.h"
+#include "texture.h"
 #include "wide.h"
 
 namespace raster::detail {
@@ -73,8 +76,10 @@ struct Surface {
 ///   depth: 3 x z/w                         (mode.depth)
 ///   inv_w: 3 x 1/w                         (mode.depth && mode.smooth)
 ///   normal: 3 x xyz                        (mode.light_per_pixel)
+///   uv: 3 x (u, v)                         (mode.textured)
+///   position: 3 x xyz                      (mode.position_per_pixel)
 struct AttributeLayout {
-  int color = 0, depth = -1, inv_w = -1, normal = -1, size = 0;
+  int color = 0, depth = -1, inv_w = -1, normal = -1, uv = -1, position = -1, size = 0;
   static AttributeLayout of(const PrimitivePlan& mode);
 };
 
@@ -82,9 +87,10 @@ struct AttributeLayout {
 struct DrawCall {
   PrimitivePlan mode;
   AttributeLayout layout;  ///< what its records' attributes hold (set by Setup::add_call from the mode)
-  /// 3D lighting: unit world vector toward the light, and the ambient term in [0, 1].
-  double to_light[3] = {0, 0, 1};
-  double ambient = 0.2;
+  /// 3D lighting: the view's lights (ViewPlan::lights, which outlives the render).
+  std::span<const LightPlan> lights;
+  /// Textured modes: the texture its triangles sample (in Setup::textures), or nullptr for faces without one.
+  const MipChain* texture = nullptr;
 };
 
 /// A draw call for `mode`, lighting at its defaults.
@@ -102,6 +108,8 @@ struct SetupVertex {
   float depth = 0;      ///< 3D: z / w in [0, 1], 1 at the near plane (reversed)
   float inv_w = 1;      ///< 3D: 1 / w, for perspective-correct interpolation
   float normal[3] = {};  ///< 3D per-pixel lighting: world-space unit normal
+  float uv[2] = {};      ///< 3D textured: texture coordinates (scene.h: Mesh::uvs)
+  float position[3] = {};  ///< 3D lit by a point light per pixel: world position
 };
 
 /// Edge functions of one triangle on the 1/256 px grid, in the triangle's own integer type T (int64 for the
@@ -157,6 +165,7 @@ struct Setup {
   std::vector<float> attributes;
   std::vector<LineRecord> lines;
   std::vector<RecordRef> order;  ///< every record once, in the order the scene draws them
+  std::deque<MipChain> textures;  ///< the mip chains textured calls sample (a deque: calls point into it)
   int width = 0, height = 0;     ///< the image, pixels
 
   /// Adds a draw call; returns its index.

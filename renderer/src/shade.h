@@ -190,10 +190,23 @@ struct ByteMasks {
 template <int C>
 inline constexpr ByteMasks<C> kByteMasks{};
 
-/// Lambert with ambient: ambient + (1 - ambient) max(0, n . to_light) for a unit normal n. Used per face by
-/// geometry (flat lighting) and per pixel below.
-inline double lambert(double n_dot_l, double ambient) {
-  return ambient + (1 - ambient) * std::max(0.0, n_dot_l);
+/// Lambert under the view's lights (scene.h: Light): `out` = the sum over lights of colour x intensity x
+/// (ambient: 1; directional, point: max(0, n . toward the light)), for the unit normal n of the side seen at
+/// world point p. Used per face by geometry (flat lighting) and per pixel below.
+inline void light_at(std::span<const LightPlan> lights, const double (&n)[3], const double (&p)[3],
+                     double (&out)[3]) {
+  out[0] = out[1] = out[2] = 0;
+  for (const LightPlan& l : lights) {
+    double f = 1;
+    if (l.kind == LightKind::directional) {
+      f = std::max(0.0, n[0] * l.to_light.x + n[1] * l.to_light.y + n[2] * l.to_light.z);
+    } else if (l.kind == LightKind::point) {
+      const double d[3] = {l.position.x - p[0], l.position.y - p[1], l.position.z - p[2]};
+      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      f = len > 0 ? std::max(0.0, (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / len) : 1;  // at the lamp: lit
+    }
+    for (int c = 0; c < 3; ++c) out[c] += l.rgb[c] * f;
+  }
 }
 
 /// Shades the blocks of one triangle record inside one tile. Made per record per tile: everything that
@@ -212,6 +225,11 @@ class TriangleShader {
     depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
     inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;
     normal_at_ = layout.normal >= 0 ? attr_ + layout.normal : nullptr;
+    position_at_ = layout.position >= 0 ? attr_ + layout.position : nullptr;
+    if (layout.uv >= 0 && call.texture) {
+      uv_at_ = attr_ + layout.uv;
+      for (int k = 0; k < 3; ++k) dl_dx_[k] = step_x[k] / area, dl_dy_[k] = step_y[k] / area;
+    }
     flat_ = {to_byte(attr_[0]), to_byte(attr_[1]), to_byte(attr_[2]), to_byte(attr_[3])};
     kind_ = depth_at_ ? Kind::depth : mode_.varying_color ? Kind::smooth : Kind::flat;
     if (msaa_ && depth_at_) {
@@ -782,17 +800,43 @@ class TriangleShader {
       for (int c = 0; c < 4; ++c) rgba[c] = q[0] * attr_[c] + q[1] * attr_[4 + c] + q[2] * attr_[8 + c];
     else
       for (int c = 0; c < 4; ++c) rgba[c] = attr_[c];
+    if (uv_at_) texture(l, sum, rgba);
     if (normal_at_) {
       const float* n = normal_at_;
-      double nrm[3];
+      double nrm[3], p[3] = {0, 0, 0}, shade[3];
       for (int c = 0; c < 3; ++c) nrm[c] = q[0] * n[c] + q[1] * n[3 + c] + q[2] * n[6 + c];
       const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-      const double* L = call_.to_light;
-      const double n_dot_l = len > 0 ? flip_ * (nrm[0] * L[0] + nrm[1] * L[1] + nrm[2] * L[2]) / len : 0;
-      const double shade = lambert(n_dot_l, call_.ambient);
-      for (int c = 0; c < 3; ++c) rgba[c] *= shade;
+      // A degenerate interpolated normal (opposite vertex normals cancelling) gets the ambient light only.
+      const double scale = len > 0 ? flip_ / len : 0;
+      for (double& c : nrm) c *= scale;
+      if (position_at_)
+        for (int c = 0; c < 3; ++c)
+          p[c] = q[0] * position_at_[c] + q[1] * position_at_[3 + c] + q[2] * position_at_[6 + c];
+      light_at(call_.lights, nrm, p, shade);
+      for (int c = 0; c < 3; ++c) rgba[c] *= shade[c];
     }
     return {to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]), to_byte(rgba[3])};
+  }
+
+  // Multiplies `rgba` by the texture at the perspective-correct coordinates of barycentrics `l` (sum: their
+  // 1/w-weighted sum). The level of detail comes from the exact screen derivatives of u / w over 1 / w.
+  void texture(const double (&l)[3], double sum, double (&rgba)[4]) const {
+    const float* uv = uv_at_;
+    double u = 0, v = 0, su_x = 0, sv_x = 0, su_y = 0, sv_y = 0, s_x = 0, s_y = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double w = inv_w_at_[k], wu = w * uv[2 * k], wv = w * uv[2 * k + 1];
+      u += l[k] * wu, v += l[k] * wv;
+      su_x += dl_dx_[k] * wu, sv_x += dl_dx_[k] * wv, s_x += dl_dx_[k] * w;
+      su_y += dl_dy_[k] * wu, sv_y += dl_dy_[k] * wv, s_y += dl_dy_[k] * w;
+    }
+    u /= sum, v /= sum;
+    const MipChain& tex = *call_.texture;
+    const double sx = tex.texture->scale[0], sy = tex.texture->scale[1];
+    const double lod = mip_lod((su_x - u * s_x) / sum * sx, (sv_x - v * s_x) / sum * sy, (su_y - u * s_y) / sum * sx,
+                               (sv_y - v * s_y) / sum * sy, tex.levels[0].width, tex.levels[0].height);
+    float texel[4];
+    tex.sample(u, v, lod, texel);
+    for (int c = 0; c < 4; ++c) rgba[c] *= texel[c];
   }
 
   const DrawCall& call_;
@@ -806,6 +850,9 @@ class TriangleShader {
   const float* depth_at_ = nullptr;
   const float* inv_w_at_ = nullptr;
   const float* normal_at_ = nullptr;
+  const float* position_at_ = nullptr;  // lit by a point light per pixel: 3 x world xyz
+  const float* uv_at_ = nullptr;  // textured calls with a texture: 3 x (u, v)
+  double dl_dx_[3] = {}, dl_dy_[3] = {};  // textured: barycentric change per pixel right and down
   Rgba8 flat_;
   enum class Kind : std::uint8_t { flat, smooth, depth } kind_ = Kind::flat;
   std::uint8_t row_bytes_[32] = {};  // flat: a block row of the colour, stored (kBlock * C bytes used)

@@ -23,6 +23,8 @@ struct PrimitivePlan {
   bool compute_normals = false;  ///< smooth lighting on a mesh without normals: computed, angle-weighted
   bool light_per_pixel =
       false;  ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
+  bool textured = false;  ///< 3D: texture coordinates interpolated and each draw call's texture sampled
+  bool position_per_pixel = false;  ///< per-pixel lighting with a point light: world position interpolated
   bool line_rectangles =
       false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
   /// Area coverage: the primitive's triangles (a line's two, a polyline's segments) add up their coverage
@@ -38,6 +40,15 @@ struct DrawPlan {
   std::uint32_t primitive = 0;  ///< index into Scene::primitives
   PrimitivePlan mode;           ///< its triangles, or its 2D lines
   PrimitivePlan line_mode;      ///< meshes: its segments and wireframe edges (aliased, depth-tested)
+  PrimitivePlan edge_mode;      ///< meshes with "edges": the feature edges (depth-tested, one colour)
+};
+
+/// One light resolved for this view: camera-space lights turned into world space, colour x intensity folded.
+struct LightPlan {
+  LightKind kind = LightKind::ambient;
+  Vec3 to_light;                ///< directional: unit world vector pointing toward the light
+  Vec3 position;                ///< point: world position
+  double rgb[3] = {0, 0, 0};    ///< colour x intensity per channel, >= 0
 };
 
 /// The camera after fitting, and the light: everything geometry needs to go from world to clip space.
@@ -50,8 +61,7 @@ struct ViewPlan {
   double near = 1, far = 2;  ///< distances from the eye along the view direction
   double height = 0;         ///< orthographic: world units visible vertically
   Mat4 world_to_clip;        ///< projection * view
-  Vec3 to_light;             ///< unit world vector pointing toward the light
-  double ambient = 0.2;      ///< in [0, 1]
+  std::vector<LightPlan> lights;  ///< the scene's lights (or the default ones) in world space
 };
 
 /// Bytes of pixel storage each buffer will take; checked against the limits before allocation.
@@ -63,7 +73,11 @@ struct MemoryPlan {
   std::int64_t tile_bytes = 0;    ///< each thread's tile of colour, where a tile is drawn before it is copied out
   std::int64_t coverage_bytes = 0;  ///< area coverage: each thread's tile of summed coverage and colour (5
                                     ///< floats and a bit a pixel), when some primitive has union_coverage
-  std::int64_t total() const { return color_bytes + depth_bytes + sample_bytes + tile_bytes + coverage_bytes; }
+  std::int64_t texture_bytes = 0;   ///< textures of textured meshes: their decoded texels (held by the scene)
+                                    ///< plus the mipmaps each render makes of them
+  std::int64_t total() const {
+    return color_bytes + depth_bytes + sample_bytes + tile_bytes + coverage_bytes + texture_bytes;
+  }
 };
 
 /// PNG settings: the colour type follows the pixel format (0 grey, 4 grey+alpha, 2 RGB, 6 RGBA). Rows are
@@ -94,6 +108,7 @@ struct RenderPlan {
   std::int64_t culled_count = 0;  ///< primitives skipped before setup
   std::int64_t lit_count = 0;     ///< meshes lit by the light
   std::int64_t triangles_3d = 0;  ///< triangles of all visible meshes (before clipping)
+  std::int64_t textured_count = 0;  ///< meshes drawn with textures
 
   ViewPlan view;  ///< meaningful only when depth_buffer is true (the scene has 3D content)
 

@@ -47,6 +47,29 @@ struct Mat4 {
 enum class Shading : std::uint8_t { flat, smooth, unlit };
 enum class Cull : std::uint8_t { none, back };
 
+/// A decoded texture image and how coordinates address it.
+struct Texture {
+  int width = 0, height = 0;       ///< texels, >= 1 each
+  std::vector<std::uint8_t> rgba;  ///< width * height * 4 bytes: straight RGBA, colour sRGB-encoded (as PNG
+                                   ///< and JPEG files hold it), rows from the image's top, texels left to right
+  bool clamp = false;  ///< coordinates outside [0, 1] take the edge texels; false: the image repeats
+  /// MTL "-s" and "-o": the coordinates used are uv * scale + offset (u and v; w is ignored).
+  std::array<float, 2> scale{1, 1}, offset{0, 0};
+  std::string name;  ///< the file name it came from, for errors and the plan's explanation; may be empty
+  friend bool operator==(const Texture&, const Texture&) = default;
+};
+/// Feature edges drawn over a mesh's shaded surface ("edges"), as CAD viewers outline a model: boundary
+/// edges (one face), edges shared by more than two faces, and creases, where the normals of the two faces
+/// that share the edge differ by more than `crease_deg`. Depth-tested, and pulled toward the eye by two
+/// pixels' worth of depth so the surfaces they lie on do not half-hide them.
+struct Edges {
+  bool enabled = false;
+  Rgba8 color{0, 0, 0, 255};  ///< straight RGBA
+  float width = 1;            ///< pixels, in (0, 64]
+  float crease_deg = 30;      ///< degrees, in [0, 180]
+  friend bool operator==(const Edges&, const Edges&) = default;
+};
+
 /// Triangles and segments in model space, drawn through the camera with a depth test.
 struct Mesh {
   std::vector<Vec3> positions;                          ///< model units
@@ -56,22 +79,38 @@ struct Mesh {
   std::vector<std::array<std::uint32_t, 3>> normal_triangles;  ///< per triangle, indices into normals
   std::vector<Rgba8> colors;       ///< one per position, or exactly one for the whole mesh
   std::vector<Rgba8> face_colors;  ///< empty, or one per triangle (OBJ materials' Kd); wins over colors
+  /// Texture coordinates: u to the right, v up (v = 0 is the image's bottom row, as OBJ and OpenGL have
+  /// it); 0..1 spans the image once.
+  std::vector<std::array<float, 2>> uvs;
+  std::vector<std::array<std::uint32_t, 3>> uv_triangles;  ///< per triangle, indices into uvs; empty: none
+  std::vector<Texture> textures;  ///< multiply the faces' colour (MTL: Kd x map_Kd); empty: untextured
+  /// Per triangle, an index into textures or -1 for none; empty: every triangle takes textures[0].
+  std::vector<std::int32_t> face_textures;
   Shading shading = Shading::smooth;
   Cull cull = Cull::none;
   bool wireframe = false;  ///< draw the triangles' edges (each once) instead of filling them
+  Edges edges;             ///< feature edges over the filled triangles (off by default)
   Mat4 transform;          ///< model -> world
   friend bool operator==(const Mesh&, const Mesh&) = default;
 };
 
 enum class Projection : std::uint8_t { perspective, orthographic };
 
+/// Named directions to look from, as CAD and model viewers offer them. The camera sits on the side the name
+/// gives (front = +z, right = +x, top = +y; iso = the +x +y +z octant, equal angles to the three axes) and
+/// looks at the target; the distance is still fitted to the content.
+enum class View : std::uint8_t { front, back, left, right, top, bottom, iso };
+
 /// The camera. Each field a scene leaves out is fitted to the bounding box of the 3D content.
 struct Camera {
   Projection projection = Projection::perspective;
+  View view = View::front;  ///< where a fitted eye is placed; a given eye and a view are exclusive
   bool has_eye = false, has_target = false, has_near = false, has_far = false, has_height = false;
-  Vec3 eye;             ///< world position; default: in front of the content (+z side), framing it
+  bool has_view = false;  ///< the scene named a view (and so gave no eye)
+  bool has_up = false;    ///< the scene gave `up`; else [0, 1, 0], or [0, 0, -1] / [0, 0, 1] from top / bottom
+  Vec3 eye;             ///< world position; default: on the view's side of the content, framing it
   Vec3 target;          ///< world point looked at; default: centre of the content's bounding box
-  Vec3 up{0, 1, 0};     ///< world direction that appears upward
+  Vec3 up{0, 1, 0};     ///< world direction that appears upward (see has_up)
   double fov_deg = 45;  ///< perspective: vertical field of view in degrees, in (0, 180)
   double near = 0;      ///< distance from the eye along the view direction, > 0
   double far = 0;       ///< > near
@@ -80,13 +119,36 @@ struct Camera {
   friend bool operator==(const Camera&, const Camera&) = default;
 };
 
-/// One directional light plus ambient. Lambert: ambient + (1 - ambient) * max(0, n . -direction).
+enum class LightKind : std::uint8_t { ambient, directional, point };
+
+/// One light. Lambert, per colour channel: a lit surface's colour is its own colour times the sum over the
+/// lights of colour x intensity x (ambient: 1; directional and point: max(0, n . toward the light)), with n
+/// the unit normal of the side seen. Sums above 1 saturate. Lighting multiplies the sRGB-encoded colour, as
+/// the 8-bit output stores it (the convention of rasterd 0.1's single light, kept so its pictures stay).
+/// Point lights do not fall off with distance (as a viewer's lamps do not), so a model's scale never darkens it.
 struct Light {
-  bool headlight = true;     ///< true: the light travels along the view direction (from the eye)
-  Vec3 direction{0, 0, -1};  ///< world direction the light travels (from the light toward the scene)
-  double ambient = 0.2;      ///< in [0, 1]
+  LightKind kind = LightKind::directional;
+  bool camera_space = false;  ///< direction / position in view space (x right, y up, z toward the viewer),
+                              ///< so the light moves with the camera; else world space
+  Vec3 direction{0, 0, -1};   ///< directional: the way the light travels (from the light toward the scene)
+  Vec3 position;              ///< point: where it is
+  Vec3 color{1, 1, 1};        ///< per channel, 0..1 (an opaque colour's components / 255)
+  double intensity = 1;       ///< >= 0, multiplies color
   friend bool operator==(const Light&, const Light&) = default;
 };
+
+/// At most this many lights in a scene (each is evaluated at every lit pixel), each at most this intense.
+inline constexpr std::size_t kMaxLights = 8;
+inline constexpr double kMaxLightIntensity = 1000;
+
+/// The lights a scene without "light" or "lights" gets: a key light from the upper left (0.45), a softer fill (0.25)
+/// along the view direction and an ambient floor (0.35), all moving with the camera, so that any view of a model
+/// without materials is lit from the front and neither too dark nor washed out (docs/lighting.md measures it).
+std::vector<Light> default_lights();
+
+/// rasterd 0.1's single light (the "light" field): ambient plus one directional light of intensity
+/// 1 - ambient, travelling `direction` (world) or, without one, along the view direction.
+std::vector<Light> single_light(double ambient, const Vec3* direction);
 
 enum class PrimitiveKind : std::uint8_t { triangle, line, polyline, mesh };
 
@@ -117,7 +179,7 @@ struct Scene {
   std::vector<Rgba8> colors;          ///< all colours, referenced by Primitive::first_color
   std::vector<Mesh> meshes;           ///< 3D content, referenced by mesh primitives
   Camera camera;                      ///< used only when the scene has 3D content
-  Light light;
+  std::vector<Light> lights;          ///< lights of meshes; empty: default_lights()
   int samples = 1;    ///< "antialias" as a number: samples per pixel, 1 (aliased), 4, 8 or 16
   bool area = false;  ///< "antialias": "area": every pixel takes the exact share of its square each shape
                       ///< covers (samples stays 1); 3D content gets multisampling instead (see the plan)
@@ -139,6 +201,9 @@ struct Limits {
   int max_json_depth = 64;                      ///< nesting of arrays and objects
   std::int64_t max_buffer_bytes = 512ll << 20;  ///< all pixel storage of one render (colour, depth, samples)
   std::int64_t max_obj_faces = 5'000'000;       ///< faces of one OBJ model (before triangulation)
+  /// Texels of all of a scene's textures together, checked from each image's header before it is decoded
+  /// (a decoded texel is 4 bytes; the plan also counts the mipmaps made from them).
+  std::int64_t max_texture_pixels = 4096 * 4096;
 };
 
 /// Largest accepted |coordinate| in pixels: 2^128, just above FLT_MAX. Coverage stays exact up to here
@@ -160,7 +225,19 @@ Scene parse_scene(std::string_view json_text, const Limits& limits = {}, const U
 /// Throws SceneError(invalid) with the JSON pointer of the offending part.
 void validate(const Scene& scene);
 
+/// Largest texture side accepted (stb_image's STBI_MAX_DIMENSIONS, too).
+inline constexpr int kMaxTextureSide = 16384;
+
+/// Decodes a PNG or JPEG texture to RGBA8. The size is read from the header and checked first: over
+/// kMaxTextureSide a side, or over `texel_budget` texels, is SceneError(limit) before any pixel is decoded.
+/// Anything else that is not a whole PNG or JPEG is SceneError(model). `name` is quoted in the errors.
+Texture decode_texture(std::string_view bytes, std::string_view name, std::int64_t texel_budget);
+
 /// Parses an OBJ model (and optional MTL text) into a mesh. Throws SceneError(model) naming the line.
-Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {});
+/// Textures the MTL names (map_Kd) are looked up in `images` by their file name, without folders (a
+/// missing one is SceneError(model) naming it and the names there are); `limits.max_texture_pixels`
+/// bounds them all together. With no MTL, or no map_Kd, `images` is not used.
+Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {},
+               const Uploads& images = {});
 
 }  // namespace raster

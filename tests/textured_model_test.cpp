@@ -1,0 +1,172 @@
+// A textured OBJ as people bring it (the african_head case: model + MTL + diffuse PNG), end to end through
+// each input the service has: multipart parts over HTTP, one JSON document with everything inline (base64),
+// and the CLI's --part. All three must give the same picture, and it must show the texture.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "support.h"
+#include "test_server.h"
+
+namespace {
+
+const std::string kDir = RASTERD_TESTS_DIR "/data/textured/";
+
+struct Box {
+  std::string obj = test::read_file(kDir + "box.obj");
+  std::string mtl = test::read_file(kDir + "box.mtl");
+  std::string png = test::read_file(kDir + "box_diffuse.png");
+};
+
+std::string base64(const std::string& bytes) {
+  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    std::uint32_t n = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) n |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    if (i + 2 < bytes.size()) n |= static_cast<unsigned char>(bytes[i + 2]);
+    out += kAlphabet[n >> 18 & 63];
+    out += kAlphabet[n >> 12 & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[n >> 6 & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[n & 63] : '=';
+  }
+  return out;
+}
+
+// The box seen from +x+y+z shows its +x (red), +y (green) and +z (purple) faces, each checkered in two
+// shades: a textured render has both shades of each; an untextured one is flat grey.
+void expect_textured(const std::string& png_bytes) {
+  const test::Decoded d = test::decode_png(png_bytes);
+  ASSERT_EQ(d.width, 64);
+  int reddish = 0, greenish = 0, purplish = 0;
+  for (std::size_t i = 0; i + 2 < d.pixels.size(); i += d.channels) {
+    const int r = d.pixels[i], g = d.pixels[i + 1], b = d.pixels[i + 2];
+    reddish += r > 2 * g + 20 && r > 2 * b + 20;
+    greenish += g > 2 * r + 20 && g > b + 20;
+    purplish += r > g + 25 && b > g + 25;
+  }
+  EXPECT_GT(reddish, 100);
+  EXPECT_GT(greenish, 100);
+  EXPECT_GT(purplish, 100);
+}
+
+const char* kQuery = "/render?width=64&height=64&eye=3,2.5,4";
+
+TEST(TexturedModel, MultipartPartsNamedByTheirFileNameRenderTheTexture) {
+  test::TestServer server;
+  const Box box;
+  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                            {"model", box.obj, "box.obj", "model/obj"},
+                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                            {"texture", box.png, "box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  expect_textured(r->body);
+
+  // A folder in the file name (curl sends what -F names) is dropped, as the MTL's own folders are.
+  auto folder = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                                 {"model", box.obj, "box.obj", "model/obj"},
+                                                 {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                                 {"texture", box.png, "textures/box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(folder);
+  EXPECT_EQ(folder->body, r->body);
+}
+
+TEST(TexturedModel, AMissingTextureIsA422NamingTheFileAndThePartsSent) {
+  test::TestServer server;
+  const Box box;
+  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                            {"model", box.obj, "box.obj", "model/obj"},
+                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                            {"texture", box.png, "other.png", "image/png"}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 422);
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
+  const auto problem = nlohmann::json::parse(r->body);
+  const std::string detail = problem.at("detail");
+  EXPECT_NE(detail.find("\"box_diffuse.png\""), std::string::npos) << detail;
+  EXPECT_NE(detail.find("\"other.png\""), std::string::npos) << detail;
+  EXPECT_NE(detail.find("line 3"), std::string::npos) << "the MTL line that asks for it: " << detail;
+}
+
+TEST(TexturedModel, TwoPartsUnderOneNameAreA400) {
+  test::TestServer server;
+  const Box box;
+  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                            {"model", box.obj, "box.obj", "model/obj"},
+                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                            {"texture", box.png, "box_diffuse.png", "image/png"},
+                                            {"texture", box.png, "maps/box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_EQ(nlohmann::json::parse(r->body).at("type"), "urn:rasterd:problem:duplicate-part") << r->body;
+}
+
+TEST(TexturedModel, HostileTextureHeaderIsA422BeforeDecoding) {
+  test::TestServer server;
+  const Box box;
+  // A PNG signature and an IHDR claiming 100000 x 100000 (the CRC is not checked before the size is).
+  std::string png = box.png.substr(0, 16);
+  png += std::string("\x00\x01\x86\xa0\x00\x01\x86\xa0\x08\x02\x00\x00\x00", 13);
+  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                            {"model", box.obj, "box.obj", "model/obj"},
+                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                            {"texture", png, "box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 422) << r->body;
+  EXPECT_NE(r->body.find("100000"), std::string::npos) << r->body;
+}
+
+// One JSON document: the OBJ and MTL as strings, the texture as base64 under the name the MTL uses.
+TEST(TexturedModel, InlineJsonGivesTheSamePictureAsMultipart) {
+  test::TestServer server;
+  const Box box;
+  const nlohmann::json scene = {
+      {"width", 64},
+      {"height", 64},
+      {"camera", {{"eye", {3, 2.5, 4}}}},
+      {"primitives",
+       {{{"type", "obj"},
+         {"data", box.obj},
+         {"mtl", box.mtl},
+         {"textures", {{"box_diffuse.png", base64(box.png)}}}}}}};
+  auto inline_r = server.client().Post("/render", scene.dump(), "application/json");
+  auto multipart = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                                    {"model", box.obj, "box.obj", "model/obj"},
+                                                    {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                                    {"texture", box.png, "box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(inline_r && multipart);
+  ASSERT_EQ(inline_r->status, 200) << inline_r->body;
+  expect_textured(inline_r->body);
+  EXPECT_EQ(inline_r->body, multipart->body);
+
+  nlohmann::json bad = scene;
+  bad["primitives"][0]["textures"]["box_diffuse.png"] = "not base64!";
+  auto r = server.client().Post("/render", bad.dump(), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400) << r->body;
+  EXPECT_EQ(nlohmann::json::parse(r->body).at("pointer"), "/primitives/0/textures/box_diffuse.png") << r->body;
+}
+
+TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
+  test::TestServer server;
+  const Box box;
+  auto http = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                               {"model", box.obj, "box.obj", "model/obj"},
+                                               {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                               {"texture", box.png, "box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(http);
+  const std::string out = testing::TempDir() + "cli-box.png";
+  const std::string command = std::string(RASTERD_BINARY) + " render " + kDir + "box.obj --part mtl=" + kDir +
+                              "box.mtl --part texture=" + kDir +
+                              "box_diffuse.png --width 64 --height 64 --eye 3,2.5,4 -o " + out;
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  EXPECT_EQ(test::read_file(out), http->body);
+  std::remove(out.c_str());
+}
+
+}  // namespace
