@@ -148,6 +148,44 @@ TEST(Deadline, MeshGeometryIsCheckedWhileItIsTransformed) {
 }
 
 // A deadline that does not pass changes nothing: the same bytes as a render without one.
+// A texture's mip chain is made in geometry, before any pixel: a 2048^2 texture on an 8x8 image is 1.4M texels
+// of mipmaps and 64 pixels, and the deadline is looked at while the chain is built (it was not, once: a
+// 4096^2 texture overran the deadline by the ~1 s its chain then took).
+TEST(Deadline, TextureMipmapsAreCheckedWhileTheyAreBuilt) {
+  raster::Mesh quad;
+  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+  quad.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  quad.uv_triangles = quad.triangles;
+  raster::Texture texture;
+  texture.width = texture.height = 2048;
+  texture.rgba.assign(std::size_t{2048} * 2048 * 4, 255);
+  quad.textures.push_back(std::move(texture));
+  quad.colors = {test::kWhite};  // multiplied by the texture
+  quad.shading = raster::Shading::unlit;
+  raster::Scene scene;
+  scene.width = scene.height = 8;
+  scene.meshes.push_back(std::move(quad));
+  raster::Primitive p;
+  p.kind = raster::PrimitiveKind::mesh;
+  scene.primitives.push_back(p);
+  const raster::RenderPlan plan = plan_with_threads(scene, 1);
+  ASSERT_EQ(plan.textured_count, 1);
+
+  FakeClock counting;
+  raster::RenderControl control = counting.control();
+  raster::render(scene, plan, control);
+  const int mip_texels = (1024 * 1024 * 4 - 1) / 3;  // 1024^2 + 512^2 + ... + 1
+  EXPECT_GE(counting.readings, mip_texels / raster::detail::StopMeter::kWorkPerCheck)
+      << "the deadline was not looked at while the mipmaps were built";
+
+  FakeClock expiring;
+  expiring.expire_at = 3;
+  control = expiring.control();
+  EXPECT_THROW(raster::render(scene, plan, control), raster::RenderCancelled);
+  EXPECT_EQ(expiring.readings, 3);
+}
+
 TEST(Deadline, AFutureDeadlineDoesNotChangeTheImage) {
   const raster::Scene scene = covering_triangles(300, 3, 4);
   const raster::RenderPlan plan = plan_with_threads(scene, 2);

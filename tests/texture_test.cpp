@@ -2,8 +2,10 @@
 // double precision, from the definitions), perspective correctness, and how scenes give textures.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "raster/raster.h"
 #include "support.h"
@@ -17,9 +19,11 @@ using raster::Scene;
 using raster::SceneError;
 using raster::Texture;
 
-double to_linear(int byte) {
-  const double c = byte / 255.0;
+double to_linear_exact(double c) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+double to_linear(int byte) {
+  return to_linear_exact(byte / 255.0);
 }
 int to_byte(double linear) {
   const double c = linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
@@ -163,6 +167,32 @@ TEST(Texture, MipLevelFollowsThePixelFootprint) {
   EXPECT_DOUBLE_EQ(mip_lod(0, 1.0 / 64, 0, 0, 64, 256), 2);           // scaled by the side it runs along
   EXPECT_LT(mip_lod(1.0 / 1024, 0, 0, 1.0 / 1024, 256, 256), 0);      // magnified
   EXPECT_EQ(mip_lod(NAN, 0, 0, 0, 4, 4), 0);
+}
+
+// linear_to_srgb finds its byte through a table of buckets and one comparison; the definition is the
+// number of thresholds decode((b + 1/2) / 255), b = 0..254, at or below the value (rounding in the encoded
+// domain). Checked at each threshold and its float neighbours, and on a dense sweep of 0..1.
+TEST(Texture, LinearToSrgbRoundsExactlyAtEveryThreshold) {
+  std::vector<float> thresholds;
+  for (int b = 0; b < 255; ++b) thresholds.push_back(static_cast<float>(to_linear_exact((b + 0.5) / 255)));
+  auto definition = [&](float v) {
+    return static_cast<int>(std::upper_bound(thresholds.begin(), thresholds.end(), v) - thresholds.begin());
+  };
+  int checked = 0;
+  for (float t : thresholds)
+    for (float v : {std::nextafter(t, 0.0f), t, std::nextafter(t, 2.0f)}) {
+      ASSERT_EQ(raster::detail::linear_to_srgb(v), definition(v)) << "at " << v;
+      ++checked;
+    }
+  for (int k = 0; k <= 1 << 20; ++k) {
+    const float v = static_cast<float>(k) / (1 << 20);
+    ASSERT_EQ(raster::detail::linear_to_srgb(v), definition(v)) << "at " << v;
+  }
+  EXPECT_EQ(checked, 3 * 255);
+  EXPECT_EQ(raster::detail::linear_to_srgb(-1), 0);
+  EXPECT_EQ(raster::detail::linear_to_srgb(2), 255);
+  EXPECT_EQ(raster::detail::linear_to_srgb(NAN), 0);
+  for (int b = 0; b < 256; ++b) EXPECT_EQ(raster::detail::linear_to_srgb(raster::detail::srgb_to_linear(b)), b);
 }
 
 TEST(Texture, MipmapsAverageInLinearLight) {

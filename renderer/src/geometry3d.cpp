@@ -262,7 +262,8 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   std::vector<std::uint32_t> texture_calls;
   if (mode.textured)
     for (const Texture& texture : mesh.textures) {
-      call.texture = &setup.textures.emplace_back(build_mips(texture));
+      call.texture = &setup.textures.emplace_back(build_mips(texture, &meter));
+      if (meter.stopped()) return;
       texture_calls.push_back(setup.add_call(call));
     }
   const std::size_t count = mesh.triangles.size();  // before clipping, which rarely adds any

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "raster/scene.h"
+#include "stop.h"
 
 namespace raster::detail {
 
@@ -23,15 +25,17 @@ struct MipLevel {
 struct MipChain {
   const Texture* texture = nullptr;
   std::vector<MipLevel> levels;
-  std::vector<std::vector<std::uint8_t>> storage;  ///< levels 1.. (level 0 lives in the Texture)
+  std::vector<std::unique_ptr<std::uint8_t[]>> storage;  ///< levels 1.. (level 0 lives in the Texture)
 
   /// The filtered colour at texture coordinate (u, v) (scene.h: v up) and level of detail `lod` (log2 of
   /// texels per pixel; <= 0 magnifies): RGB in 0..1, sRGB-encoded, alpha 0..1.
   void sample(double u, double v, double lod, float (&out)[4]) const;
 };
 
-/// Builds the chain (levels 1.. allocated here; their bytes are mip_bytes()).
-MipChain build_mips(const Texture& texture);
+/// Builds the chain (levels 1.. allocated here; their bytes are mip_bytes()). With a meter, the work is
+/// counted a texel at a time and building stops, leaving a partial chain, once the meter says the render
+/// must stop; the caller looks at meter->stopped().
+MipChain build_mips(const Texture& texture, StopMeter* meter = nullptr);
 
 /// Bytes the mip levels above level 0 of a w x h texture take.
 std::int64_t mip_bytes(int width, int height);
