@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "raster/raster.h"
 #include "support.h"
@@ -133,6 +134,54 @@ TEST(ObjTexture, AnUnknownOptionIsAnErrorWithItsLine) {
     EXPECT_EQ(e.kind(), ErrorKind::model);
     EXPECT_NE(std::string(e.what()).find("line 3: map_Kd option -zoom"), std::string::npos) << e.what();
   }
+}
+
+// f3d#1973: the materials are the file `mtllib` names. Sent among the files (not as MTL text), it is found by
+// its file name, folders dropped, like a texture; several on one line are all read; a name may hold spaces.
+TEST(ObjTexture, MtllibFindsTheMaterialsAmongTheUploadedFiles) {
+  const std::string quad = test::read_file(kDir + "quad.obj");  // "mtllib quad.mtl", faces "usemtl skin"
+  raster::Uploads files = images();
+  files["quad.mtl"] = test::read_file(kDir + "basic.mtl");
+  expect_checker(raster::parse_obj(quad, {}, {}, files), "mtllib quad.mtl");
+
+  std::string in_folder = quad;
+  in_folder.replace(in_folder.find("mtllib quad.mtl"), 15, "mtllib ..\\materials\\quad.mtl\r");
+  expect_checker(raster::parse_obj(in_folder, {}, {}, files), "mtllib with a Windows folder and a CR");
+
+  // Two libraries on one line, each defining one of the two materials the faces use.
+  const std::string two = "mtllib colours.mtl skin.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                          "usemtl skin\nf 1/1 2/2 3/3\nusemtl red\nf 1 3 4\n";
+  raster::Uploads split = images();
+  split["colours.mtl"] = "newmtl red\nKd 1 0 0\n";
+  split["skin.mtl"] = test::read_file(kDir + "basic.mtl");
+  const Mesh both = raster::parse_obj(two, {}, {}, split);
+  ASSERT_EQ(both.textures.size(), 1u);
+  ASSERT_EQ(both.face_colors.size(), 2u);
+  EXPECT_EQ(both.face_textures, (std::vector<std::int32_t>{0, -1}));
+  EXPECT_EQ(both.face_colors[1], (raster::Rgba8{255, 0, 0, 255}));
+
+  std::string spaced = quad;
+  spaced.replace(spaced.find("mtllib quad.mtl"), 15, "mtllib my materials.mtl");
+  raster::Uploads spaced_files = images();
+  spaced_files["my materials.mtl"] = test::read_file(kDir + "basic.mtl");
+  expect_checker(raster::parse_obj(spaced, {}, {}, spaced_files), "mtllib my materials.mtl");
+}
+
+TEST(ObjTexture, GivenMtlTextWinsAndAnUnsentLibraryIsNoError) {
+  const std::string quad = test::read_file(kDir + "quad.obj");
+  raster::Uploads files = images();
+  files["quad.mtl"] = test::read_file(kDir + "basic.mtl");
+  // The MTL given as text (the "mtl" part) is the materials, whatever mtllib says.
+  const Mesh red = raster::parse_obj(quad, test::read_file(kDir + "kd-multiplies.mtl"), {}, files);
+  EXPECT_EQ(red.textures.at(0).name, "white.png");
+  // A bare model that names a library nobody sent keeps the default grey and no texture.
+  const Mesh bare = raster::parse_obj(quad, {}, {}, images());
+  EXPECT_TRUE(bare.textures.empty());
+  for (const raster::Rgba8& c : bare.face_colors) EXPECT_EQ(c, (raster::Rgba8{204, 204, 204, 255}));
+  // And a library is looked up among the uploads only: never on this disk.
+  std::string outside = quad;
+  outside.replace(outside.find("mtllib quad.mtl"), 15, "mtllib /etc/passwd");
+  EXPECT_TRUE(raster::parse_obj(outside, {}, {}, images()).textures.empty());
 }
 
 TEST(ObjTexture, CaseOnlyDifferencesInTheFileNameAreForgiven) {

@@ -76,6 +76,25 @@ TEST(TexturedModel, MultipartPartsNamedByTheirFileNameRenderTheTexture) {
   EXPECT_EQ(folder->body, r->body);
 }
 
+// f3d#1973: a folder's files sent as they are, under any part name, as a browser's multi-file input does
+// (curl -F files=@box.obj -F files=@box.mtl ...): the MTL is the one the model's `mtllib` names.
+TEST(TexturedModel, AnMtlSentUnderItsFileNameIsTheOneMtllibNames) {
+  test::TestServer server;
+  const Box box;
+  auto named = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                                {"model", box.obj, "box.obj", "model/obj"},
+                                                {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                                {"texture", box.png, "box_diffuse.png", "image/png"}});
+  auto by_file = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                                  {"model", box.obj, "box.obj", "model/obj"},
+                                                  {"files", box.mtl, "box.mtl", "model/mtl"},
+                                                  {"files", box.png, "box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(named && by_file);
+  ASSERT_EQ(by_file->status, 200) << by_file->body;
+  expect_textured(by_file->body);
+  EXPECT_EQ(by_file->body, named->body);
+}
+
 TEST(TexturedModel, AMissingTextureIsA422NamingTheFileAndThePartsSent) {
   test::TestServer server;
   const Box box;

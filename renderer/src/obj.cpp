@@ -66,6 +66,7 @@ bool obj_number(std::string_view word, double& d) {
 
 struct Counts {
   std::int64_t v = 0, vt = 0, vn = 0, faces = 0, segments = 0, points = 0;
+  std::vector<std::string_view> mtllibs;  ///< what follows each `mtllib` (one or more file names)
 };
 
 // Validates every line tinyobjloader would index with, before it sees the text.
@@ -82,7 +83,9 @@ Counts prescan(std::string_view text, const Limits& limits) {
     const auto w = words(line);
     if (w.empty() || w[0][0] == '#') continue;
     const std::string_view key = w[0];
-    if (key == "v") {
+    if (key == "mtllib" && w.size() > 1) {
+      n.mtllibs.push_back(line.substr(static_cast<std::size_t>(w[1].data() - line.data())));
+    } else if (key == "v") {
       if (w.size() < 4) model_error(line_no, "a vertex needs x y z");
       for (std::size_t k = 1; k < w.size() && k <= 6; ++k) {
         double d = 0;
@@ -189,6 +192,15 @@ bool is_number(std::string_view w, double* out = nullptr) {
   return true;
 }
 
+// A file name as an MTL or OBJ line writes it, without its folders (either slash) and outer blanks: files
+// arrive as uploads named by file, never from this disk.
+std::string file_name_of(std::string_view path) {
+  std::string name(trim(path));
+  std::replace(name.begin(), name.end(), '\\', '/');
+  if (const std::size_t slash = name.rfind('/'); slash != std::string::npos) name.erase(0, slash + 1);
+  return std::string(trim(name));
+}
+
 [[noreturn]] void mtl_error(std::size_t line, const std::string& message) {
   model_error(0, "the materials (MTL), line " + std::to_string(line) + ": " + message);
 }
@@ -252,10 +264,7 @@ DiffuseMap read_diffuse_map(std::string_view rest, std::size_t line) {
       mtl_error(line, "map_Kd option " + std::string(w) + " is not an MTL texture option");
     }
   }
-  std::string name(trim(rest.substr(i)));
-  std::replace(name.begin(), name.end(), '\\', '/');
-  if (const std::size_t slash = name.rfind('/'); slash != std::string::npos) name.erase(0, slash + 1);
-  name = std::string(trim(name));
+  std::string name = file_name_of(rest.substr(i));
   if (name.empty()) mtl_error(line, "map_Kd names a folder, not a texture file");
   map.file = std::move(name);
   return map;
@@ -295,12 +304,13 @@ MtlPass read_mtl(std::string_view mtl) {
   return out;
 }
 
-// The texture `file` among the uploads: by exact name, else by a name that differs only in case (models
-// made on Windows name "Head.PNG" for "head.png").
-const std::string* find_image(const Uploads& images, const std::string& file) {
-  if (auto it = images.find(file); it != images.end()) return &it->second;
+// The uploaded `file`: by exact name, else by a name that differs only in case (models made on Windows
+// name "Head.PNG" for "head.png").
+const std::string* find_file(const Uploads& files, const std::string& file) {
+  if (file.empty()) return nullptr;
+  if (auto it = files.find(file); it != files.end()) return &it->second;
   const std::string* found = nullptr;
-  for (const auto& [name, bytes] : images)
+  for (const auto& [name, bytes] : files)
     if (iequals(name, file)) {
       if (found) return nullptr;  // ambiguous
       found = &bytes;
@@ -308,11 +318,34 @@ const std::string* find_image(const Uploads& images, const std::string& file) {
   return found;
 }
 
-std::string names_of(const Uploads& images) {
-  if (images.empty()) return "none";
+std::string names_of(const Uploads& files) {
+  if (files.empty()) return "none";
   std::string out;
-  for (const auto& [name, bytes] : images) out += (out.empty() ? "\"" : ", \"") + name + "\"";
+  for (const auto& [name, bytes] : files) out += (out.empty() ? "\"" : ", \"") + name + "\"";
   return out;
+}
+
+// The materials a model without given MTL text names: each `mtllib` line's files among the uploads, in
+// order, each once (f3d#1973: a viewer that ignores mtllib and guesses <model>.mtl finds none of them). A
+// line is one name if a file has that whole name (names with spaces), else names separated by blanks.
+// Libraries that were not sent are left out: a bare model keeps its default colours.
+std::string named_libraries(const std::vector<std::string_view>& mtllibs, const Uploads& files) {
+  std::string text;
+  std::vector<const std::string*> used;
+  auto append = [&](const std::string* bytes) {
+    if (!bytes || std::find(used.begin(), used.end(), bytes) != used.end()) return;
+    used.push_back(bytes);
+    text += *bytes;
+    if (!text.empty() && text.back() != '\n') text += '\n';
+  };
+  for (std::string_view rest : mtllibs) {
+    if (const std::string* whole = find_file(files, file_name_of(rest))) {
+      append(whole);
+      continue;
+    }
+    for (std::string_view word : words(rest)) append(find_file(files, file_name_of(word)));
+  }
+  return text;
 }
 
 std::uint8_t unit_byte(double v) {
@@ -321,7 +354,7 @@ std::uint8_t unit_byte(double v) {
 
 }  // namespace
 
-Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits, const Uploads& images) {
+Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits, const Uploads& files) {
   // Checked first: names and tokens of the model are quoted in its errors.
   require_utf8(obj_text, "the model (OBJ)", true);
   require_utf8(mtl_text, "the materials (MTL)", true);
@@ -331,6 +364,12 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     model_error(0, counts.points ? "the model has only points ('p'); rasterd draws faces and lines"
                                  : "the model has no faces ('f') or lines ('l') to draw");
 
+  std::string libraries;
+  if (mtl_text.empty() && !counts.mtllibs.empty()) {
+    libraries = named_libraries(counts.mtllibs, files);
+    require_utf8(libraries, "the materials (MTL)", true);
+    mtl_text = libraries;
+  }
   const MtlPass mtl = read_mtl(mtl_text);
 
   tinyobj::ObjReaderConfig config;
@@ -372,10 +411,10 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
       material_texture[m] = d->second;
       continue;
     }
-    const std::string* bytes = find_image(images, map.file);
+    const std::string* bytes = find_file(files, map.file);
     if (!bytes)
       model_error(0, "the materials (MTL) line " + std::to_string(map.line) + " asks for texture \"" + map.file +
-                         "\" (map_Kd), which was not sent; sent: " + names_of(images) +
+                         "\" (map_Kd), which was not sent; sent: " + names_of(files) +
                          ". Send it as a multipart part with that file name (curl -F 'texture=@" + map.file + "')");
     Texture texture = decode_texture(*bytes, map.file, budget);
     budget -= std::int64_t{texture.width} * texture.height;

@@ -234,10 +234,12 @@ inline constexpr int kMaxTextureSide = 16384;
 Texture decode_texture(std::string_view bytes, std::string_view name, std::int64_t texel_budget);
 
 /// Parses an OBJ model (and optional MTL text) into a mesh. Throws SceneError(model) naming the line.
-/// Textures the MTL names (map_Kd) are looked up in `images` by their file name, without folders (a
-/// missing one is SceneError(model) naming it and the names there are); `limits.max_texture_pixels`
-/// bounds them all together. With no MTL, or no map_Kd, `images` is not used.
+/// `files` are the uploaded files by file name (a name differing only in case is accepted); nothing is
+/// ever read from disk. Without `mtl_text`, the materials are the files the model's `mtllib` lines name,
+/// found there by file name without folders (left out if not sent). Textures the MTL names (map_Kd) are
+/// looked up there the same way (a missing one is SceneError(model) naming it and the names there are);
+/// `limits.max_texture_pixels` bounds them all together.
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {},
-               const Uploads& images = {});
+               const Uploads& files = {});
 
 }  // namespace raster
