@@ -26,6 +26,7 @@ struct Rig {
 struct Figures {
   double mean = 0, p5 = 0, p95 = 0, saturated = 0;
   std::size_t pixels = 0;
+  const char* unmeasured = nullptr;  ///< why there is nothing to measure (then pixels = 0)
 };
 
 const char* kCube =
@@ -39,7 +40,11 @@ Figures measure(const std::string& obj, const Rig& rig, raster::View view) {
   scene.lights = rig.lights;
   scene.camera.view = view, scene.camera.has_view = true;
   const raster::RenderPlan plan = raster::plan(scene);
-  if (plan.lit_count == 0) return {};  // lines only: drawn unlit, nothing to measure
+  Figures f;
+  if (plan.lit_count == 0) {
+    f.unmeasured = "lines only, drawn unlit";
+    return f;
+  }
   const raster::Image image = raster::render(scene, plan);
   std::vector<double> luma;
   const int c = raster::channel_count(image.format);
@@ -48,9 +53,11 @@ Figures measure(const std::string& obj, const Rig& rig, raster::View view) {
     const double r = image.pixels[i], g = c >= 3 ? image.pixels[i + 1] : r, b = c >= 3 ? image.pixels[i + 2] : r;
     luma.push_back(0.2126 * r + 0.7152 * g + 0.0722 * b);
   }
-  Figures f;
   f.pixels = luma.size();
-  if (luma.empty()) return f;
+  if (luma.empty()) {
+    f.unmeasured = "no pixel covered from this view (a flat model seen edge-on)";
+    return f;
+  }
   std::sort(luma.begin(), luma.end());
   double sum = 0;
   std::size_t full = 0;
@@ -84,19 +91,19 @@ int main(int argc, char** argv) {
   std::vector<Figures> totals(rigs.size());
   std::vector<std::vector<double>> means(rigs.size()), p5s(rigs.size()), p95s(rigs.size());
   for (const auto& [name, obj] : models) {
+    bool drawn = true;
     for (const auto& [view, view_name] : {std::pair{raster::View::front, "front"}, {raster::View::iso, "iso"}}) {
-      for (std::size_t r = 0; r < rigs.size(); ++r) {
+      for (std::size_t r = 0; drawn && r < rigs.size(); ++r) {
         Figures f;
         try {
           f = measure(obj, rigs[r], view);
-        } catch (const std::exception& e) {
-          if (r == 0 && view == raster::View::front)
-            std::printf("| %s | | not drawn: %.80s | | | | | |\n", name.c_str(), e.what());
+        } catch (const std::exception& e) {  // the model itself is refused: once, for every view
+          std::printf("| %s | | not drawn: %.80s | | | | | |\n", name.c_str(), e.what());
+          drawn = false;
           break;
         }
-        if (f.pixels == 0) {
-          if (r == 0 && view == raster::View::front)
-            std::printf("| %s | | not measured: lines only, drawn unlit | | | | | |\n", name.c_str());
+        if (f.unmeasured) {  // the same for every rig
+          std::printf("| %s | %s | not measured: %s | | | | | |\n", name.c_str(), view_name, f.unmeasured);
           break;
         }
         std::printf("| %s | %s | %s | %zu | %.0f | %.0f | %.0f | %.1f%% |\n", name.c_str(), view_name,

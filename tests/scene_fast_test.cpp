@@ -307,6 +307,10 @@ TEST(SceneFastPath, EveryFieldOnEveryKindIsJudgedAsTheDomReaderJudgesIt) {
                                            R"("cull":"back")",
                                            R"("wireframe":true)",
                                            R"("transform":{"scale":2})",
+                                           R"("edges":true)",
+                                           R"("edges":{"color":"#00f","width":2,"angle":45})",
+                                           R"("edges":{"width":0})",
+                                           R"("uvs":[[0,0],[1,0],[0,1]])",
                                            R"("data":"v 0 0 0")",
                                            R"("colr":"#fff")",
                                            R"("width":0)",
@@ -327,6 +331,23 @@ TEST(SceneFastPath, EveryFieldOnEveryKindIsJudgedAsTheDomReaderJudgesIt) {
     }
   }
   EXPECT_GT(accepted, 20);
+}
+
+// "edges" is a mesh option like "shading": a big mesh that has it is streamed, not handed to the DOM reader.
+TEST(SceneFastPath, MeshEdgesAreStreamed) {
+  const std::string text =
+      R"({"width":8,"height":8,"primitives":[{"type":"mesh","positions":[0,0,0,1,0,0,0,1,0],"indices":[0,1,2],)"
+      R"("edges":{"color":"#00f","width":2}}]})";
+  FastStats stats;
+  const auto fast = parse_scene_fast(text, {}, {}, &stats);
+  ASSERT_TRUE(fast.has_value());
+  EXPECT_EQ(stats.streamed, 1u);
+  EXPECT_EQ(stats.handed, 0u);
+  const auto dom = dom_or_nothing(text);
+  ASSERT_TRUE(dom.has_value());
+  EXPECT_TRUE(same(*fast, *dom));
+  EXPECT_TRUE(fast->meshes.at(0).edges.enabled);
+  EXPECT_EQ(fast->meshes[0].edges.width, 2);
 }
 
 TEST(SceneFastPath, GivesUpOnTheDepthLimitNulBytesAndDuplicateKeys) {

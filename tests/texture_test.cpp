@@ -11,6 +11,11 @@
 #include "support.h"
 #include "texture.h"
 
+// JPEGs made here, by stb's own writer (baseline: JFIF, DQT, SOF0, one DHT of four tables, SOS, EOI).
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+
 namespace {
 
 using raster::ErrorKind;
@@ -357,6 +362,92 @@ TEST(TextureDecode, BrokenFilesAreModelErrors) {
   const std::string png = png_of(checker(16, 2, test::kWhite, test::kBlack));
   EXPECT_EQ(decode_error(png.substr(0, png.size() / 2)).kind(), ErrorKind::model);  // truncated
   EXPECT_EQ(decode_error(png_header(4, 4)).kind(), ErrorKind::model);                 // header only
+}
+
+std::string jpeg_of(const Texture& t) {
+  std::string out;
+  stbi_write_jpg_to_func(
+      [](void* into, void* data, int size) { static_cast<std::string*>(into)->append(static_cast<char*>(data), size); },
+      &out, t.width, t.height, 4, t.rgba.data(), 95);
+  return out;
+}
+
+// Red on the left half, blue on the right: 16 x 8.
+Texture two_halves() {
+  return make_texture(16, 8, [](int x, int) { return x < 8 ? raster::Rgba8{200, 30, 30, 255} : raster::Rgba8{20, 40, 220, 255}; });
+}
+
+// Where the first marker `code` (FF code) is, at or after `from`.
+std::size_t marker_at(const std::string& jpeg, unsigned char code, std::size_t from = 2) {
+  const std::size_t at = jpeg.find(std::string{'\xff', static_cast<char>(code)}, from);
+  EXPECT_NE(at, std::string::npos) << "no marker " << int(code);
+  return at;
+}
+
+TEST(TextureDecode, DecodesAJpeg) {
+  const std::string jpeg = jpeg_of(two_halves());
+  const Texture t = raster::decode_texture(jpeg, "halves.jpg", 1 << 20);
+  ASSERT_EQ(t.width, 16);
+  ASSERT_EQ(t.height, 8);
+  auto at = [&](int x, int y) {
+    const std::uint8_t* p = &t.rgba[(std::size_t(y) * 16 + x) * 4];
+    return raster::Rgba8{p[0], p[1], p[2], p[3]};
+  };
+  EXPECT_LE(max_channel_difference(at(2, 4), {200, 30, 30, 255}), 12);  // lossy, but that colour
+  EXPECT_LE(max_channel_difference(at(13, 4), {20, 40, 220, 255}), 12);
+  EXPECT_EQ(at(2, 4).a, 255);
+  EXPECT_EQ(raster::decode_texture(jpeg, "halves.jpg", 1 << 20).rgba, t.rgba);  // the same pixels every time
+}
+
+// stb_image 2.27 writes past its 257-entry arrays when a DHT's 16 counts add up to more than 256 (found by
+// texture_fuzzer; stb issues #1289, #1291). Such a table is refused wherever stb_image could read it.
+TEST(TextureDecode, JpegHuffmanTablesOfMoreThan256CodesAreRefused) {
+  // texture_fuzzer's finding: a DHT before the frame declaring 0x23 + ... codes.
+  const unsigned char finding[] = {
+      0xff, 0xd8, 0xff, 0xff, 0xc4, 0x00, 0x23, 0x00, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
+      0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
+      0xff, 0xff, 0xff, 0xff, 0xff, 0xc0, 0x0e, 0x20, 0x70, 0x00, 0x60, 0x00, 0xd8, 0xff, 0xff, 0xff, 0xbe, 0x00,
+      0x00, 0x50};
+  const SceneError found = decode_error(std::string(reinterpret_cast<const char*>(finding), sizeof finding));
+  EXPECT_EQ(found.kind(), ErrorKind::model);
+  EXPECT_NE(std::string(found.what()).find("Huffman table"), std::string::npos) << found.what();
+
+  const std::string jpeg = jpeg_of(two_halves());
+  // The writer's own DHT, its first table's counts raised to 255 for lengths 15 and 16.
+  std::string inflated = jpeg;
+  const std::size_t dht = marker_at(inflated, 0xc4);
+  inflated[dht + 5 + 14] = inflated[dht + 5 + 15] = '\xff';
+  EXPECT_NE(std::string(decode_error(inflated).what()).find("declares"), std::string::npos);
+
+  // One between scans (where a progressive file has them), after the first scan's data.
+  const std::string bad_dht = std::string("\xff\xc4\x00\x13\x00", 5) + std::string(16, '\x20');
+  std::string late = jpeg;
+  late.insert(late.size() - 2, bad_dht);  // before EOI
+  EXPECT_EQ(decode_error(late).kind(), ErrorKind::model);
+
+  // The same bytes inside an APP segment's payload are not a DHT: skipped by its length, as stb_image does.
+  std::string in_app = jpeg;
+  const std::string app = std::string("\xff\xe1\x00", 3) + static_cast<char>(2 + bad_dht.size()) + bad_dht;
+  in_app.insert(2, app);
+  EXPECT_EQ(raster::decode_texture(in_app, "app.jpg", 1 << 20).rgba,
+            raster::decode_texture(jpeg, "plain.jpg", 1 << 20).rgba);
+}
+
+// A scan that selects a Huffman table no DHT defined: stb_image 2.27 decoded it from uninitialised memory.
+TEST(TextureDecode, AJpegScanWithoutItsHuffmanTableIsRefused) {
+  const std::string jpeg = jpeg_of(two_halves());
+  std::string no_tables = jpeg;
+  const std::size_t dht = marker_at(no_tables, 0xc4);
+  const std::size_t length = static_cast<std::uint8_t>(no_tables[dht + 2]) << 8 | static_cast<std::uint8_t>(no_tables[dht + 3]);
+  no_tables.erase(dht, 2 + length);
+  const SceneError e = decode_error(no_tables);
+  EXPECT_EQ(e.kind(), ErrorKind::model);
+  EXPECT_NE(std::string(e.what()).find("no table segment (DHT)"), std::string::npos) << e.what();
+
+  std::string other_table = jpeg;  // the first component's DC and AC tables: 2 and 2 (the writer defines 0 and 1)
+  const std::size_t sos = marker_at(other_table, 0xda);
+  other_table[sos + 6] = '\x22';
+  EXPECT_NE(std::string(decode_error(other_table).what()).find("DC Huffman table 2"), std::string::npos);
 }
 
 }  // namespace

@@ -361,7 +361,7 @@ class Reader {
         if (t.has_other("color")) throw HandOver{};
         if (!parse_hex_color(in_.string<HandOver>(), t.color)) throw HandOver{};
       } else if (key == "color" || key == "fill" || key == "closed" || key == "width" || key == "shading" ||
-                 key == "cull" || key == "wireframe" || key == "transform") {
+                 key == "cull" || key == "wireframe" || key == "edges" || key == "transform") {
         if (t.has_other(std::string(key).c_str()) || (key == "color" && t.has_color)) throw HandOver{};
         t.other[std::string(key)] = value<HandOver>(kPrimitiveDepth);
       } else {
@@ -465,7 +465,7 @@ class Reader {
       throw HandOver{};
     }
     if (t.has_positions || t.has_indices || t.has_normals || t.has_other("shading") || t.has_other("cull") ||
-        t.has_other("wireframe") || t.has_other("transform"))
+        t.has_other("wireframe") || t.has_other("edges") || t.has_other("transform"))
       throw HandOver{};
     if (scene.points.size() + n > UINT32_MAX) throw HandOver{};
     if (!t.other.is_null()) read_line_options(t.other, pointer, p);

@@ -2,6 +2,7 @@
 // size read from the header and checked before a single texel is decoded (a 20-byte PNG can claim
 // 100,000 x 100,000 pixels: that is a limit error, never a 40 GB allocation).
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -15,6 +16,13 @@
 #define STBI_NO_HDR
 #define STBI_MAX_DIMENSIONS 16384  // = kMaxTextureSide: stb_image refuses larger sides by itself, too
 #define STB_IMAGE_STATIC           // private to this file: no clash with another copy of stb_image
+// Every allocation zeroed. stb_image 2.27 (Debian 12's) mallocs its JPEG decoder state and leaves the Huffman
+// and quantisation tables of a scan that no DHT or DQT defined uninitialised: decoding then indexed from
+// garbage (stb issue #1289, fixed upstream in 2.28) and the same file could decode differently twice. Zeroed
+// tables decode in bounds and always to the same pixels.
+#define STBI_MALLOC(size) std::calloc(1, size)
+#define STBI_REALLOC(p, size) std::realloc(p, size)
+#define STBI_FREE(p) std::free(p)
 #define STB_IMAGE_IMPLEMENTATION
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
@@ -96,6 +104,85 @@ void check_png_chunks(std::string_view b, std::string_view name) {
   }
 }
 
+// The scan header (SOS) at `at` (its length field): each component's DC table must be defined if the scan
+// decodes DC coefficients with one (a baseline scan, or a progressive first DC pass: Ss = 0, Ah = 0), its AC
+// table if it decodes AC coefficients (baseline, or Se > 0).
+void check_first_scan(std::string_view b, std::size_t at, bool progressive, const bool (&defined)[2][4],
+                      std::string_view name) {
+  auto byte = [&](std::size_t k) -> std::size_t { return k < b.size() ? static_cast<std::uint8_t>(b[k]) : 0; };
+  const std::size_t components = byte(at + 2);
+  if (components < 1 || components > 4) return;  // stb_image refuses it ("bad SOS component count")
+  const std::size_t tail = at + 3 + 2 * components;  // Ss, Se, Ah/Al
+  const bool uses_dc = !progressive || (byte(tail) == 0 && byte(tail + 2) >> 4 == 0);
+  const bool uses_ac = !progressive || byte(tail + 1) > 0;
+  for (std::size_t c = 0; c < components; ++c) {
+    const std::size_t tables = byte(at + 4 + 2 * c), dc = tables >> 4, ac = tables & 15;
+    if (dc > 3 || ac > 3) return;  // stb_image refuses it ("bad DC huff" / "bad AC huff")
+    const char* missing = uses_dc && !defined[0][dc] ? "DC" : uses_ac && !defined[1][ac] ? "AC" : nullptr;
+    if (missing)
+      texture_error(ErrorKind::model, name,
+                    std::string("corrupt JPEG: the scan at byte ") + std::to_string(at) + " uses " + missing +
+                        " Huffman table " + std::to_string(missing[0] == 'D' ? dc : ac) +
+                        ", which no table segment (DHT) before it defines");
+  }
+}
+
+// JPEG: no Huffman table stb_image reads may hold more than 256 codes. stb_image 2.27 builds a table from its
+// 16 code counts into 257-entry arrays without checking their sum (up to 16 x 255), writing past them, and
+// then reads that many values into a 256-entry array (stb issues #1289 and #1291, fixed upstream in 2.28;
+// found here by texture_fuzzer). A DHT segment is read as stb_image reads it: a 16-bit length, then tables
+// of a class/id byte, 16 counts and their values while the length lasts; past the file's end stb_image reads
+// zeros, which make no codes. Up to the first scan the segments are walked as stb_image walks them (stray
+// bytes before the frame header skipped as it skips them). From there on it finds markers where its entropy
+// decoder stops, which only decoding tells, so every FF C4 pair is taken for a DHT it might read; a valid
+// file never has one inside scan data (an FF there is followed by 00 or a restart marker).
+//
+// The first scan's tables are known exactly: one it selects that no DHT before it defined is refused (stb_image
+// would decode it from zeroed tables, as flat grey). Later scans (progressive files) are left to the zeroed
+// allocation above.
+void check_jpeg_huffman_tables(std::string_view b, std::string_view name) {
+  auto byte = [&](std::size_t at) -> std::size_t { return at < b.size() ? static_cast<std::uint8_t>(b[at]) : 0; };
+  bool defined[2][4] = {};  // [DC, AC][table id]: by the DHTs read so far
+  auto check_dht = [&](std::size_t at) {  // `at`: the segment's length field
+    std::int64_t left = static_cast<std::int64_t>(byte(at) << 8 | byte(at + 1)) - 2;
+    for (at += 2; left > 0 && at < b.size();) {
+      const std::size_t q = byte(at);
+      if (q >> 4 > 1 || (q & 15) > 3) return;  // stb_image refuses it ("bad DHT header") and stops
+      std::size_t codes = 0;
+      for (int i = 1; i <= 16; ++i) codes += byte(at + i);
+      if (codes > 256)
+        texture_error(ErrorKind::model, name,
+                      "corrupt JPEG: a Huffman table (DHT) at byte " + std::to_string(at) + " declares " +
+                          std::to_string(codes) + " codes; at most 256 exist");
+      defined[q >> 4][q & 15] = true;
+      at += 17 + codes, left -= static_cast<std::int64_t>(17 + codes);
+    }
+  };
+  std::size_t at = 2;  // after SOI
+  bool frame = false, progressive = false;
+  while (at < b.size()) {
+    if (byte(at) != 0xff) {
+      if (frame) break;  // stb_image refuses the file here; the rest is checked below all the same
+      ++at;
+      continue;
+    }
+    while (at < b.size() && byte(at) == 0xff) ++at;  // fill bytes
+    if (at >= b.size()) return;
+    const std::size_t marker = byte(at++);
+    if (marker == 0xd9) return;  // EOI
+    const bool known = marker == 0xc4 || marker == 0xdb || marker == 0xdd || marker == 0xfe ||
+                       (marker >= 0xe0 && marker <= 0xef) || (marker >= 0xc0 && marker <= 0xc2);
+    if (marker == 0xda && frame) check_first_scan(b, at, progressive, defined, name);
+    if (marker == 0xda || !known) break;  // the first scan, or a marker stb_image refuses
+    if (marker == 0xc4) check_dht(at);
+    frame |= marker >= 0xc0 && marker <= 0xc2;
+    progressive |= marker == 0xc2;
+    at += byte(at) << 8 | byte(at + 1);  // each of these is read, or skipped, by its length
+  }
+  for (std::size_t k = at > 0 ? at - 1 : 0; k + 1 < b.size(); ++k)
+    if (byte(k) == 0xff && byte(k + 1) == 0xc4) check_dht(k + 2);
+}
+
 // The PNG without its empty IDAT chunks (legal, and carrying nothing), or `b` itself when it has none:
 // stb_image reads a first IDAT of length 0 with memcpy(NULL, src, 0), undefined behaviour that UBSan
 // reports (found by texture_fuzzer). Chunks are walked only while their lengths fit; the rest is left to
@@ -147,7 +234,10 @@ Texture decode_texture(std::string_view bytes, std::string_view name, std::int64
                       std::to_string(std::max<std::int64_t>(texel_budget, 0)) + " pixels)");
 
   const bool png = format_of(bytes)[0] == 'p';
-  if (png) check_png_chunks(bytes, name);
+  if (png)
+    check_png_chunks(bytes, name);
+  else
+    check_jpeg_huffman_tables(bytes, name);
   std::string copy;
   const std::string_view decodable = png ? without_empty_idat(bytes, copy) : bytes;
   int dw = 0, dh = 0, channels = 0;
