@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -28,7 +29,8 @@ constexpr const char* kUsage = R"(usage:
   rasterd render MODEL.obj [-o OUT.png] [--width N] [--height N] [--background C] [--view V]
                  [--projection P] [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z]
                  [--part NAME=FILE]
-                                                        a bare OBJ model with the default scene
+                                                        a bare OBJ model with the default scene; the MTL
+                                                        and textures it names are read from its folder
   rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080)
 
 render:  writes the PNG to OUT.png (default: stdout); --explain prints the render plan as JSON instead.
@@ -67,6 +69,23 @@ std::string describe(const raster::SceneError& e) {
   return e.what() + where;
 }
 
+// A model read from a file finds the files it names beside it, as model viewers do: the MTL its mtllib lines
+// name, then the textures that MTL names, read from the model's folder by file name (what --part gave wins;
+// a name that is not there is left to the parser to report). The service never does this: it has only what
+// was uploaded.
+void gather_model_files(const std::string& model_path, const std::string& obj, raster::Uploads& uploads) {
+  const std::filesystem::path folder = std::filesystem::path(model_path).parent_path();
+  const auto mtl = uploads.find("mtl");
+  for (int round = 0; round < 2; ++round)  // the libraries, then the textures they name
+    for (const std::string& name : raster::obj_files(obj, mtl == uploads.end() ? "" : mtl->second, uploads)) {
+      const std::filesystem::path file = folder / name;
+      std::error_code error;
+      if (uploads.contains(name) || !std::filesystem::is_regular_file(file, error)) continue;  // not "..", not a folder
+      std::string bytes;
+      if (read_all(file.string(), bytes)) uploads.emplace(name, std::move(bytes));
+    }
+}
+
 int run_render(const std::vector<std::string>& args) {
   std::string input, output = "-";
   bool explain = false;
@@ -101,6 +120,7 @@ int run_render(const std::vector<std::string>& args) {
     std::cerr << "rasterd: cannot read " << input << ": " << std::strerror(errno) << "\n";
     return 1;
   }
+  if (input != "-" && !rasterd::is_scene_text(text)) gather_model_files(input, text, uploads);
   try {
     raster::Scene scene =
         rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{});

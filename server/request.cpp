@@ -14,11 +14,6 @@ namespace {
   throw raster::SceneError(raster::ErrorKind::invalid, "query parameter \"" + name + "\": " + message);
 }
 
-bool starts_like_json(std::string_view body) {
-  const std::size_t i = body.find_first_not_of(" \t\r\n");
-  return i != std::string_view::npos && body[i] == '{';
-}
-
 // `curl -d @model.obj` drops newlines: what arrives is "v 0 0 0v 1 0 0f 1 2 3..." on one line.
 bool looks_like_flattened_obj(std::string_view body) {
   if (body.size() < 64 || body.find('\n') != std::string_view::npos) return false;
@@ -74,6 +69,11 @@ std::string default_scene_json(const Params& params) {
 
 }  // namespace
 
+bool is_scene_text(std::string_view body) {
+  const std::size_t i = body.find_first_not_of(" \t\r\n");
+  return i != std::string_view::npos && body[i] == '{';
+}
+
 std::string upload_key(std::string_view part_name, std::string_view file_name) {
   if (part_name == "scene" || part_name == "model" || part_name == "mtl") return std::string(part_name);
   const std::size_t slash = file_name.find_last_of("/\\");
@@ -88,7 +88,7 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     raster::require_utf8(name, "the name of a query parameter");
     raster::require_utf8(value, "query parameter \"" + name + "\"");
   }
-  if (starts_like_json(body)) return raster::parse_scene(body, limits, uploads);
+  if (is_scene_text(body)) return raster::parse_scene(body, limits, uploads);
   if (looks_like_flattened_obj(body))
     throw raster::SceneError(
         raster::ErrorKind::syntax,

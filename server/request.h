@@ -20,6 +20,9 @@ using Params = std::map<std::string, std::string, std::less<>>;
 /// Without a file name, a part keeps its own name.
 std::string upload_key(std::string_view part_name, std::string_view file_name);
 
+/// True when `body` is a scene (its first non-blank byte is '{'); else it is an OBJ model.
+bool is_scene_text(std::string_view body);
+
 /// `body` starting with '{' (after whitespace) is a scene; anything else is an OBJ model drawn with the
 /// default scene (512x512, camera framing the model) adjusted by `params`. A body that looks like an OBJ
 /// whose line breaks were stripped (curl -d) is refused with a hint. Throws raster::SceneError.

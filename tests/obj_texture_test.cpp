@@ -184,6 +184,23 @@ TEST(ObjTexture, GivenMtlTextWinsAndAnUnsentLibraryIsNoError) {
   EXPECT_TRUE(raster::parse_obj(outside, {}, {}, images()).textures.empty());
 }
 
+// What a model names, for a program with its folder at hand: the libraries, then the textures they name.
+TEST(ObjTexture, ObjFilesNamesTheLibrariesAndThenTheTexturesTheyName) {
+  const std::string quad = test::read_file(kDir + "quad.obj");
+  EXPECT_EQ(raster::obj_files(quad), (std::vector<std::string>{"quad.mtl"}));
+  const raster::Uploads with_library{{"quad.mtl", test::read_file(kDir + "basic.mtl")}};
+  EXPECT_EQ(raster::obj_files(quad, {}, with_library), (std::vector<std::string>{"quad.mtl", "checker.png"}));
+  // Given MTL text is the materials; folders are dropped; a line of names gives itself whole and each name.
+  EXPECT_EQ(raster::obj_files(quad, test::read_file(kDir + "relative-path.mtl")),
+            (std::vector<std::string>{"quad.mtl", "checker.png"}));
+  EXPECT_EQ(raster::obj_files("mtllib ../m/a.mtl b.mtl\nv 0 0 0\n"),
+            (std::vector<std::string>{"a.mtl b.mtl", "a.mtl", "b.mtl"}));
+  EXPECT_EQ(raster::obj_files("mtllib my materials.mtl\n"),
+            (std::vector<std::string>{"my materials.mtl", "my", "materials.mtl"}));
+  // A broken MTL is parse_obj's to report, not this function's.
+  EXPECT_NO_THROW(raster::obj_files(quad, test::read_file(kDir + "bad-option.mtl")));
+}
+
 TEST(ObjTexture, CaseOnlyDifferencesInTheFileNameAreForgiven) {
   raster::Uploads upper{{"CHECKER.PNG", texture_png(false)}};
   const Mesh m =

@@ -188,4 +188,33 @@ TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
   std::remove(out.c_str());
 }
 
+// The CLI given a model's path finds what it names beside it, as model viewers do: the same picture as the
+// upload of all three files, with no --part; from a folder without the texture, an error naming it.
+TEST(TexturedModel, CliFindsTheFilesTheModelNamesBesideIt) {
+  test::TestServer server;
+  const Box box;
+  auto http = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                               {"model", box.obj, "box.obj", "model/obj"},
+                                               {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                               {"texture", box.png, "box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(http);
+  const std::string out = testing::TempDir() + "cli-box-beside.png";
+  const std::string args = " --width 64 --height 64 --eye 3,2.5,4 -o " + out + " 2>&1";
+  ASSERT_EQ(std::system((std::string(RASTERD_BINARY) + " render " + kDir + "box.obj" + args).c_str()), 0);
+  EXPECT_EQ(test::read_file(out), http->body);
+  std::remove(out.c_str());
+
+  // The model and its MTL alone in a folder: the texture the MTL names is missing, and said to be.
+  const std::string folder = testing::TempDir() + "cli-box-no-texture/";
+  ASSERT_EQ(std::system(("mkdir -p " + folder + " && cp " + kDir + "box.obj " + kDir + "box.mtl " + folder).c_str()), 0);
+  FILE* pipe = popen((std::string(RASTERD_BINARY) + " render " + folder + "box.obj" + args).c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string said;
+  char buffer[512];
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) said.append(buffer, n);
+  EXPECT_NE(pclose(pipe), 0);
+  EXPECT_NE(said.find("\"box_diffuse.png\""), std::string::npos) << said;
+  std::system(("rm -rf " + folder).c_str());
+}
+
 }  // namespace

@@ -354,6 +354,34 @@ std::uint8_t unit_byte(double v) {
 
 }  // namespace
 
+std::vector<std::string> obj_files(std::string_view obj_text, std::string_view mtl_text, const Uploads& files) {
+  std::vector<std::string> names;
+  auto add = [&](std::string name) {
+    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(std::move(name));
+  };
+  std::vector<std::string_view> mtllibs;
+  for (std::size_t pos = 0; pos <= obj_text.size();) {
+    std::size_t end = obj_text.find('\n', pos);
+    if (end == std::string_view::npos) end = obj_text.size();
+    const std::string_view line = obj_text.substr(pos, end - pos);
+    pos = end + 1;
+    const auto w = words(line);
+    if (w.size() < 2 || w[0] != "mtllib") continue;
+    const std::string_view rest = line.substr(static_cast<std::size_t>(w[1].data() - line.data()));
+    mtllibs.push_back(rest);
+    add(file_name_of(rest));  // one name with spaces, or
+    for (std::size_t k = 1; k < w.size(); ++k) add(file_name_of(w[k]));  // several names
+  }
+  const std::string libraries = mtl_text.empty() ? named_libraries(mtllibs, files) : std::string();
+  try {
+    for (const auto& [material, extra] : read_mtl(mtl_text.empty() ? libraries : mtl_text).materials)
+      if (extra.has_map) add(extra.map.file);
+  } catch (const SceneError&) {
+    // an MTL with errors names what it names before them; parse_obj reports the error
+  }
+  return names;
+}
+
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits, const Uploads& files) {
   // Checked first: names and tokens of the model are quoted in its errors.
   require_utf8(obj_text, "the model (OBJ)", true);

@@ -242,4 +242,12 @@ Texture decode_texture(std::string_view bytes, std::string_view name, std::int64
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {},
                const Uploads& files = {});
 
+/// The files an OBJ model names, as parse_obj looks for them (file names without folders, each once, in the
+/// order named): the libraries of its `mtllib` lines (a line's whole text as one name, and each word of it),
+/// and the textures (map_Kd) of the materials in `mtl_text` or, without it, in those libraries as `files`
+/// holds them. For a program that has the model's folder at hand (the CLI) to gather them as uploads, in two
+/// rounds: libraries first, then the textures they name. Never throws for a bad MTL: parse_obj reports it.
+std::vector<std::string> obj_files(std::string_view obj_text, std::string_view mtl_text = {},
+                                   const Uploads& files = {});
+
 }  // namespace raster
