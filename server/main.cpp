@@ -91,6 +91,7 @@ int run_render(const std::vector<std::string>& args) {
   bool explain = false;
   rasterd::Params params;
   raster::Uploads uploads;
+  std::vector<rasterd::PartName> parts;  // --part NAME=FILE, in order
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" && i + 1 < args.size()) {
@@ -102,7 +103,8 @@ int run_render(const std::vector<std::string>& args) {
       const std::size_t eq = spec.find('=');
       if (eq == std::string::npos) return usage_error("--part takes NAME=FILE");
       const std::string file = spec.substr(eq + 1);
-      if (!read_all(file, uploads[rasterd::upload_key(spec.substr(0, eq), file)])) {
+      parts.push_back({spec.substr(0, eq), rasterd::upload_key(spec.substr(0, eq), file)});
+      if (!read_all(file, uploads[parts.back().key])) {
         std::cerr << "rasterd: cannot read " << spec.substr(eq + 1) << ": " << std::strerror(errno) << "\n";
         return 1;
       }
@@ -114,6 +116,7 @@ int run_render(const std::vector<std::string>& args) {
       return usage_error("unexpected argument '" + a + "'");
     }
   }
+  rasterd::add_part_names(uploads, parts);
   if (input.empty()) return usage_error("render needs a scene file (or '-' for stdin)");
   std::string text;
   if (!read_all(input, text)) {

@@ -1,5 +1,6 @@
 #include "request.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -79,6 +80,14 @@ std::string upload_key(std::string_view part_name, std::string_view file_name) {
   const std::size_t slash = file_name.find_last_of("/\\");
   const std::string_view base = slash == std::string_view::npos ? file_name : file_name.substr(slash + 1);
   return std::string(base.empty() ? part_name : base);
+}
+
+void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts) {
+  for (const PartName& p : parts) {
+    if (p.part == p.key || uploads.contains(p.part)) continue;
+    const bool shared = std::count_if(parts.begin(), parts.end(), [&](const PartName& q) { return q.part == p.part; }) > 1;
+    if (auto bytes = uploads.find(p.key); !shared && bytes != uploads.end()) uploads.emplace(p.part, bytes->second);
+  }
 }
 
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "raster/scene.h"
 
@@ -19,6 +20,18 @@ using Params = std::map<std::string, std::string, std::less<>>;
 /// sent as `curl -F texture=@head_diffuse.png` is found by the name the MTL uses ("head_diffuse.png").
 /// Without a file name, a part keeps its own name.
 std::string upload_key(std::string_view part_name, std::string_view file_name);
+
+/// One uploaded part as it arrived: its part name and the key upload_key() gave it.
+struct PartName {
+  std::string part;  ///< the multipart part's name (`tex` in `-F tex=@maps/c.png`)
+  std::string key;   ///< where its bytes are in raster::Uploads (`c.png`)
+};
+
+/// Makes each part findable by its part name too, as in rasterd 0.1, where a scene's `"source"` and
+/// `"mtl_source"` name parts: `-F tex=@maps/c.png` is "c.png" for the MTL and "tex" for `{"source": "tex"}`.
+/// A part name that two parts share, or that is already a key, names nothing more (which bytes were meant is
+/// not knowable). Such a part's bytes are held twice, within the body limit.
+void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts);
 
 /// True when `body` is a scene (its first non-blank byte is '{'); else it is an OBJ model.
 bool is_scene_text(std::string_view body);

@@ -214,6 +214,7 @@ struct Service::State {
       std::string* current = nullptr;
       std::string bad_name;   // a part or file name that is not UTF-8: the names are echoed in errors
       std::string duplicate;  // two parts kept under one name: which bytes are meant is not knowable
+      std::vector<PartName> parts;
       complete = reader(
           [&](const httplib::MultipartFormData& part) {
             for (const std::string* name : {&part.name, &part.filename})
@@ -226,6 +227,7 @@ struct Service::State {
               return true;
             }
             const std::string key = upload_key(part.name, part.filename);
+            parts.push_back({part.name, key});
             const auto [it, added] = uploads.try_emplace(key);
             if (!added) {
               duplicate = key;
@@ -248,6 +250,7 @@ struct Service::State {
                               "more than one part is named \"" + duplicate +
                                   "\" (texture parts are named by their file name); send each once"),
                       "duplicate_part");
+      add_part_names(uploads, parts);
     } else {
       if (const auto declared = req.get_header_value<std::uint64_t>("Content-Length")) body.reserve(declared);
       complete = reader([&](const char* data, std::size_t n) { return take(body, data, n); });

@@ -274,7 +274,9 @@ TEST(Edges, VisibleCreasesAreDrawnWholeHiddenOnesAndFaceDiagonalsAreNot) {
   for (const auto& e : edges) {
     const raster::Vec3 a = corners[e[0]], b = corners[e[1]];
     const bool hidden = e[0] == 0 || e[1] == 0;  // the three edges at the corner facing away
-    for (double t = 0.2; t <= 0.8; t += 0.1) {
+    // Visible edges whole, up to their corners (the nearest corner's edges once lost their ends to the near
+    // plane); hidden ones away from the visible corners they end at.
+    for (double t = hidden ? 0.2 : 0.05; t <= (hidden ? 0.8 : 0.951); t += 0.05) {
       const auto [x, y] = on_screen(plan, {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t});
       if (hidden)
         EXPECT_FALSE(black_near(image, x, y, 1)) << "hidden edge " << e[0] << "-" << e[1] << " at " << t;
@@ -290,6 +292,33 @@ TEST(Edges, VisibleCreasesAreDrawnWholeHiddenOnesAndFaceDiagonalsAreNot) {
     const raster::Vec3 p = corners[a], q = corners[b];
     const auto [x, y] = on_screen(plan, {(p.x + q.x) / 2, (p.y + q.y) / 2, (p.z + q.z) / 2});
     EXPECT_FALSE(black_near(image, x, y, 1)) << "diagonal " << a << "-" << b;
+  }
+}
+
+// On a small image two pixels are more than the 1% margin the fitted near plane leaves in front of the
+// content: edges pulled that far toward the eye were clipped away, and a cube seen from the front at 64 px
+// had no outline. The pull stops at the near plane.
+TEST(Edges, TheNearestFaceKeepsItsEdgesOnASmallImage) {
+  for (const char* projection : {"perspective", "orthographic"}) {
+    const json doc = {{"width", 64},
+                      {"height", 64},
+                      {"background", "#ffffff"},  // black is an edge, not the background beside the outline
+                      {"camera", {{"projection", projection}}},
+                      {"primitives",
+                       {{{"type", "obj"}, {"data", kCubeObj}, {"mtl", kCubeMtl}, {"shading", "unlit"}, {"edges", true}}}}};
+    const raster::Scene s = raster::parse_scene(doc.dump());
+    const raster::RenderPlan plan = raster::plan(s);
+    const raster::Image image = raster::render(s, plan);
+    const raster::Vec3 front[4] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};  // the face toward the eye
+    for (int k = 0; k < 4; ++k) {
+      const raster::Vec3 a = front[k], b = front[(k + 1) % 4];
+      for (double t = 0.05; t <= 0.951; t += 0.05) {
+        const auto [x, y] = on_screen(plan, {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, 1});
+        EXPECT_TRUE(black_near(image, x, y, 1)) << projection << ": front edge " << k << " at " << t;
+      }
+    }
+    // Inside the face, its blue, not an edge.
+    EXPECT_EQ(test::pixel(image, 32, 32), (raster::Rgba8{0, 0, 255, 255})) << projection;
   }
 }
 

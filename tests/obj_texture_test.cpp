@@ -2,6 +2,8 @@
 // the same quad, and what each must give is asserted (texture found, options, colour, a rendered pixel).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -108,9 +110,30 @@ TEST(ObjTexture, ScaleAndOffsetMoveTheTexture) {
   EXPECT_EQ(test::pixel(image, 0, 0), (raster::Rgba8{0, 255, 0, 255}));
 }
 
+// -s 2 2 -o 0.5 0 with the image repeating: u' = 2u + 0.5, v' = 2v. Each pixel centre falls halfway between
+// two texels of one cell, so the picture is the checker in 1-pixel cells with left and right swapped. Without
+// -s the cells would be 2 pixels; without -o not swapped; without v's scale 2 rows tall.
+TEST(ObjTexture, ScaleAndOffsetTogetherRepeatTheTexture) {
+  const raster::Image image = render(read("scale-offset.mtl"));
+  const raster::Rgba8 cells[4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {255, 255, 0, 255}};
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const raster::Rgba8 want = cells[(j % 2) * 2 + (i + 1) % 2], got = test::pixel(image, i, j);
+      // Two texels a pixel: level 1 of the mipmaps, whose texels are the cells themselves.
+      EXPECT_LE(std::max({std::abs(got.r - want.r), std::abs(got.g - want.g), std::abs(got.b - want.b)}), 2)
+          << i << "," << j;
+    }
+}
+
 TEST(ObjTexture, KdMultipliesTheTextureAndItsAbsenceMeansWhite) {
   EXPECT_EQ(test::pixel(render(read("kd-multiplies.mtl")), 1, 1), (raster::Rgba8{255, 0, 0, 255}));
   EXPECT_EQ(test::pixel(render(read("no-kd.mtl")), 1, 1), test::kWhite);
+  // Kd 1 0 1 times the checker, per channel: red stays, green goes black, blue stays, yellow turns red.
+  const raster::Image image = render(read("kd-checker.mtl"));
+  EXPECT_EQ(test::pixel(image, 0, 0), (raster::Rgba8{255, 0, 0, 255}));
+  EXPECT_EQ(test::pixel(image, 3, 0), (raster::Rgba8{0, 0, 0, 255}));
+  EXPECT_EQ(test::pixel(image, 0, 3), (raster::Rgba8{0, 0, 255, 255}));
+  EXPECT_EQ(test::pixel(image, 3, 3), (raster::Rgba8{255, 0, 0, 255}));
 }
 
 TEST(ObjTexture, AMissingTextureNamesTheFileAndWhatWasSent) {
@@ -230,12 +253,23 @@ TEST(ObjTexture, TexturesShareTheScenesTexelLimit) {
 }
 
 TEST(ObjTexture, BadTextureCoordinatesAreModelErrorsWithTheirLine) {
+  // Not a number, and one a float cannot hold (it would become infinite and fail far from its line).
+  for (const char* vt : {"vt 0 nan", "vt 1e39 0"}) {
+    try {
+      raster::parse_obj(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + vt + "\nf 1/1 2/1 3/1\n");
+      ADD_FAILURE() << "expected an error for " << vt;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::model) << vt;
+      EXPECT_EQ(e.where().line, 4u) << vt;
+    }
+  }
   try {
-    raster::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 nan\nf 1/1 2/1 3/1\n");
+    raster::parse_obj(test::read_file(kDir + "quad.obj"), "newmtl skin\nmap_Kd -s 1e39 1 checker.png\n", {}, images());
     FAIL() << "expected an error";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.kind(), ErrorKind::model);
-    EXPECT_EQ(e.where().line, 4u);
+    EXPECT_NE(std::string(e.what()).find("line 2: map_Kd option -s takes numbers within +-1e30"), std::string::npos)
+        << e.what();
   }
 }
 

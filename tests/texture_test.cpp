@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <zlib.h>
+
 #include "raster/raster.h"
 #include "support.h"
 #include "texture.h"
@@ -227,6 +229,24 @@ TEST(Texture, MinifiedCheckerIsHalfLightNotAliased) {
   }
 }
 
+// The level the renderer picks, seen in its pixels. Stripes of two black and two white texels, 64 wide, on
+// a 32-pixel quad: two texels a pixel, level 1, whose texels are the stripes one texel wide. The coordinates
+// are moved by a quarter of a level-1 texel so each level gives another picture: level 1 blends its texels
+// 3:1 (sRGB 137 and 225, a quarter and three quarters of the light), level 0 would be sampled on its texel
+// centres (0 and 255), level 2 is grey throughout (188).
+TEST(Texture, TheRendererPicksTheMipLevelOfThePixelFootprint) {
+  const Texture stripes = make_texture(64, 64, [](int x, int) { return (x / 2) % 2 ? test::kWhite : test::kBlack; });
+  Mesh m = textured_quad(stripes, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});
+  const float shift = -1.0f / 128;
+  m.uvs = {{shift, 0}, {1 + shift, 0}, {1 + shift, 1}, {shift, 1}};
+  Scene s = scene_of(std::move(m), 32);
+  look_at_unit_square(s);
+  const raster::Image image = test::render(s);
+  for (int j = 0; j < 32; ++j)
+    for (int i = 0; i < 32; ++i)
+      ASSERT_NEAR(test::pixel(image, i, j).r, to_byte(i % 2 ? 0.75 : 0.25), 1) << i << "," << j;
+}
+
 TEST(Texture, ColourMultipliesTheTextureAndLightingStillApplies) {
   const Texture white = make_texture(2, 2, [](int, int) { return test::kWhite; });
   Mesh m = textured_quad(white, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});
@@ -355,6 +375,42 @@ TEST(TextureDecode, HugeHeadersAreLimitErrorsBeforeAnyAllocation) {
   EXPECT_NE(std::string(budget.what()).find("4000x4000"), std::string::npos) << budget.what();
 }
 
+// A PNG of one 1x1 RGBA image whose IDAT holds `raw` deflated (zlib), CRCs left 0 (stb_image does not read them).
+std::string png_with_data(const std::string& raw) {
+  uLongf size = compressBound(raw.size());
+  std::string z(size, '\0');
+  EXPECT_EQ(compress2(reinterpret_cast<Bytef*>(z.data()), &size, reinterpret_cast<const Bytef*>(raw.data()),
+                      raw.size(), 9),
+            Z_OK);
+  z.resize(size);
+  std::string png = png_header(1, 1);
+  auto chunk = [&](const char* type, const std::string& data) {
+    for (int k = 3; k >= 0; --k) png += static_cast<char>((data.size() >> (8 * k)) & 0xff);
+    png += type + data + std::string(4, '\0');
+  };
+  chunk("IDAT", z);
+  chunk("IEND", "");
+  return png;
+}
+
+// stb_image 2.27 inflates PNG data into a buffer it doubles for as long as the data goes on, then keeps
+// the rows the header asked for: 1.4 MB of deflated zeros behind a 1x1 header allocated 2.5 GiB and gave a
+// 1x1 texture. Its allocations are capped by what the header claims, so such data is an error.
+TEST(TextureDecode, DataThatInflatesBeyondTheHeaderIsRefused) {
+  // What a 1x1 RGBA row is: a filter byte and four bytes; it decodes.
+  const Texture one = raster::decode_texture(png_with_data(std::string("\0\x10\x20\x30\x40", 5)), "one.png", 1);
+  EXPECT_EQ(one.rgba, (std::vector<std::uint8_t>{0x10, 0x20, 0x30, 0x40}));
+  // 16 MiB of zeros (16 KB deflated) behind the same header.
+  const std::string bomb = png_with_data(std::string(16 << 20, '\0'));
+  ASSERT_LT(bomb.size(), 64u << 10);
+  const SceneError e = decode_error(bomb);
+  EXPECT_EQ(e.kind(), ErrorKind::model);
+  EXPECT_NE(std::string(e.what()).find("inflates to more than a 1x1 image holds"), std::string::npos) << e.what();
+  // The cap is per decode: a valid texture decoded after it is not limited by it.
+  const Texture t = checker(300, 7, {1, 2, 3, 255}, {250, 251, 252, 128});
+  EXPECT_EQ(raster::decode_texture(png_of(t), "big.png", 1 << 20).rgba, t.rgba);
+}
+
 TEST(TextureDecode, BrokenFilesAreModelErrors) {
   EXPECT_EQ(decode_error("").kind(), ErrorKind::model);
   EXPECT_EQ(decode_error("GIF89a....").kind(), ErrorKind::model);
@@ -448,6 +504,25 @@ TEST(TextureDecode, AJpegScanWithoutItsHuffmanTableIsRefused) {
   const std::size_t sos = marker_at(other_table, 0xda);
   other_table[sos + 6] = '\x22';
   EXPECT_NE(std::string(decode_error(other_table).what()).find("DC Huffman table 2"), std::string::npos);
+}
+
+// Found by texture_fuzzer: a JPEG whose scan a stray marker (FF 5E) cuts short. stb_image 2.27's bit reader
+// then counts fewer than no bits and its next refill shifts by 32 (stb #1293), undefined behaviour that make
+// test-asan aborts on. Past the cut the reader now takes zeros, as stb_image 2.28 does, the same every time.
+TEST(TextureDecode, AJpegScanCutShortByAMarkerReadsZerosPastTheCut) {
+  const std::string finding = test::read_file(RASTERD_TESTS_DIR "/data/textures/finding-scan-cut-by-marker.jpg");
+  // Its marker is none stb_image knows: once the scan is read (past the cut, zeros), the file is refused.
+  EXPECT_EQ(decode_error(finding).kind(), ErrorKind::model);
+  // A valid file cut halfway through its scan data and ended there (EOI): the cut half decodes from zeros,
+  // the same every time, and the first half is the image's.
+  const std::string jpeg = jpeg_of(two_halves());
+  const std::size_t data = marker_at(jpeg, 0xda) + 2 + 12;  // after SOS and its 12-byte header (3 components)
+  const std::string cut = jpeg.substr(0, data + (jpeg.size() - 2 - data) / 2) + "\xff\xd9";
+  const Texture half = raster::decode_texture(cut, "cut.jpg", 1 << 20);
+  EXPECT_EQ(half.rgba, raster::decode_texture(cut, "cut.jpg", 1 << 20).rgba);
+  const Texture whole = raster::decode_texture(jpeg, "whole.jpg", 1 << 20);
+  EXPECT_TRUE(std::equal(whole.rgba.begin(), whole.rgba.begin() + 4 * 4, half.rgba.begin()))
+      << "the first texels, before the cut";
 }
 
 }  // namespace

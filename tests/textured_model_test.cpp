@@ -95,6 +95,48 @@ TEST(TexturedModel, AnMtlSentUnderItsFileNameIsTheOneMtllibNames) {
   EXPECT_EQ(by_file->body, named->body);
 }
 
+// rasterd 0.1's scenes name parts by their part name ("source", "mtl_source", a mesh texture's "source"),
+// whatever file name curl sends with them; files are found by file name too. Both work in one request.
+TEST(TexturedModel, ScenesStillNamePartsByTheirPartName) {
+  test::TestServer server;
+  const Box box;
+  auto plain = server.client().Post(kQuery, httplib::MultipartFormDataItems{
+                                                {"model", box.obj, "box.obj", "model/obj"},
+                                                {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                                {"texture", box.png, "box_diffuse.png", "image/png"}});
+  const std::string scene =
+      R"({"width": 64, "height": 64, "camera": {"eye": [3, 2.5, 4]},
+          "primitives": [{"type": "obj", "source": "second", "mtl_source": "mymtl"}]})";
+  auto named = server.client().Post("/render", httplib::MultipartFormDataItems{
+                                                   {"scene", scene, "", "application/json"},
+                                                   {"second", box.obj, "box.obj", "model/obj"},
+                                                   {"mymtl", box.mtl, "box.mtl", "model/mtl"},
+                                                   {"tex", box.png, "box_diffuse.png", "image/png"}});
+  ASSERT_TRUE(plain && named);
+  ASSERT_EQ(named->status, 200) << named->body;
+  EXPECT_EQ(named->body, plain->body);
+
+  // A mesh's texture by part name; the PNG's file name does not matter.
+  const std::string quad =
+      R"({"width": 8, "height": 8, "primitives": [{"type": "mesh", "shading": "unlit",
+          "positions": [[-1,-1,0],[1,-1,0],[1,1,0],[-1,1,0]], "indices": [[0,1,2],[0,2,3]],
+          "uvs": [[0,0],[1,0],[1,1],[0,1]], "texture": {"source": "tex"}}]})";
+  auto mesh = server.client().Post("/render", httplib::MultipartFormDataItems{
+                                                  {"scene", quad, "", "application/json"},
+                                                  {"tex", box.png, "maps/anything.png", "image/png"}});
+  ASSERT_TRUE(mesh);
+  EXPECT_EQ(mesh->status, 200) << mesh->body;
+
+  // A part name two parts share names neither: which one was meant is not knowable.
+  auto shared = server.client().Post("/render", httplib::MultipartFormDataItems{
+                                                    {"scene", quad, "", "application/json"},
+                                                    {"tex", box.png, "a.png", "image/png"},
+                                                    {"tex", box.png, "b.png", "image/png"}});
+  ASSERT_TRUE(shared);
+  EXPECT_EQ(shared->status, 400) << shared->body;
+  EXPECT_EQ(nlohmann::json::parse(shared->body).at("pointer"), "/primitives/0/texture/source") << shared->body;
+}
+
 TEST(TexturedModel, AMissingTextureIsA422NamingTheFileAndThePartsSent) {
   test::TestServer server;
   const Box box;
@@ -186,6 +228,23 @@ TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   EXPECT_EQ(test::read_file(out), http->body);
   std::remove(out.c_str());
+
+  // A scene naming its parts by part name, as over HTTP.
+  const std::string scene_file = testing::TempDir() + "cli-box-scene.json";
+  {
+    std::FILE* f = std::fopen(scene_file.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fputs(R"({"width": 64, "height": 64, "camera": {"eye": [3, 2.5, 4]},
+                  "primitives": [{"type": "obj", "source": "second", "mtl_source": "mymtl"}]})",
+               f);
+    std::fclose(f);
+  }
+  const std::string named = std::string(RASTERD_BINARY) + " render " + scene_file + " --part second=" + kDir +
+                            "box.obj --part mymtl=" + kDir + "box.mtl --part tex=" + kDir + "box_diffuse.png -o " + out;
+  ASSERT_EQ(std::system(named.c_str()), 0) << named;
+  EXPECT_EQ(test::read_file(out), http->body);
+  std::remove(out.c_str());
+  std::remove(scene_file.c_str());
 }
 
 // The CLI given a model's path finds what it names beside it, as model viewers do: the same picture as the

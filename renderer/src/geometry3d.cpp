@@ -456,7 +456,11 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
                                     : 0) /
                                view.plan.height;
   const double ortho_pixel = camera.height / view.plan.height;
-  auto pulled = [&](std::uint32_t i) {  // the endpoint two pixels nearer the eye, in clip space
+  // The endpoint in clip space, with the depth it would have two pixels nearer the eye: moving it along its
+  // ray to the eye leaves it where it is on screen and changes only z. The depth stops at the near plane: on a
+  // small image two pixels are more than the 1% margin a fitted near plane leaves in front of the content, and
+  // edges on its nearest face would be clipped away.
+  auto pulled = [&](std::uint32_t i) {
     const Vec3& p = world[i];
     Vec3 toward_eye = forward * -1.0;
     double pixel = ortho_pixel;
@@ -464,8 +468,11 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
       const double d = length(camera.eye - p);
       toward_eye = normalize(camera.eye - p), pixel = d * pixel_at_unit;
     }
-    const Vec4 c = transform(camera.world_to_clip, p + toward_eye * (2 * pixel));
-    ClipVertex v{c.x, c.y, c.z, c.w, {}};
+    const Vec4 c = transform(camera.world_to_clip, p);
+    const Vec4 nearer = transform(camera.world_to_clip, p + toward_eye * (2 * pixel));
+    double z = c.z;  // reversed depth: z = w at the near plane, larger z / w is nearer
+    if (c.w > 0 && nearer.w > 0) z = std::max(z, std::min(nearer.z / nearer.w, 1.0) * c.w);
+    ClipVertex v{c.x, c.y, z, c.w, {}};
     const Rgba8 colour = mesh.edges.color;
     v.attr[0] = colour.r, v.attr[1] = colour.g, v.attr[2] = colour.b, v.attr[3] = colour.a;
     return v;

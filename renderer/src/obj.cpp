@@ -98,8 +98,9 @@ Counts prescan(std::string_view text, const Limits& limits) {
       if (w.size() < 2) model_error(line_no, "a texture coordinate needs u (and v)");
       for (std::size_t k = 1; k < w.size() && k <= 3; ++k) {
         double d = 0;
-        if (!obj_number(w[k], d))
-          model_error(line_no, "texture coordinate \"" + std::string(w[k]) + "\" is not a finite number");
+        // The bound a scene's "uvs" have: beyond it a coordinate would not survive its float conversion.
+        if (!obj_number(w[k], d) || std::fabs(d) > 1e30)
+          model_error(line_no, "texture coordinate \"" + std::string(w[k]) + "\" is not a number within +-1e30");
       }
       ++n.vt;
     } else if (key == "vn") {
@@ -235,6 +236,7 @@ DiffuseMap read_diffuse_map(std::string_view rest, std::size_t line) {
           i = keep;
           break;
         }
+        if (std::fabs(d) > 1e30) mtl_error(line, "map_Kd option " + std::string(w) + " takes numbers within +-1e30");
         if (into) into[n] = static_cast<float>(d);
       }
       if (n < min) mtl_error(line, "map_Kd option " + std::string(w) + " needs a number");

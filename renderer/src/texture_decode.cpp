@@ -2,6 +2,7 @@
 // size read from the header and checked before a single texel is decoded (a 20-byte PNG can claim
 // 100,000 x 100,000 pixels: that is a limit error, never a 40 GB allocation).
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -16,13 +17,46 @@
 #define STBI_NO_HDR
 #define STBI_MAX_DIMENSIONS 16384  // = kMaxTextureSide: stb_image refuses larger sides by itself, too
 #define STB_IMAGE_STATIC           // private to this file: no clash with another copy of stb_image
-// Every allocation zeroed. stb_image 2.27 (Debian 12's) mallocs its JPEG decoder state and leaves the Huffman
-// and quantisation tables of a scan that no DHT or DQT defined uninitialised: decoding then indexed from
-// garbage (stb issue #1289, fixed upstream in 2.28) and the same file could decode differently twice. Zeroed
-// tables decode in bounds and always to the same pixels.
-#define STBI_MALLOC(size) std::calloc(1, size)
-#define STBI_REALLOC(p, size) std::realloc(p, size)
+// stb_image's allocations go through here. Each is zeroed: stb_image 2.27 (Debian 12's) mallocs its JPEG
+// decoder state and leaves the Huffman and quantisation tables of a scan that no DHT or DQT defined
+// uninitialised: decoding then indexed from garbage (stb issue #1289, fixed upstream in 2.28) and the same
+// file could decode differently twice. Zeroed tables decode in bounds and always to the same pixels.
+// Each is also capped by the decode in progress: stb_image inflates PNG data into a buffer it doubles for as
+// long as the data goes on, and accepts more data than the header's size needs, so 1.4 MB of deflated zeros
+// behind a 1x1 header made 2.5 GiB of allocations for a 1x1 texture. Its allocator hooks take no context:
+// the cap is a thread_local that StbDecode sets for the length of one stbi_load_from_memory call on this
+// thread, and which is unlimited otherwise.
+namespace {
+thread_local std::size_t t_stb_cap = SIZE_MAX;  ///< bytes, the largest allocation the decode may make
+thread_local bool t_stb_capped = false;        ///< whether the decode asked for more than that
+void* stb_malloc(std::size_t bytes) {
+  if (bytes > t_stb_cap) return t_stb_capped = true, nullptr;
+  return std::calloc(1, bytes);
+}
+void* stb_realloc(void* p, std::size_t bytes) {
+  if (bytes > t_stb_cap) return t_stb_capped = true, nullptr;
+  return std::realloc(p, bytes);
+}
+}  // namespace
+#define STBI_MALLOC(size) stb_malloc(size)
+#define STBI_REALLOC(p, size) stb_realloc(p, size)
 #define STBI_FREE(p) std::free(p)
+// stb_image 2.27's JPEG bit reader takes more bits than a scan holds when a marker cuts it short (a corrupt
+// file): its count of buffered bits goes negative, and the next refill shifts by 32 or more, which is
+// undefined behaviour (stb issue #1293, found here by texture_fuzzer; 2.28 reads zeros there instead). Every
+// read calls stbi__grow_buffer_unsafe when the count is low, so the calls, and only the calls, are sent to
+// stb_grow_checked below, which empties a negative count first: what follows the cut reads as zeros, as in
+// 2.28, and as stb_image 2.27 itself reads past the end of a file. The macro tells the definition
+// (`stbi__grow_buffer_unsafe(stbi__jpeg *j)`, whose argument starts with the type) from a call (`(j)`):
+// pasting gives the probe RASTERD_STB_PROBE_stbi__jpeg, a macro with an extra comma, only for the definition,
+// which keeps stb's body under the name stb_grow_unchecked.
+template <typename Jpeg>
+static void stb_grow_checked(Jpeg* j);
+#define RASTERD_STB_PROBE_stbi__jpeg ~, stb_grow_unchecked,
+#define RASTERD_STB_SECOND(a, b, ...) b
+#define RASTERD_STB_PICK(...) RASTERD_STB_SECOND(__VA_ARGS__)
+#define RASTERD_STB_PASTE(a, b) a##b
+#define stbi__grow_buffer_unsafe(x) RASTERD_STB_PICK(RASTERD_STB_PASTE(RASTERD_STB_PROBE_, x), stb_grow_checked, ~)(x)
 #define STB_IMAGE_IMPLEMENTATION
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
@@ -34,6 +68,13 @@
 #if defined(__GNUC__)
 #pragma GCC diagnostic pop
 #endif
+#undef stbi__grow_buffer_unsafe
+
+template <typename Jpeg>
+static void stb_grow_checked(Jpeg* j) {
+  if (j->code_bits < 0) j->code_bits = 0, j->code_buffer = 0;  // past a cut: nothing buffered is data
+  stb_grow_unchecked(j);
+}
 
 namespace raster {
 namespace {
@@ -213,6 +254,28 @@ std::string_view without_empty_idat(std::string_view b, std::string& copy) {
   return copy;
 }
 
+// The cap on each of stb_image's allocations while it decodes one file of `file_bytes` whose header says
+// w x h: no buffer a valid file needs is larger than twice the file (its compressed data gathered, doubling)
+// or twice its raw size, taken as 8 bytes a pixel over the image grown by 32 each way (PNG rows of 16-bit RGBA
+// and their filter bytes, doubling once for interlaced files; JPEG planes padded to whole 32 px MCUs), plus
+// room for small tables. So what one texture may allocate follows from the size its header claims, which is
+// checked against the scene's texel limit, and from the body limit, whatever its data says.
+class StbDecode {
+ public:
+  StbDecode(std::size_t file_bytes, std::int64_t w, std::int64_t h)
+      : cap_(2 * std::max(file_bytes, static_cast<std::size_t>((w + 32) * (h + 32) * 8)) + (std::size_t{1} << 20)) {
+    t_stb_cap = cap_, t_stb_capped = false;
+  }
+  ~StbDecode() { t_stb_cap = SIZE_MAX, t_stb_capped = false; }
+  StbDecode(const StbDecode&) = delete;
+  StbDecode& operator=(const StbDecode&) = delete;
+  bool capped() const { return t_stb_capped; }
+  std::size_t cap() const { return cap_; }
+
+ private:
+  std::size_t cap_;  ///< bytes
+};
+
 }  // namespace
 
 Texture decode_texture(std::string_view bytes, std::string_view name, std::int64_t texel_budget) {
@@ -241,10 +304,15 @@ Texture decode_texture(std::string_view bytes, std::string_view name, std::int64
   std::string copy;
   const std::string_view decodable = png ? without_empty_idat(bytes, copy) : bytes;
   int dw = 0, dh = 0, channels = 0;
+  StbDecode bound(decodable.size(), w, h);
   std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
       stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(decodable.data()), static_cast<int>(decodable.size()),
                             &dw, &dh, &channels, 4),
-                                                   stbi_image_free);
+      stbi_image_free);
+  if (!pixels && bound.capped())
+    texture_error(ErrorKind::model, name,
+                  "corrupt: its compressed data inflates to more than a " + size +
+                      " image holds (the decoder stopped at " + std::to_string(bound.cap()) + " bytes)");
   if (!pixels) texture_error(ErrorKind::model, name, std::string("cannot be decoded: ") + stbi_failure_reason());
   if (dw != w || dh != h)  // the header said one size and the decoder made another: not trusted
     texture_error(ErrorKind::model, name, "the decoded size differs from the header's");
