@@ -85,8 +85,10 @@ std::string upload_key(std::string_view part_name, std::string_view file_name) {
 void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts) {
   for (const PartName& p : parts) {
     if (p.part == p.key || uploads.contains(p.part)) continue;
-    const bool shared = std::count_if(parts.begin(), parts.end(), [&](const PartName& q) { return q.part == p.part; }) > 1;
-    if (auto bytes = uploads.find(p.key); !shared && bytes != uploads.end()) uploads.emplace(p.part, bytes->second);
+    const bool shared =
+        std::count_if(parts.begin(), parts.end(), [&](const PartName& q) { return q.part == p.part; }) > 1;
+    if (auto bytes = uploads.find(p.key); !shared && bytes != uploads.end())
+      uploads.emplace(p.part, bytes->second);
   }
 }
 

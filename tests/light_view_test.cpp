@@ -300,16 +300,18 @@ TEST(Edges, VisibleCreasesAreDrawnWholeHiddenOnesAndFaceDiagonalsAreNot) {
 // had no outline. The pull stops at the near plane.
 TEST(Edges, TheNearestFaceKeepsItsEdgesOnASmallImage) {
   for (const char* projection : {"perspective", "orthographic"}) {
-    const json doc = {{"width", 64},
-                      {"height", 64},
-                      {"background", "#ffffff"},  // black is an edge, not the background beside the outline
-                      {"camera", {{"projection", projection}}},
-                      {"primitives",
-                       {{{"type", "obj"}, {"data", kCubeObj}, {"mtl", kCubeMtl}, {"shading", "unlit"}, {"edges", true}}}}};
+    const json doc = {
+        {"width", 64},
+        {"height", 64},
+        {"background", "#ffffff"},  // black is an edge, not the background beside the outline
+        {"camera", {{"projection", projection}}},
+        {"primitives",
+         {{{"type", "obj"}, {"data", kCubeObj}, {"mtl", kCubeMtl}, {"shading", "unlit"}, {"edges", true}}}}};
     const raster::Scene s = raster::parse_scene(doc.dump());
     const raster::RenderPlan plan = raster::plan(s);
     const raster::Image image = raster::render(s, plan);
-    const raster::Vec3 front[4] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};  // the face toward the eye
+    const raster::Vec3 front[4] = {
+        {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};  // the face toward the eye
     for (int k = 0; k < 4; ++k) {
       const raster::Vec3 a = front[k], b = front[(k + 1) % 4];
       for (double t = 0.05; t <= 0.951; t += 0.05) {

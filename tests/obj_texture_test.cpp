@@ -264,11 +264,13 @@ TEST(ObjTexture, BadTextureCoordinatesAreModelErrorsWithTheirLine) {
     }
   }
   try {
-    raster::parse_obj(test::read_file(kDir + "quad.obj"), "newmtl skin\nmap_Kd -s 1e39 1 checker.png\n", {}, images());
+    raster::parse_obj(test::read_file(kDir + "quad.obj"), "newmtl skin\nmap_Kd -s 1e39 1 checker.png\n", {},
+                      images());
     FAIL() << "expected an error";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.kind(), ErrorKind::model);
-    EXPECT_NE(std::string(e.what()).find("line 2: map_Kd option -s takes numbers within +-1e30"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("line 2: map_Kd option -s takes numbers within +-1e30"),
+              std::string::npos)
         << e.what();
   }
 }

@@ -235,7 +235,8 @@ TEST(Texture, MinifiedCheckerIsHalfLightNotAliased) {
 // 3:1 (sRGB 137 and 225, a quarter and three quarters of the light), level 0 would be sampled on its texel
 // centres (0 and 255), level 2 is grey throughout (188).
 TEST(Texture, TheRendererPicksTheMipLevelOfThePixelFootprint) {
-  const Texture stripes = make_texture(64, 64, [](int x, int) { return (x / 2) % 2 ? test::kWhite : test::kBlack; });
+  const Texture stripes =
+      make_texture(64, 64, [](int x, int) { return (x / 2) % 2 ? test::kWhite : test::kBlack; });
   Mesh m = textured_quad(stripes, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});
   const float shift = -1.0f / 128;
   m.uvs = {{shift, 0}, {1 + shift, 0}, {1 + shift, 1}, {shift, 1}};
@@ -375,7 +376,8 @@ TEST(TextureDecode, HugeHeadersAreLimitErrorsBeforeAnyAllocation) {
   EXPECT_NE(std::string(budget.what()).find("4000x4000"), std::string::npos) << budget.what();
 }
 
-// A PNG of one 1x1 RGBA image whose IDAT holds `raw` deflated (zlib), CRCs left 0 (stb_image does not read them).
+// A PNG of one 1x1 RGBA image whose IDAT holds `raw` deflated (zlib), CRCs left 0 (stb_image does not read
+// them).
 std::string png_with_data(const std::string& raw) {
   uLongf size = compressBound(raw.size());
   std::string z(size, '\0');
@@ -398,14 +400,16 @@ std::string png_with_data(const std::string& raw) {
 // 1x1 texture. Its allocations are capped by what the header claims, so such data is an error.
 TEST(TextureDecode, DataThatInflatesBeyondTheHeaderIsRefused) {
   // What a 1x1 RGBA row is: a filter byte and four bytes; it decodes.
-  const Texture one = raster::decode_texture(png_with_data(std::string("\0\x10\x20\x30\x40", 5)), "one.png", 1);
+  const Texture one =
+      raster::decode_texture(png_with_data(std::string("\0\x10\x20\x30\x40", 5)), "one.png", 1);
   EXPECT_EQ(one.rgba, (std::vector<std::uint8_t>{0x10, 0x20, 0x30, 0x40}));
   // 16 MiB of zeros (16 KB deflated) behind the same header.
   const std::string bomb = png_with_data(std::string(16 << 20, '\0'));
   ASSERT_LT(bomb.size(), 64u << 10);
   const SceneError e = decode_error(bomb);
   EXPECT_EQ(e.kind(), ErrorKind::model);
-  EXPECT_NE(std::string(e.what()).find("inflates to more than a 1x1 image holds"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("inflates to more than a 1x1 image holds"), std::string::npos)
+      << e.what();
   // The cap is per decode: a valid texture decoded after it is not limited by it.
   const Texture t = checker(300, 7, {1, 2, 3, 255}, {250, 251, 252, 128});
   EXPECT_EQ(raster::decode_texture(png_of(t), "big.png", 1 << 20).rgba, t.rgba);
@@ -510,7 +514,8 @@ TEST(TextureDecode, AJpegScanWithoutItsHuffmanTableIsRefused) {
 // then counts fewer than no bits and its next refill shifts by 32 (stb #1293), undefined behaviour that make
 // test-asan aborts on. Past the cut the reader now takes zeros, as stb_image 2.28 does, the same every time.
 TEST(TextureDecode, AJpegScanCutShortByAMarkerReadsZerosPastTheCut) {
-  const std::string finding = test::read_file(RASTERD_TESTS_DIR "/data/textures/finding-scan-cut-by-marker.jpg");
+  const std::string finding =
+      test::read_file(RASTERD_TESTS_DIR "/data/textures/finding-scan-cut-by-marker.jpg");
   // Its marker is none stb_image knows: once the scan is read (past the cut, zeros), the file is refused.
   EXPECT_EQ(decode_error(finding).kind(), ErrorKind::model);
   // A valid file cut halfway through its scan data and ended there (EOI): the cut half decodes from zeros,

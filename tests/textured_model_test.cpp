@@ -100,18 +100,18 @@ TEST(TexturedModel, AnMtlSentUnderItsFileNameIsTheOneMtllibNames) {
 TEST(TexturedModel, ScenesStillNamePartsByTheirPartName) {
   test::TestServer server;
   const Box box;
-  auto plain = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                                {"model", box.obj, "box.obj", "model/obj"},
-                                                {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                                {"texture", box.png, "box_diffuse.png", "image/png"}});
+  auto plain = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "box_diffuse.png", "image/png"}});
   const std::string scene =
       R"({"width": 64, "height": 64, "camera": {"eye": [3, 2.5, 4]},
           "primitives": [{"type": "obj", "source": "second", "mtl_source": "mymtl"}]})";
-  auto named = server.client().Post("/render", httplib::MultipartFormDataItems{
-                                                   {"scene", scene, "", "application/json"},
-                                                   {"second", box.obj, "box.obj", "model/obj"},
-                                                   {"mymtl", box.mtl, "box.mtl", "model/mtl"},
-                                                   {"tex", box.png, "box_diffuse.png", "image/png"}});
+  auto named = server.client().Post(
+      "/render", httplib::MultipartFormDataItems{{"scene", scene, "", "application/json"},
+                                                 {"second", box.obj, "box.obj", "model/obj"},
+                                                 {"mymtl", box.mtl, "box.mtl", "model/mtl"},
+                                                 {"tex", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(plain && named);
   ASSERT_EQ(named->status, 200) << named->body;
   EXPECT_EQ(named->body, plain->body);
@@ -121,20 +121,21 @@ TEST(TexturedModel, ScenesStillNamePartsByTheirPartName) {
       R"({"width": 8, "height": 8, "primitives": [{"type": "mesh", "shading": "unlit",
           "positions": [[-1,-1,0],[1,-1,0],[1,1,0],[-1,1,0]], "indices": [[0,1,2],[0,2,3]],
           "uvs": [[0,0],[1,0],[1,1],[0,1]], "texture": {"source": "tex"}}]})";
-  auto mesh = server.client().Post("/render", httplib::MultipartFormDataItems{
-                                                  {"scene", quad, "", "application/json"},
-                                                  {"tex", box.png, "maps/anything.png", "image/png"}});
+  auto mesh = server.client().Post(
+      "/render", httplib::MultipartFormDataItems{{"scene", quad, "", "application/json"},
+                                                 {"tex", box.png, "maps/anything.png", "image/png"}});
   ASSERT_TRUE(mesh);
   EXPECT_EQ(mesh->status, 200) << mesh->body;
 
   // A part name two parts share names neither: which one was meant is not knowable.
-  auto shared = server.client().Post("/render", httplib::MultipartFormDataItems{
-                                                    {"scene", quad, "", "application/json"},
-                                                    {"tex", box.png, "a.png", "image/png"},
-                                                    {"tex", box.png, "b.png", "image/png"}});
+  auto shared = server.client().Post("/render",
+                                     httplib::MultipartFormDataItems{{"scene", quad, "", "application/json"},
+                                                                     {"tex", box.png, "a.png", "image/png"},
+                                                                     {"tex", box.png, "b.png", "image/png"}});
   ASSERT_TRUE(shared);
   EXPECT_EQ(shared->status, 400) << shared->body;
-  EXPECT_EQ(nlohmann::json::parse(shared->body).at("pointer"), "/primitives/0/texture/source") << shared->body;
+  EXPECT_EQ(nlohmann::json::parse(shared->body).at("pointer"), "/primitives/0/texture/source")
+      << shared->body;
 }
 
 TEST(TexturedModel, AMissingTextureIsA422NamingTheFileAndThePartsSent) {
@@ -240,7 +241,8 @@ TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
     std::fclose(f);
   }
   const std::string named = std::string(RASTERD_BINARY) + " render " + scene_file + " --part second=" + kDir +
-                            "box.obj --part mymtl=" + kDir + "box.mtl --part tex=" + kDir + "box_diffuse.png -o " + out;
+                            "box.obj --part mymtl=" + kDir + "box.mtl --part tex=" + kDir +
+                            "box_diffuse.png -o " + out;
   ASSERT_EQ(std::system(named.c_str()), 0) << named;
   EXPECT_EQ(test::read_file(out), http->body);
   std::remove(out.c_str());

@@ -457,9 +457,9 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
                                view.plan.height;
   const double ortho_pixel = camera.height / view.plan.height;
   // The endpoint in clip space, with the depth it would have two pixels nearer the eye: moving it along its
-  // ray to the eye leaves it where it is on screen and changes only z. The depth stops at the near plane: on a
-  // small image two pixels are more than the 1% margin a fitted near plane leaves in front of the content, and
-  // edges on its nearest face would be clipped away.
+  // ray to the eye leaves it where it is on screen and changes only z. The depth stops at the near plane: on
+  // a small image two pixels are more than the 1% margin a fitted near plane leaves in front of the content,
+  // and edges on its nearest face would be clipped away.
   auto pulled = [&](std::uint32_t i) {
     const Vec3& p = world[i];
     Vec3 toward_eye = forward * -1.0;

@@ -100,7 +100,8 @@ Counts prescan(std::string_view text, const Limits& limits) {
         double d = 0;
         // The bound a scene's "uvs" have: beyond it a coordinate would not survive its float conversion.
         if (!obj_number(w[k], d) || std::fabs(d) > 1e30)
-          model_error(line_no, "texture coordinate \"" + std::string(w[k]) + "\" is not a number within +-1e30");
+          model_error(line_no,
+                      "texture coordinate \"" + std::string(w[k]) + "\" is not a number within +-1e30");
       }
       ++n.vt;
     } else if (key == "vn") {
@@ -236,7 +237,8 @@ DiffuseMap read_diffuse_map(std::string_view rest, std::size_t line) {
           i = keep;
           break;
         }
-        if (std::fabs(d) > 1e30) mtl_error(line, "map_Kd option " + std::string(w) + " takes numbers within +-1e30");
+        if (std::fabs(d) > 1e30)
+          mtl_error(line, "map_Kd option " + std::string(w) + " takes numbers within +-1e30");
         if (into) into[n] = static_cast<float>(d);
       }
       if (n < min) mtl_error(line, "map_Kd option " + std::string(w) + " needs a number");

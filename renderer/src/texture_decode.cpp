@@ -28,7 +28,7 @@
 // thread, and which is unlimited otherwise.
 namespace {
 thread_local std::size_t t_stb_cap = SIZE_MAX;  ///< bytes, the largest allocation the decode may make
-thread_local bool t_stb_capped = false;        ///< whether the decode asked for more than that
+thread_local bool t_stb_capped = false;         ///< whether the decode asked for more than that
 void* stb_malloc(std::size_t bytes) {
   if (bytes > t_stb_cap) return t_stb_capped = true, nullptr;
   return std::calloc(1, bytes);
@@ -56,7 +56,8 @@ static void stb_grow_checked(Jpeg* j);
 #define RASTERD_STB_SECOND(a, b, ...) b
 #define RASTERD_STB_PICK(...) RASTERD_STB_SECOND(__VA_ARGS__)
 #define RASTERD_STB_PASTE(a, b) a##b
-#define stbi__grow_buffer_unsafe(x) RASTERD_STB_PICK(RASTERD_STB_PASTE(RASTERD_STB_PROBE_, x), stb_grow_checked, ~)(x)
+#define stbi__grow_buffer_unsafe(x) \
+  RASTERD_STB_PICK(RASTERD_STB_PASTE(RASTERD_STB_PROBE_, x), stb_grow_checked, ~)(x)
 #define STB_IMAGE_IMPLEMENTATION
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
@@ -256,14 +257,15 @@ std::string_view without_empty_idat(std::string_view b, std::string& copy) {
 
 // The cap on each of stb_image's allocations while it decodes one file of `file_bytes` whose header says
 // w x h: no buffer a valid file needs is larger than twice the file (its compressed data gathered, doubling)
-// or twice its raw size, taken as 8 bytes a pixel over the image grown by 32 each way (PNG rows of 16-bit RGBA
-// and their filter bytes, doubling once for interlaced files; JPEG planes padded to whole 32 px MCUs), plus
-// room for small tables. So what one texture may allocate follows from the size its header claims, which is
-// checked against the scene's texel limit, and from the body limit, whatever its data says.
+// or twice its raw size, taken as 8 bytes a pixel over the image grown by 32 each way (PNG rows of 16-bit
+// RGBA and their filter bytes, doubling once for interlaced files; JPEG planes padded to whole 32 px MCUs),
+// plus room for small tables. So what one texture may allocate follows from the size its header claims, which
+// is checked against the scene's texel limit, and from the body limit, whatever its data says.
 class StbDecode {
  public:
   StbDecode(std::size_t file_bytes, std::int64_t w, std::int64_t h)
-      : cap_(2 * std::max(file_bytes, static_cast<std::size_t>((w + 32) * (h + 32) * 8)) + (std::size_t{1} << 20)) {
+      : cap_(2 * std::max(file_bytes, static_cast<std::size_t>((w + 32) * (h + 32) * 8)) +
+             (std::size_t{1} << 20)) {
     t_stb_cap = cap_, t_stb_capped = false;
   }
   ~StbDecode() { t_stb_cap = SIZE_MAX, t_stb_capped = false; }
@@ -306,8 +308,8 @@ Texture decode_texture(std::string_view bytes, std::string_view name, std::int64
   int dw = 0, dh = 0, channels = 0;
   StbDecode bound(decodable.size(), w, h);
   std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-      stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(decodable.data()), static_cast<int>(decodable.size()),
-                            &dw, &dh, &channels, 4),
+      stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(decodable.data()),
+                            static_cast<int>(decodable.size()), &dw, &dh, &channels, 4),
       stbi_image_free);
   if (!pixels && bound.capped())
     texture_error(ErrorKind::model, name,
