@@ -396,8 +396,8 @@ std::string png_with_data(const std::string& raw) {
 }
 
 // stb_image 2.27 inflates PNG data into a buffer it doubles for as long as the data goes on, then keeps
-// the rows the header asked for: 1.4 MB of deflated zeros behind a 1x1 header allocated 2.5 GiB and gave a
-// 1x1 texture. Its allocations are capped by what the header claims, so such data is an error.
+// the rows the header asked for: a 1.4 MB PNG of deflated zeros behind a 1x1 header took 1.4 GB of memory
+// and gave a 1x1 texture. Its allocations are capped by what the header claims, so such data is an error.
 TEST(TextureDecode, DataThatInflatesBeyondTheHeaderIsRefused) {
   // What a 1x1 RGBA row is: a filter byte and four bytes; it decodes.
   const Texture one =
@@ -519,7 +519,7 @@ TEST(TextureDecode, AJpegScanCutShortByAMarkerReadsZerosPastTheCut) {
   // Its marker is none stb_image knows: once the scan is read (past the cut, zeros), the file is refused.
   EXPECT_EQ(decode_error(finding).kind(), ErrorKind::model);
   // A valid file cut halfway through its scan data and ended there (EOI): the cut half decodes from zeros,
-  // the same every time, and the first half is the image's.
+  // the same every time, and the first texels are the image's.
   const std::string jpeg = jpeg_of(two_halves());
   const std::size_t data = marker_at(jpeg, 0xda) + 2 + 12;  // after SOS and its 12-byte header (3 components)
   const std::string cut = jpeg.substr(0, data + (jpeg.size() - 2 - data) / 2) + "\xff\xd9";
