@@ -6,11 +6,11 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <string>
 #include <type_traits>
 
-#ifndef RASTERD_VERSION
-#error "RASTERD_VERSION (the CMake project version) must be defined: it is part of every ETag"
-#endif
+#include "raster/version.h"
+
 
 namespace rasterd {
 namespace {
@@ -84,7 +84,8 @@ class Digest {
 
 std::string scene_etag(const raster::Scene& scene) {
   Digest d;
-  const std::string_view version = "rasterd " RASTERD_VERSION;
+  // The render version, not the release: a tag names bytes, and only a change of render changes them.
+  const std::string version = "rasterd render " + std::to_string(raster::kRenderVersion);
   d.bytes(version.data(), version.size() + 1);  // with its NUL, so it cannot run into the scene's bytes
   d.value(scene.width), d.value(scene.height), d.value(scene.samples), d.value(scene.area);
   d.bytes(&scene.background, sizeof scene.background);

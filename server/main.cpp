@@ -32,8 +32,10 @@ constexpr const char* kUsage = R"(usage:
                                                         a bare OBJ model with the default scene; the MTL
                                                         and textures it names are read from its folder
   rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080)
+  rasterd --version                                     the release and the render version
 
-render:  writes the PNG to OUT.png (default: stdout); --explain prints the render plan as JSON instead.
+render:  writes the PNG to OUT.png (default: stdout); --explain writes the render plan as JSON instead.
+         A scene file sets everything itself: the model options are for a bare model only.
 serve:   POST /render (scene JSON, OBJ, or multipart) -> image/png; GET /healthz; GET /metrics.
          `rasterd serve --help` lists the limits and their flags.
 )";
@@ -108,8 +110,18 @@ int run_render(const std::vector<std::string>& args) {
         std::cerr << "rasterd: cannot read " << spec.substr(eq + 1) << ": " << std::strerror(errno) << "\n";
         return 1;
       }
-    } else if (a.rfind("--", 0) == 0 && a.size() > 2 && i + 1 < args.size()) {
-      params[a.substr(2)] = args[++i];  // --width 800 -> width=800 (validated with the scene)
+    } else if (a.rfind("--", 0) == 0 && a.size() > 2) {
+      // --width 800 -> width=800, --width=800 too (validated with the scene, as query parameters are)
+      if (const std::size_t eq = a.find('='); eq != std::string::npos) {
+        params[a.substr(2, eq - 2)] = a.substr(eq + 1);
+      } else if (i + 1 < args.size()) {
+        params[a.substr(2)] = args[++i];
+      } else {
+        return usage_error(a + " needs a value" +
+                           (a == "--background" ? " (a shell reads an unquoted '#' as a comment: '#ffffff')" : ""));
+      }
+    } else if (a == "-o") {
+      return usage_error("-o needs a file name");
     } else if (input.empty()) {
       input = a;
     } else {
@@ -128,19 +140,21 @@ int run_render(const std::vector<std::string>& args) {
     raster::Scene scene =
         rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{});
     const raster::RenderPlan plan = raster::plan(scene);
+    std::string bytes;
     if (explain) {
-      std::cout << raster::explain_json(plan) << "\n";
-      return 0;
+      bytes = raster::explain_json(plan) + "\n";
+    } else {
+      raster::Image image = raster::render(scene, plan);
+      scene = {};  // as the server does: the scene's memory goes before the PNG's comes
+      const std::vector<std::uint8_t> png = raster::encode_png(std::move(image), plan.png);
+      bytes.assign(png.begin(), png.end());
     }
-    raster::Image image = raster::render(scene, plan);
-    scene = {};  // as the server does: the scene's memory goes before the PNG's comes
-    const std::vector<std::uint8_t> png = raster::encode_png(std::move(image), plan.png);
     if (output == "-") {
-      std::cout.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-      return std::cout ? 0 : 1;
+      std::cout.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      return std::cout.flush() ? 0 : 1;
     }
     std::ofstream out(output, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     if (!out.flush()) {
       std::cerr << "rasterd: cannot write " << output << "\n";
       return 1;
@@ -237,6 +251,10 @@ int run_serve(const std::vector<std::string>& args) {
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty() && (args[0] == "--version" || args[0] == "version")) {
+    std::cout << "rasterd " RASTERD_VERSION " (render " << raster::kRenderVersion << ")\n";
+    return 0;
+  }
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::cout << kUsage;
     return args.empty() ? 2 : 0;

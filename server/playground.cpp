@@ -6,6 +6,7 @@
 
 #include "example_scenes.h"   // generated: kExampleScenes
 #include "playground_page.h"  // generated: kPlaygroundPage
+#include "problem.h"
 
 namespace rasterd {
 
@@ -36,7 +37,11 @@ void install_playground(httplib::Server& server) {
         res.set_content(reinterpret_cast<const char*>(file.data), file.size, "application/json");
         return;
       }
-    res.status = 404;  // the service's error handler writes the problem body
+    std::string names;
+    for (const auto& file : embedded::kExampleScenes) names += (names.empty() ? "" : ", ") + std::string(file.name);
+    write_problem(res, problem(404, "not-found", "No such example",
+                               "there is no example \"" + req.matches[1].str() + "\"; the examples are " + names +
+                                   " (GET /examples lists them)"));
   });
 }
 

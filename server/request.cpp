@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -11,16 +12,48 @@
 namespace rasterd {
 namespace {
 
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
 [[noreturn]] void bad_param(const std::string& name, const std::string& message) {
   throw raster::SceneError(raster::ErrorKind::invalid, "query parameter \"" + name + "\": " + message);
 }
 
-// `curl -d @model.obj` drops newlines: what arrives is "v 0 0 0v 1 0 0f 1 2 3..." on one line.
+// `curl -d @model.obj` drops newlines: what arrives is "v 0 0 0v 1 0 0f 1 2 3..." on one line. An OBJ
+// statement then starts right after the previous one's last number, which no single OBJ line does; so one
+// such junction marks the body, however short (a one-face model is 30 bytes).
 bool looks_like_flattened_obj(std::string_view body) {
-  if (body.size() < 64 || body.find('\n') != std::string_view::npos) return false;
-  const bool vertices =
-      body.find("v ") != std::string_view::npos || body.find("v\t") != std::string_view::npos;
-  return vertices && body.find("f ") != std::string_view::npos;
+  if (body.find('\n') != std::string_view::npos) return false;
+  static constexpr std::string_view kStatements[] = {"v ", "vt ", "vn ", "f ", "l ", "o ", "g ", "s ", "usemtl "};
+  for (std::size_t i = 1; i < body.size(); ++i) {
+    const char before = body[i - 1];
+    if (!((before >= '0' && before <= '9') || before == '.')) continue;
+    const std::string_view rest = body.substr(i);
+    for (std::string_view statement : kStatements)
+      if (rest.starts_with(statement)) return true;
+  }
+  return false;
+}
+
+// The query parameters of a bare model's default scene ("explain" is the route's).
+constexpr std::string_view kModelParams[] = {"width", "height", "background", "view", "projection",
+                                             "fov",   "eye",    "target",     "up"};
+
+std::string known_params() {
+  std::string list;
+  for (std::string_view name : kModelParams) list.append(name).append(", ");
+  return list + "explain";
+}
+
+// "ffffff" for "#ffffff": a URL ends at '#' (curl and browsers keep what follows for themselves), so a
+// colour in a query parameter is sent as %23ffffff or, more easily, without its '#'.
+std::string colour_param(const std::string& value) {
+  if (value.empty())
+    bad_param("background",
+              "is empty; a URL ends at '#', so a colour arrives empty unless its '#' is written %23 "
+              "(?background=%23ffffff) or left out (?background=ffffff)");
+  const bool bare_hex = (value.size() == 3 || value.size() == 4 || value.size() == 6 || value.size() == 8) &&
+                        std::all_of(value.begin(), value.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+  return bare_hex ? "#" + value : value;
 }
 
 // The default scene of a bare model, with the parameters turned into JSON and parsed like any scene, so
@@ -51,7 +84,7 @@ std::string default_scene_json(const Params& params) {
     if (name == "width" || name == "height")
       scene[name] = number(name, value);
     else if (name == "background")
-      scene["background"] = value;
+      scene["background"] = colour_param(value);
     else if (name == "projection" || name == "view")
       camera[name] = value;
     else if (name == "fov")
@@ -61,7 +94,7 @@ std::string default_scene_json(const Params& params) {
     else if (name == "explain")
       continue;  // the route's, not the scene's
     else
-      bad_param(name, "unknown; known: width, height, background, view, projection, fov, eye, target, up");
+      bad_param(name, "unknown; known: " + known_params());
   }
   if (!camera.empty()) scene["camera"] = camera;
   scene["primitives"] = nlohmann::json::array({{{"type", "obj"}, {"source", "model"}}});
@@ -70,9 +103,28 @@ std::string default_scene_json(const Params& params) {
 
 }  // namespace
 
+bool is_json_media_type(std::string_view content_type) {
+  std::string type(content_type.substr(0, content_type.find(';')));
+  while (!type.empty() && (type.back() == ' ' || type.back() == '\t')) type.pop_back();
+  std::transform(type.begin(), type.end(), type.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return type == "application/json" || type == "text/json" || type.ends_with("+json");
+}
+
 bool is_scene_text(std::string_view body) {
+  if (body.starts_with(kUtf8Bom)) body.remove_prefix(kUtf8Bom.size());
   const std::size_t i = body.find_first_not_of(" \t\r\n");
-  return i != std::string_view::npos && body[i] == '{';
+  return i != std::string_view::npos && (body[i] == '{' || body[i] == '[');
+}
+
+bool explain_requested(const Params& params) {
+  const auto it = params.find("explain");
+  if (it == params.end()) return false;
+  std::string v = it->second;
+  std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (v.empty() || v == "1" || v == "true" || v == "yes" || v == "on") return true;  // a bare ?explain too
+  if (v == "0" || v == "false" || v == "no" || v == "off") return false;
+  bad_param("explain", "expected 1, true, yes or on (or 0, false, no, off), got \"" + it->second + "\"");
 }
 
 std::string upload_key(std::string_view part_name, std::string_view file_name) {
@@ -92,14 +144,58 @@ void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts
   }
 }
 
+std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts) {
+  if (!body.empty() || uploads.contains("model") || parts.empty()) return {};
+  auto lower_ends_with = [](std::string name, std::string_view suffix) {
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return name.ends_with(suffix);
+  };
+  // A lone part is the body whatever its name; among several, the one whose file is a scene or a model.
+  std::vector<const PartName*> candidates;
+  for (const PartName& p : parts)
+    if (parts.size() == 1 || lower_ends_with(p.key, ".obj") || lower_ends_with(p.key, ".json"))
+      candidates.push_back(&p);
+  if (candidates.size() == 1) {
+    const PartName& p = *candidates.front();
+    std::string bytes = std::move(uploads[p.key]);
+    uploads.erase(p.key);
+    if (p.part != p.key) uploads.erase(p.part);  // the copy add_part_names made under the part's name
+    if (is_scene_text(bytes))
+      body = std::move(bytes);
+    else
+      uploads["model"] = std::move(bytes);
+    return {};
+  }
+  std::string names;
+  for (const PartName& p : parts) names += (names.empty() ? "\"" : ", \"") + p.part + "\"" + (p.key != p.part ? " (" + p.key + ")" : "");
+  return "the upload has the parts " + names + " but none is named \"scene\" or \"model\"" +
+         (candidates.empty() ? "" : " and more than one could be") +
+         "; send the model as -F model=@bunny.obj or the scene as -F scene=@scene.json";
+}
+
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
-                                 const raster::Limits& limits) {
+                                 const raster::Limits& limits, bool declared_json) {
   // Parameters become JSON text below and are quoted in errors: their bytes must be UTF-8 first.
   for (const auto& [name, value] : params) {
     raster::require_utf8(name, "the name of a query parameter");
     raster::require_utf8(value, "query parameter \"" + name + "\"");
   }
-  if (is_scene_text(body)) return raster::parse_scene(body, limits, uploads);
+  explain_requested(params);  // a bad ?explain is an error before anything is read
+  // A byte order mark (Windows editors write one) is whitespace to the readers: blanked rather than cut,
+  // so every byte offset in an error still counts from the start of what was sent.
+  if (body.starts_with(kUtf8Bom)) body.replace(0, kUtf8Bom.size(), kUtf8Bom.size(), ' ');
+  if (declared_json || is_scene_text(body)) {
+    // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
+    for (const auto& [name, value] : params) {
+      if (name == "explain") continue;
+      const bool model_param = std::find(std::begin(kModelParams), std::end(kModelParams), name) != std::end(kModelParams);
+      bad_param(name, model_param ? "shapes the default scene of a bare model; this body is a scene, which sets "
+                                    "\"" + name + "\" (or its camera) in its JSON"
+                                  : "unknown; a scene takes only: explain");
+    }
+    return raster::parse_scene(body, limits, uploads);
+  }
   if (looks_like_flattened_obj(body))
     throw raster::SceneError(
         raster::ErrorKind::syntax,

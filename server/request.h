@@ -33,14 +33,31 @@ struct PartName {
 /// not knowable). Such a part's bytes are held twice, within the body limit.
 void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts);
 
-/// True when `body` is a scene (its first non-blank byte is '{'); else it is an OBJ model.
+/// True when a Content-Type names JSON (application/json, text/json, any "+json" type): the body is then a
+/// scene whatever its first byte.
+bool is_json_media_type(std::string_view content_type);
+
+/// True when `body` is a scene by its bytes: the first byte after an optional UTF-8 byte order mark and
+/// whitespace is '{' or '['; anything else is a model.
 bool is_scene_text(std::string_view body);
 
-/// `body` starting with '{' (after whitespace) is a scene; anything else is an OBJ model drawn with the
-/// default scene (512x512, camera framing the model) adjusted by `params`. A body that looks like an OBJ
-/// whose line breaks were stripped (curl -d) is refused with a hint. Throws raster::SceneError.
-/// Takes the body and uploads by value: callers move them in, so a large model is never copied.
+/// The value of the "explain" parameter: absent or 0/false/no/off is false; 1/true/yes/on, or a bare
+/// ?explain, is true. Anything else throws raster::SceneError naming the parameter.
+bool explain_requested(const Params& params);
+
+/// A multipart upload with neither a "scene" nor a "model" part (`curl -F file=@bunny.obj`): a lone part,
+/// or else the one part whose file name ends in .obj or .json, becomes the body (a scene by its bytes) or
+/// the model. Returns an error message naming the parts when no single part qualifies; "" otherwise (also
+/// when there was nothing to choose).
+std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts);
+
+/// A scene when `declared_json` (the request's Content-Type says JSON) or is_scene_text(body); otherwise an
+/// OBJ model drawn with the default scene (512x512, camera framing the model) adjusted by `params`. A scene
+/// takes no parameter but "explain": any other is refused, as an unknown one is for a model. A UTF-8 byte
+/// order mark is read as whitespace. A body that looks like an OBJ whose line breaks were stripped (curl -d)
+/// is refused with a hint. Throws raster::SceneError. Takes the body and uploads by value: callers move
+/// them in, so a large model is never copied.
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
-                                 const raster::Limits& limits);
+                                 const raster::Limits& limits, bool declared_json = false);
 
 }  // namespace rasterd

@@ -51,9 +51,21 @@ std::string decode_base64url(std::string_view text) {
   return out;
 }
 
-std::string inflate_raw(const std::string& compressed, std::size_t max_bytes) {
+// What wraps the deflate stream, as zlib's windowBits says it: -15 none (CompressionStream('deflate-raw')),
+// 15 a zlib header and Adler-32 trailer (RFC 1950: pako.deflate, Python's zlib.compress, Kroki's own
+// examples), 31 gzip (RFC 1952).
+int window_bits_of(const std::string& bytes) {
+  if (bytes.size() >= 2) {
+    const auto b0 = static_cast<unsigned char>(bytes[0]), b1 = static_cast<unsigned char>(bytes[1]);
+    if (b0 == 0x1F && b1 == 0x8B) return 31;
+    if ((b0 & 0x0F) == 8 && (b0 >> 4) <= 7 && (b0 << 8 | b1) % 31 == 0) return 15;
+  }
+  return -15;
+}
+
+std::string inflate(const std::string& compressed, std::size_t max_bytes, int window_bits) {
   z_stream zs{};
-  if (inflateInit2(&zs, -15) != Z_OK) throw std::bad_alloc();  // -15: raw deflate, 32 KiB window
+  if (inflateInit2(&zs, window_bits) != Z_OK) throw std::bad_alloc();
   struct End {
     z_stream& zs;
     ~End() { inflateEnd(&zs); }
@@ -75,8 +87,9 @@ std::string inflate_raw(const std::string& compressed, std::size_t max_bytes) {
     if (rc == Z_STREAM_END) break;
     if (rc == Z_MEM_ERROR) throw std::bad_alloc();
     if (rc == Z_DATA_ERROR || rc == Z_NEED_DICT)
-      bad(std::string(
-              "the decoded bytes do not start with '{' (plain JSON) and are not a raw deflate stream (") +
+      bad(std::string("the decoded bytes do not start with '{' (plain JSON) and are not a deflate stream, raw "
+                      "or zlib-wrapped (read as ") +
+          (window_bits == 15 ? "zlib" : window_bits == 31 ? "gzip" : "raw deflate") + ": " +
           (zs.msg ? zs.msg : "invalid data") + ")");
     if (rc == Z_BUF_ERROR || (zs.avail_in == 0 && produced == 0))
       bad("the deflate stream ends early (truncated URL?)");
@@ -95,7 +108,19 @@ std::string decode_scene_param(std::string_view param, std::size_t max_bytes) {
           413, "query parameter \"scene\" is more than the limit of " + std::to_string(max_bytes) + " bytes");
     return decoded;
   }
-  return inflate_raw(decoded, max_bytes);
+  const int window_bits = window_bits_of(decoded);
+  if (window_bits == -15) return inflate(decoded, max_bytes, -15);
+  try {
+    return inflate(decoded, max_bytes, window_bits);
+  } catch (const SceneUrlError& wrapped) {
+    // Two bytes that happen to look like a zlib header can begin a raw stream too: that reading may work.
+    if (wrapped.status() == 413) throw;
+    try {
+      return inflate(decoded, max_bytes, -15);
+    } catch (const SceneUrlError&) {
+      throw wrapped;  // the error of what the header announced
+    }
+  }
 }
 
 }  // namespace rasterd

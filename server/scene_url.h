@@ -20,10 +20,12 @@ class SceneUrlError : public std::runtime_error {
 };
 
 /// base64url (RFC 4648 section 5; '=' padding optional) of either the plain scene text, when the first
-/// decoded byte is '{', or of its raw deflate stream (RFC 1951, no zlib or gzip header), inflated here. A
-/// deflate stream can begin with '{' (0x7B) only when the text it holds begins with a byte 0xE0..0xEF,
-/// which no scene does, so the rule is unambiguous. Inflating stops as soon as the output would exceed
-/// `max_bytes` (the body limit), so a small URL cannot expand into unbounded memory. Throws SceneUrlError.
+/// decoded byte is '{', or of its deflate stream, inflated here: raw (RFC 1951), zlib-wrapped (RFC 1950,
+/// told by its two-byte header) or gzip. A deflate stream can begin with '{' (0x7B) only when the text it
+/// holds begins with a byte 0xE0..0xEF, which no scene does, so the rule is unambiguous; a raw stream whose
+/// first bytes happen to read as a zlib header is read raw when the zlib reading fails. Inflating stops as
+/// soon as the output would exceed `max_bytes` (the body limit), so a small URL cannot expand into unbounded
+/// memory. Throws SceneUrlError.
 std::string decode_scene_param(std::string_view param, std::size_t max_bytes);
 
 }  // namespace rasterd

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
@@ -29,26 +30,42 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-// Renders at once (`workers`) and renders waiting (`max_queue`); beyond both, a request is refused at
-// once instead of piling up. Health and metrics never pass through here.
+// Renders at once (`workers`), and who may wait for one. A render waits when the wait it can expect is
+// short: (renders ahead of it / workers) x the recent mean render time, within `max_wait`; the bodies
+// of waiting renders within `max_queued_bytes`; and at most `max_queue` of them, which bounds the
+// connection threads. Past any of these a request is refused at once with how long to wait, and one that
+// waited `max_wait` without a worker gives up. Health and metrics never pass through here.
 class Admission {
  public:
-  Admission(int workers, int max_queue) : workers_(workers), max_queue_(max_queue) {}
+  struct Verdict {
+    const char* refused = nullptr;    ///< nullptr: admitted; else the metrics reason of the refusal
+    std::chrono::milliseconds wait{};  ///< the expected wait when refused (for Retry-After)
+  };
 
-  bool enter() {
+  Admission(int workers, int max_queue, std::size_t max_queued_bytes, std::chrono::milliseconds max_wait)
+      : workers_(workers), max_queue_(max_queue), max_queued_bytes_(max_queued_bytes), max_wait_(max_wait) {}
+
+  Verdict enter(std::size_t body_bytes) {
     std::unique_lock lock(mutex_);
-    if (running_ < workers_) return ++running_, true;
-    if (waiting_ >= max_queue_) return false;
-    ++waiting_;
-    freed_.wait(lock, [&] { return running_ < workers_; });
-    --waiting_;
+    if (running_ < workers_) return ++running_, Verdict{};
+    const auto expected = std::chrono::milliseconds(
+        static_cast<std::int64_t>(std::ceil((waiting_ + 1) * mean_render_ms_ / workers_)));
+    if (waiting_ >= max_queue_) return {"queue_full", expected};
+    if (expected > max_wait_) return {"queue_wait", expected};
+    if (waiting_ > 0 && queued_bytes_ + body_bytes > max_queued_bytes_) return {"queue_memory", expected};
+    ++waiting_, queued_bytes_ += body_bytes;
+    const bool free = freed_.wait_for(lock, max_wait_, [&] { return running_ < workers_; });
+    --waiting_, queued_bytes_ -= body_bytes;
+    if (!free) return {"queue_timeout", max_wait_};
     ++running_;
-    return true;
+    return {};
   }
-  void leave() {
+  void leave(double render_ms) {
     {
       std::lock_guard lock(mutex_);
       --running_;
+      // A moving mean over roughly the last ten renders: follows a change of load within a second or two.
+      mean_render_ms_ = rendered_++ == 0 ? render_ms : 0.9 * mean_render_ms_ + 0.1 * render_ms;
     }
     freed_.notify_one();
   }
@@ -59,10 +76,21 @@ class Admission {
 
  private:
   const int workers_, max_queue_;
+  const std::size_t max_queued_bytes_;
+  const std::chrono::milliseconds max_wait_;
   std::mutex mutex_;
   std::condition_variable freed_;
   int running_ = 0, waiting_ = 0;
+  std::size_t queued_bytes_ = 0;
+  double mean_render_ms_ = 0;  // admission to answer, of the renders so far
+  std::uint64_t rendered_ = 0;
 };
+
+std::size_t uploads_size(const raster::Uploads& uploads) {
+  std::size_t n = 0;
+  for (const auto& [name, bytes] : uploads) n += bytes.size();
+  return n;
+}
 
 // Prometheus counters; one mutex, touched once or twice per request.
 class Metrics {
@@ -147,10 +175,21 @@ std::string next_request_id() {
   return buf;
 }
 
+// A bounded set of labels: every route by its pattern, anything else "other".
 std::string route_label(const std::string& path) {
-  const bool known = path == "/render" || path == "/healthz" || path == "/metrics" ||
-                     path == "/schema/scene.json" || path == "/openapi.json";
-  return known ? path : "other";
+  for (const char* route : {"/render", "/healthz", "/metrics", "/schema/scene.json", "/openapi.json", "/",
+                            "/examples"})
+    if (path == route) return path;
+  if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos) return "/examples/{name}";
+  return "other";
+}
+
+// A client's own request id is passed on when it is one a log line can carry as it is: short, and made of
+// letters, digits and "-_.:". Anything else is replaced, so no client text reaches the logs unescaped.
+bool plain_request_id(const std::string& id) {
+  return !id.empty() && id.size() <= 64 && std::all_of(id.begin(), id.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' || c == ':';
+  });
 }
 
 }  // namespace
@@ -162,11 +201,26 @@ struct Service::State {
   std::atomic<bool> cancel{false};
   int listen_socket = -1;  // remembered from the socket-options hook, for widen_backlog()
 
-  explicit State(ServiceConfig c) : config(c), admission(c.workers, c.max_queue) {}
+  explicit State(ServiceConfig c)
+      : config(c), admission(c.workers, c.max_queue, c.max_queued_bytes, c.max_queue_wait) {}
 
   // How long a connection may stay silent: the body deadline, at most 5 s (also between requests' headers).
   std::chrono::milliseconds read_timeout() const {
     return std::min<std::chrono::milliseconds>(config.body_deadline, std::chrono::milliseconds(5000));
+  }
+
+  // CORS on every answer, errors included (a page must be able to read why it failed): which origin may
+  // read it, and which of our headers it may see. With a list of origins the answer varies by Origin.
+  void set_cors_headers(const httplib::Request& req, httplib::Response& res) const {
+    const auto& allowed = config.cors_origins;
+    if (allowed.empty()) return;
+    const bool any = std::find(allowed.begin(), allowed.end(), "*") != allowed.end();
+    const std::string origin = req.get_header_value("Origin");
+    if (!any) res.set_header("Vary", "Origin");
+    if (!any && std::find(allowed.begin(), allowed.end(), origin) == allowed.end()) return;
+    res.set_header("Access-Control-Allow-Origin", any ? "*" : origin);
+    res.set_header("Access-Control-Expose-Headers", "ETag, Retry-After, Server-Timing, X-Render-Plan, X-Request-Id");
+    res.set_header("Timing-Allow-Origin", any ? "*" : origin);
   }
 
   bool refuse(httplib::Response& res, const Problem& p, const std::string& reason) {
@@ -209,6 +263,10 @@ struct Service::State {
       into.append(data, n);
       return true;
     };
+    // RFC 9112 6.3: a request with neither Content-Length nor chunked framing has no body (`curl -X POST`);
+    // reading on would wait for bytes that never come.
+    const bool chunked = req.get_header_value("Transfer-Encoding").find("chunked") != std::string::npos;
+    if (!req.has_header("Content-Length") && !chunked) return true;
     bool complete;
     if (req.is_multipart_form_data()) {
       std::string* current = nullptr;
@@ -251,6 +309,9 @@ struct Service::State {
                                   "\" (texture parts are named by their file name); send each once"),
                       "duplicate_part");
       add_part_names(uploads, parts);
+      if (const std::string unnamed = adopt_main_part(body, uploads, parts); !unnamed.empty())
+        return refuse(res, problem(400, "missing-part", "No scene or model part in the upload", unnamed),
+                      "missing_part");
     } else {
       if (const auto declared = req.get_header_value<std::uint64_t>("Content-Length")) body.reserve(declared);
       complete = reader([&](const char* data, std::size_t n) { return take(body, data, n); });
@@ -279,8 +340,9 @@ struct Service::State {
     std::string body;
     raster::Uploads uploads;
     if (!read_body(req, res, reader, body, uploads)) return;
+    const bool declared_json = !req.is_multipart_form_data() && is_json_media_type(req.get_header_value("Content-Type"));
     render(req, res, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()),
-           false);
+           false, declared_json);
   }
 
   // GET /render?scene=...: the scene is in the URL, so the answer can be cached by URL.
@@ -307,30 +369,41 @@ struct Service::State {
     }
     Params params(req.params.begin(), req.params.end());
     params.erase("scene");
-    render(req, res, std::move(body), {}, params, true);
+    render(req, res, std::move(body), {}, params, true, false);
   }
 
   // Both methods from here: admission, parse, plan, conditional request, render, encode. `cacheable`: the
-  // request is a GET, whose answer is named by its URL alone.
+  // request is a GET, whose answer is named by its URL alone. `declared_json`: its Content-Type says JSON.
   void render(const httplib::Request& req, httplib::Response& res, std::string body, raster::Uploads uploads,
-              const Params& params, bool cacheable) {
-    if (!admission.enter()) {
-      res.set_header("Retry-After", "1");
-      refuse(res, problem(503, "overloaded", "All render workers are busy", "try again shortly"),
-             "queue_full");
+              const Params& params, bool cacheable, bool declared_json) {
+    const Admission::Verdict verdict = admission.enter(body.size() + uploads_size(uploads));
+    if (verdict.refused) {
+      const auto seconds = std::max<std::int64_t>(1, (verdict.wait.count() + 999) / 1000);
+      res.set_header("Retry-After", std::to_string(seconds));
+      const bool timed_out = std::string_view(verdict.refused) == "queue_timeout";
+      refuse(res,
+             problem(503, "overloaded", "All render workers are busy",
+                     timed_out ? "no worker was free within " + std::to_string(config.max_queue_wait.count()) +
+                                     " ms; try again in " + std::to_string(seconds) + " s"
+                               : "the wait for a worker would be about " + std::to_string(verdict.wait.count()) +
+                                     " ms; try again in " + std::to_string(seconds) + " s"),
+             verdict.refused);
       return;
     }
+    const Clock::time_point admitted = Clock::now();
     struct Leave {
       Admission& a;
-      ~Leave() { a.leave(); }
-    } leave{admission};
+      Clock::time_point since;
+      ~Leave() { a.leave(ms_between(since, Clock::now())); }
+    } leave{admission, admitted};
     if (config.after_admission) config.after_admission();
 
     const Clock::time_point t0 = Clock::now();
     try {
-      raster::Scene scene = scene_from_request(std::move(body), std::move(uploads), params, config.limits);
+      raster::Scene scene =
+          scene_from_request(std::move(body), std::move(uploads), params, config.limits, declared_json);
       const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
-      if (req.get_param_value("explain") == "1") {  // no tag: the plan also depends on the thread count
+      if (explain_requested(params)) {  // no tag: the plan also depends on the thread count
         res.set_content(raster::explain_json(plan), "application/json");
         return;
       }
@@ -390,7 +463,6 @@ struct Service::State {
 Service::Service(ServiceConfig config) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (config.workers <= 0) config.workers = cores;
-  if (config.max_queue <= 0) config.max_queue = 2 * config.workers;
   state_ = std::make_unique<State>(config);
 }
 
@@ -423,15 +495,35 @@ void Service::install(httplib::Server& server) {
   server.set_keep_alive_max_count(1);
   server.set_read_timeout(s.read_timeout());
   server.set_socket_options([&s](socket_t sock) {
-    httplib::default_socket_options(sock);
+    // SO_REUSEADDR alone: a restarted server may bind while old connections linger in TIME_WAIT. Not
+    // SO_REUSEPORT (cpp-httplib's default), with which a second server on a taken port binds silently and
+    // takes a share of the connections, so a forgotten old instance keeps answering.
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
     if (s.listen_socket < 0)
       s.listen_socket = sock;  // the first socket this server creates is the listening one
   });
 
-  server.set_pre_routing_handler([](const httplib::Request&, httplib::Response& res) {
+  server.set_pre_routing_handler([&s](const httplib::Request& req, httplib::Response& res) {
     t_request = RequestContext{Clock::now(), 0};
-    res.set_header("X-Request-Id", next_request_id());
+    const std::string client_id = req.get_header_value("X-Request-Id");
+    res.set_header("X-Request-Id", plain_request_id(client_id) ? client_id : next_request_id());
+    s.set_cors_headers(req, res);
+    // Range is ignored (RFC 9110 14.2 allows it): a byte range of a picture is of no use, and cpp-httplib
+    // 0.11 would slice every answer, problems included, with a Content-Range past their end. The Request is
+    // the server's own non-const object, handed to handlers as const.
+    const_cast<httplib::Request&>(req).ranges.clear();
     return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  // CORS preflight (a page's POST of JSON, or a GET with If-None-Match): which methods and request headers a page on an allowed origin may use.
+  server.Options("/render", [](const httplib::Request&, httplib::Response& res) {
+    res.status = 204;
+    res.set_header("Allow", "GET, HEAD, POST, OPTIONS");
+    if (!res.has_header("Access-Control-Allow-Origin")) return;
+    res.set_header("Access-Control-Allow-Methods", "GET, HEAD, POST, OPTIONS");
+    res.set_header("Access-Control-Allow-Headers", "Content-Type, If-None-Match, X-Request-Id");
+    res.set_header("Access-Control-Max-Age", "86400");
   });
 
   server.Post("/render", [&s](const httplib::Request& req, httplib::Response& res,
@@ -457,6 +549,7 @@ void Service::install(httplib::Server& server) {
           // one): no pre-routing handler ran, so this request has no id or start time of its own yet.
           t_request = RequestContext{Clock::now(), 0};
           res.set_header("X-Request-Id", next_request_id());
+          s.set_cors_headers(req, res);
         }
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
         const std::string detail = req.method + " " + req.path;
@@ -523,12 +616,34 @@ constexpr Flag kFlags[] = {
     {"render-deadline-ms", "parse + render + encode deadline, 503 past it (default 10000)"},
     {"body-deadline-ms", "time for the whole request body to arrive, 408 past it (default 10000)"},
     {"workers", "renders at once (default: core count)"},
-    {"max-queue", "renders waiting for a worker, 503 + Retry-After beyond (default: 2 x workers)"},
+    {"max-queue", "renders waiting for a worker at most, 503 + Retry-After beyond (default 256)"},
+    {"max-queue-wait-ms",
+     "a render waits only if its expected wait is within this, and at most this long (default 2000)"},
+    {"max-queued-bytes", "request bytes held by waiting renders, 503 beyond (default 268435456 = 256 MiB)"},
+    {"cors-origins", "origins whose pages may read answers, comma-separated; * = any (default), none = no CORS"},
     {"render-threads", "band threads per render (default: core count)"},
     {"shutdown-grace-ms", "after SIGTERM/SIGINT, time for running and queued renders (default 20000)"},
     {"cache-max-age",
      "seconds in Cache-Control: public, max-age=N, immutable on GET /render (default 86400)"},
 };
+
+// "*", "none", or a comma-separated list of origins (blanks around commas ignored).
+std::vector<std::string> parse_origins(const std::string& text) {
+  std::vector<std::string> origins;
+  if (text == "none") return origins;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    std::size_t comma = text.find(',', at);
+    if (comma == std::string::npos) comma = text.size();
+    std::string origin = text.substr(at, comma - at);
+    origin.erase(0, origin.find_first_not_of(" \t"));
+    origin.erase(origin.find_last_not_of(" \t") + 1);
+    while (origin.size() > 1 && origin.back() == '/') origin.pop_back();  // an origin has no path
+    if (!origin.empty()) origins.push_back(origin);
+    at = comma + 1;
+  }
+  return origins;
+}
 
 std::string env_name(const char* flag) {
   std::string e = "RASTERD_";
@@ -611,7 +726,13 @@ std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig
     else if (name == "workers")
       config.workers = static_cast<int>(number(name, 1, 1024));
     else if (name == "max-queue")
-      config.max_queue = static_cast<int>(number(name, 1, 100000));
+      config.max_queue = static_cast<int>(number(name, 1, 4096));
+    else if (name == "max-queue-wait-ms")
+      config.max_queue_wait = std::chrono::milliseconds(number(name, 0, 3'600'000));
+    else if (name == "max-queued-bytes")
+      config.max_queued_bytes = static_cast<std::size_t>(number(name, 0, 1ll << 40));
+    else if (name == "cors-origins")
+      config.cors_origins = parse_origins(v);
     else if (name == "render-threads")
       config.render_threads = static_cast<int>(number(name, 1, 1024));
     else if (name == "shutdown-grace-ms")

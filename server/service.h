@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <httplib.h>
 
@@ -20,10 +21,17 @@ struct ServiceConfig {
   std::size_t max_body_bytes = 32u << 20;             ///< request body cap in bytes (413 above it)
   int render_threads = 0;                             ///< band threads per render; 0 = core count
   int workers = 0;                                    ///< renders at once; 0 = core count
-  int max_queue = 0;                                  ///< renders waiting for a worker; 0 = 2 x workers
+  int max_queue = 256;  ///< renders waiting for a worker, at most (each holds a connection thread)
+  /// Bodies held by waiting renders, in bytes: a request that would go past it is refused (one always waits).
+  std::size_t max_queued_bytes = 256u << 20;
+  /// A render waits for a worker only when its expected wait is within this, and gives up after it (503).
+  std::chrono::milliseconds max_queue_wait{2'000};
   std::chrono::milliseconds render_deadline{10'000};  ///< parse + render + encode; 503 past it
   std::chrono::milliseconds body_deadline{10'000};    ///< reading the body, whatever its pace; 408 past it
   std::chrono::milliseconds shutdown_grace{20'000};   ///< after SIGTERM, how long renders may finish
+  /// Origins whose pages may read answers (CORS): {"*"} is any origin (the default: the service has no
+  /// cookies or credentials to protect); empty sends no CORS headers. Exact "scheme://host[:port]" strings.
+  std::vector<std::string> cors_origins{"*"};
   int cache_max_age = 86'400;  ///< seconds, in Cache-Control: public, max-age=N, immutable (GET /render)
   /// Tests only (empty in service): runs on the request's thread once a render is admitted, before its
   /// scene is read. A test holds renders in flight on a latch here, or throws to force an internal error.

@@ -161,18 +161,63 @@ TEST(Render, BlendingOntoTransparentKeepsStraightAlpha) {
   EXPECT_EQ(c.b, 184);  // (250 * 128 * 255 + 50 * 128 * 127) / ...
 }
 
-// The examples are golden images: a change of any pixel changes the hash. Regenerate the hashes only
-// after looking at the new pictures (examples/README.md says how).
-TEST(Render, ExamplesMatchTheirGoldenHashes) {
-  const std::vector<std::pair<std::string, std::uint64_t>> golden = {
+// The examples are golden images: a change of any pixel, or of a byte of its PNG, changes a hash.
+// Regenerate the hashes only after looking at the new pictures (examples/README.md says how), and raise
+// the render version with them (the next test).
+struct Golden {
+  const char* name;         // examples/<name>
+  std::uint64_t pixels;     // test::image_hash of the render
+  std::uint64_t png;        // FNV-1a of the PNG that raster::encode_png makes of it
+};
+const Golden kGoldens[] = {
 #include "golden_hashes.inc"
-  };
-  ASSERT_FALSE(golden.empty());
-  for (const auto& [name, hash] : golden) {
-    const auto text = test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/" + name);
-    const auto img = raster::render(raster::parse_scene(text));
-    EXPECT_EQ(test::image_hash(img), hash) << name << " changed: 0x" << std::hex << test::image_hash(img);
+};
+
+std::uint64_t fnv1a(const std::vector<std::uint8_t>& bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (std::uint8_t b : bytes) h = (h ^ b) * 1099511628211ull;
+  return h;
+}
+
+TEST(Render, ExamplesMatchTheirGoldenHashes) {
+  for (const Golden& g : kGoldens) {
+    const auto text = test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/" + g.name);
+    const raster::Scene scene = raster::parse_scene(text);
+    const raster::RenderPlan plan = raster::plan(scene);
+    raster::Image img = raster::render(scene, plan);
+    const std::uint64_t pixels = test::image_hash(img);
+    const std::uint64_t png = fnv1a(raster::encode_png(std::move(img), plan.png));
+    EXPECT_EQ(pixels, g.pixels) << g.name << "'s pixels changed: 0x" << std::hex << pixels;
+    EXPECT_EQ(png, g.png) << g.name << "'s PNG changed: 0x" << std::hex << png;
   }
+}
+
+// Every golden belongs to a render version, the one in every ETag: a change of pictures without a new
+// version would let caches answer 304 with the old pictures. tests/render_versions.inc is the history,
+// one row per version, never edited: each version's digest of the goldens.
+TEST(Render, GoldensBelongToTheRenderVersion) {
+  std::uint64_t digest = 1469598103934665603ull;
+  auto mix = [&](std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) digest = (digest ^ (v >> (8 * i) & 0xff)) * 1099511628211ull;
+  };
+  for (const Golden& g : kGoldens) {
+    for (const char* c = g.name; *c; ++c) mix(static_cast<unsigned char>(*c));
+    mix(g.pixels), mix(g.png);
+  }
+  const std::pair<int, std::uint64_t> versions[] = {
+#include "render_versions.inc"
+  };
+  for (std::size_t i = 0; i < std::size(versions); ++i) {
+    EXPECT_EQ(versions[i].first, static_cast<int>(i) + 1) << "versions are numbered 1, 2, 3, ...";
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_NE(versions[i].second, versions[j].second) << "versions " << j + 1 << " and " << i + 1 << " draw the same";
+  }
+  const auto& [version, expected] = versions[std::size(versions) - 1];
+  EXPECT_EQ(version, raster::kRenderVersion) << "the last row of tests/render_versions.inc is raster::kRenderVersion";
+  EXPECT_EQ(digest, expected) << "the golden images changed but raster::kRenderVersion did not: raise it to "
+                              << raster::kRenderVersion + 1 << " (renderer/include/raster/version.h) and append {"
+                              << raster::kRenderVersion + 1 << ", 0x" << std::hex << digest
+                              << "ull} to tests/render_versions.inc";
 }
 
 }  // namespace

@@ -362,10 +362,29 @@ TEST(SceneFastPath, GivesUpOnTheDepthLimitNulBytesAndDuplicateKeys) {
   const std::string nul = "{\"width\": 3\0\0004, \"height\": 2}"s;
   EXPECT_FALSE(parse_scene_fast(nul, {}, {}).has_value());
   EXPECT_FALSE(dom_or_nothing(nul).has_value());
-  // nlohmann keeps the last of repeated keys; the streaming reader leaves such documents to it.
-  const std::string repeated = R"({"width":2,"height":2,"width":3})";
-  EXPECT_FALSE(parse_scene_fast(repeated, {}, {}).has_value());
-  EXPECT_EQ(raster::parse_scene(repeated).width, 3);
+  // A repeated key: the streaming reader leaves the document to the DOM reader, which refuses it at the
+  // second key, wherever it is (the root, a streamed primitive, a nested value).
+  const std::pair<std::string, std::string> repeated[] = {
+      {R"({"width":2,"height":2,"width":3})", "/width"},
+      {R"({"width":2,"height":2,"primitives":[{"type":"line","points":[[0,0],[1,1]]},)"
+       R"({"type":"line","points":[[0,0],[1,1]],"points":[[1,1],[0,0]]}]})",
+       "/primitives/1/points"},
+      {R"({"width":2,"height":2,"camera":{"eye":[0,0,5],"eye":[0,0,6]}})", "/camera/eye"},
+      {R"({"width":2,"height":2,"primitives":[{"type":"mesh","positions":[[0,0,0],[1,0,0],[0,1,0]],)"
+       R"("indices":[[0,1,2]],"transform":{"translate":[0,0,0],"a~/b":1,"a~/b":2}}]})",
+       "/primitives/0/transform/a~0~1b"},
+  };
+  for (const auto& [text, pointer] : repeated) {
+    EXPECT_FALSE(parse_scene_fast(text, {}, {}).has_value()) << text;
+    try {
+      raster::parse_scene(text);
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const raster::SceneError& e) {
+      EXPECT_EQ(e.kind(), raster::ErrorKind::invalid) << text;
+      EXPECT_EQ(e.where().pointer, pointer) << e.what();
+      EXPECT_NE(std::string(e.what()).find("twice"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -189,13 +189,13 @@ TEST(Service, EachSceneLimitHasItsStatus) {
   config.limits.max_obj_faces = 1;
   config.limits.max_json_depth = 8;
   TestServer server(config);
-  auto post = [&](const std::string& body) {
-    return server.client().Post("/render", body, "application/json");
+  auto post = [&](const std::string& body, const char* type = "application/json") {
+    return server.client().Post("/render", body, type);
   };
   auto r = post(R"({"width": 4, "height": 4, "primitives": [{}, {}, {}, {}]})");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422);
-  r = post("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\n");
+  r = post("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\n", "model/obj");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422);
   EXPECT_EQ(nlohmann::json::parse(r->body)["line"], 5);

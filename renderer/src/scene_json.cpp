@@ -6,6 +6,8 @@
 #include <numbers>
 #include <span>
 #include <string>
+#include <unordered_set>
+#include <vector>
 
 #include "raster/scene.h"
 #include "raster/utf8.h"
@@ -193,8 +195,12 @@ Rgba8 read_color(const json& v, const Path& pointer) {
     for (std::size_t k = 0; k < comp.size(); ++k) {
       if (comp[k] >= 0.0 && comp[k] <= 1.0) continue;
       std::string message = "colour components are in 0..1, got " + v[k].dump();
-      const bool bytes = std::all_of(comp.begin(), comp.end(),
-                                     [](double c) { return c >= 0 && c <= 255 && c == std::floor(c); });
+      // Hex is suggested only for components that all read as 0..255 bytes. A 1 among them reads as "full"
+      // on the 0..1 scale ([1, 0, 0, 255] is opaque red with a slip, not #010000ff), and so does a
+      // small array such as [1, 1, 2]: no guess then, only the range.
+      const bool bytes = std::all_of(comp.begin(), comp.end(), [](double c) {
+        return c >= 0 && c <= 255 && c == std::floor(c) && c != 1;
+      });
       if (bytes) message += "; did you mean \"" + hex_of(comp) + "\"?";
       invalid(Path(pointer, k), message);
     }
@@ -921,25 +927,36 @@ std::size_t depth_violation_offset(std::string_view text, int max_depth) {
 }
 
 // nlohmann's DOM builder behind a SAX front that (1) cuts nesting at the limit while parsing: the parser
-// is iterative, but dump, copy and compare of the resulting document recurse; and (2) turns every parse
-// error, number overflow included, into a SceneError with the byte offset the parser reports.
+// is iterative, but dump, copy and compare of the resulting document recurse; (2) refuses a key given twice
+// in one object at the second one's pointer (nlohmann keeps the last; RFC 8259 says names SHOULD be unique,
+// and a scene that says two things is more likely a mistake than a wish); and (3) turns every parse error,
+// number overflow included, into a SceneError with the byte offset the parser reports.
 class BoundedDomBuilder {
  public:
   BoundedDomBuilder(json& out, std::string_view text, int max_depth)
       : dom_(out, true), text_(text), max_depth_(max_depth) {}
 
-  bool null() { return dom_.null(); }
-  bool boolean(bool v) { return dom_.boolean(v); }
-  bool number_integer(json::number_integer_t v) { return dom_.number_integer(v); }
-  bool number_unsigned(json::number_unsigned_t v) { return dom_.number_unsigned(v); }
-  bool number_float(json::number_float_t v, const json::string_t& s) { return dom_.number_float(v, s); }
-  bool string(json::string_t& v) { return dom_.string(v); }
-  bool binary(json::binary_t& v) { return dom_.binary(v); }
-  bool key(json::string_t& v) { return dom_.key(v); }
-  bool start_object(std::size_t n) { return enter() && dom_.start_object(n); }
-  bool end_object() { return --depth_, dom_.end_object(); }
-  bool start_array(std::size_t n) { return enter() && dom_.start_array(n); }
-  bool end_array() { return --depth_, dom_.end_array(); }
+  bool null() { return element(), dom_.null(); }
+  bool boolean(bool v) { return element(), dom_.boolean(v); }
+  bool number_integer(json::number_integer_t v) { return element(), dom_.number_integer(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return element(), dom_.number_unsigned(v); }
+  bool number_float(json::number_float_t v, const json::string_t& s) {
+    return element(), dom_.number_float(v, s);
+  }
+  bool string(json::string_t& v) { return element(), dom_.string(v); }
+  bool binary(json::binary_t& v) { return element(), dom_.binary(v); }
+  bool key(json::string_t& v) {
+    Frame& f = frames_.back();
+    if (!f.add_key(v))
+      throw SceneError(ErrorKind::invalid, "\"" + v + "\" is given twice in one object; give each key once",
+                       ErrorLocation{pointer_to(v), 0, 0});
+    f.key = v;
+    return dom_.key(v);
+  }
+  bool start_object(std::size_t n) { return enter(true) && dom_.start_object(n); }
+  bool end_object() { return leave(), dom_.end_object(); }
+  bool start_array(std::size_t n) { return enter(false) && dom_.start_array(n); }
+  bool end_array() { return leave(), dom_.end_array(); }
 
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
     // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 2: ..."; keep the sentence.
@@ -949,16 +966,53 @@ class BoundedDomBuilder {
   }
 
  private:
-  bool enter() {
-    if (++depth_ <= max_depth_) return true;
-    throw SceneError(ErrorKind::syntax, "JSON nested deeper than " + std::to_string(max_depth_) + " levels",
-                     ErrorLocation{"", depth_violation_offset(text_, max_depth_), 0});
+  // An open object or array, for the pointer of a repeated key.
+  struct Frame {
+    bool object = false;
+    std::size_t elements = 0;               // an array's elements so far: the current one is elements - 1
+    std::string key;                        // an object's current key
+    std::vector<std::string> keys;          // an object's keys so far, while it has few
+    std::unordered_set<std::string> many;   // all of them, once there are many (no quadratic search)
+
+    bool add_key(const std::string& k) {
+      if (!many.empty()) return many.insert(k).second;
+      if (std::find(keys.begin(), keys.end(), k) != keys.end()) return false;
+      keys.push_back(k);
+      if (keys.size() == 16) many.insert(keys.begin(), keys.end()), keys.clear();
+      return true;
+    }
+  };
+
+  // A value begins: in an array, that is its next element.
+  void element() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().elements;
+  }
+  bool enter(bool object) {
+    element();
+    if (static_cast<int>(frames_.size()) + 1 > max_depth_)
+      throw SceneError(ErrorKind::syntax, "JSON nested deeper than " + std::to_string(max_depth_) + " levels",
+                       ErrorLocation{"", depth_violation_offset(text_, max_depth_), 0});
+    frames_.emplace_back().object = object;
+    return true;
+  }
+  void leave() { frames_.pop_back(); }
+
+  std::string pointer_to(const std::string& last_key) const {
+    auto escaped = [](const std::string& key) {  // RFC 6901: '~' as ~0, '/' as ~1
+      std::string out;
+      for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+      return out;
+    };
+    std::string pointer;
+    for (std::size_t i = 0; i + 1 < frames_.size(); ++i)
+      pointer += "/" + (frames_[i].object ? escaped(frames_[i].key) : std::to_string(frames_[i].elements - 1));
+    return pointer + "/" + escaped(last_key);
   }
 
   nlohmann::detail::json_sax_dom_parser<json> dom_;
   std::string_view text_;
   int max_depth_;
-  int depth_ = 0;
+  std::vector<Frame> frames_;
 };
 
 }  // namespace
@@ -975,7 +1029,12 @@ json parse_document(std::string_view text, int max_depth) {
 void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
   if (!doc.is_object()) invalid(kRoot, std::string("a scene is a JSON object, got ") + type_name(doc));
   check_keys(doc, kRoot,
-             {"width", "height", "background", "antialias", "primitives", "camera", "light", "lights"});
+             {"width", "height", "background", "antialias", "primitives", "camera", "light", "lights", "$schema",
+              "$comment"});
+  // What editors and JSON Schema give a document: the schema it follows, and a note. Neither draws.
+  for (const char* key : {"$schema", "$comment"})
+    if (auto it = doc.find(key); it != doc.end() && !it->is_string())
+      invalid(Path(kRoot, key), std::string("expected a string, got ") + type_name(*it));
   auto read_side = [&](const char* key, int max_side) {
     auto it = doc.find(key);
     const Path pointer(kRoot, key);

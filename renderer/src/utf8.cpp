@@ -80,8 +80,9 @@ void require_utf8(std::string_view text, const std::string& what, bool with_line
   if (at == std::string_view::npos) return;
   static constexpr char kHex[] = "0123456789ABCDEF";
   const auto b = static_cast<unsigned char>(text[at]);
-  std::string message = what + " is not valid UTF-8: byte 0x" + kHex[b >> 4] + kHex[b & 15] + " at offset " +
-                        std::to_string(at) + " is " + why_ill_formed(text, at) + "; send text as UTF-8";
+  // Bytes are counted from 1 here as in the error's location (and in "line"), so the two always agree.
+  std::string message = what + " is not valid UTF-8: byte " + std::to_string(at + 1) + " (0x" + kHex[b >> 4] +
+                        kHex[b & 15] + ") is " + why_ill_formed(text, at) + "; send text as UTF-8";
   ErrorLocation where{"", at + 1, 0};
   if (with_line) {
     where.line = 1;

@@ -130,7 +130,7 @@ def check_readme(args):
     for row in rows:
         # A name in quotes or backticks is a field, unless it is a value: after `"key": `, an enum or const
         # of the schema, or a JSON literal.
-        for m in re.finditer(r'(?:"([A-Za-z_][A-Za-z0-9_]*)"|`([A-Za-z_][A-Za-z0-9_]*)`)', row):
+        for m in re.finditer(r'(?:"(\$?[A-Za-z_][A-Za-z0-9_]*)"|`(\$?[A-Za-z_][A-Za-z0-9_]*)`)', row):
             name = m.group(1) or m.group(2)
             if re.search(r'"\s*:\s*$', row[: m.start()]) or name in ("true", "false", "null"):
                 continue

@@ -8,3 +8,4 @@
 #include "raster/render.h"
 #include "raster/scene.h"
 #include "raster/utf8.h"
+#include "raster/version.h"
