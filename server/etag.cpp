@@ -9,8 +9,6 @@
 #include <string>
 #include <type_traits>
 
-#include "raster/version.h"
-
 
 namespace rasterd {
 namespace {
@@ -82,10 +80,10 @@ class Digest {
 
 }  // namespace
 
-std::string scene_etag(const raster::Scene& scene) {
+std::string scene_etag(const raster::Scene& scene, int render_version) {
   Digest d;
   // The render version, not the release: a tag names bytes, and only a change of render changes them.
-  const std::string version = "rasterd render " + std::to_string(raster::kRenderVersion);
+  const std::string version = "rasterd render " + std::to_string(render_version);
   d.bytes(version.data(), version.size() + 1);  // with its NUL, so it cannot run into the scene's bytes
   d.value(scene.width), d.value(scene.height), d.value(scene.samples), d.value(scene.area);
   d.bytes(&scene.background, sizeof scene.background);

@@ -63,7 +63,8 @@ int window_bits_of(const std::string& bytes) {
   return -15;
 }
 
-std::string inflate(const std::string& compressed, std::size_t max_bytes, int window_bits) {
+std::string inflate_text(const std::string& compressed, std::size_t max_bytes, int window_bits) {
+  const char* reading = window_bits == 15 ? "zlib" : window_bits == 31 ? "gzip" : "raw deflate";
   z_stream zs{};
   if (inflateInit2(&zs, window_bits) != Z_OK) throw std::bad_alloc();
   struct End {
@@ -87,14 +88,13 @@ std::string inflate(const std::string& compressed, std::size_t max_bytes, int wi
     if (rc == Z_STREAM_END) break;
     if (rc == Z_MEM_ERROR) throw std::bad_alloc();
     if (rc == Z_DATA_ERROR || rc == Z_NEED_DICT)
-      bad(std::string("the decoded bytes do not start with '{' (plain JSON) and are not a deflate stream, raw "
-                      "or zlib-wrapped (read as ") +
-          (window_bits == 15 ? "zlib" : window_bits == 31 ? "gzip" : "raw deflate") + ": " +
-          (zs.msg ? zs.msg : "invalid data") + ")");
+      bad("the decoded bytes do not start with '{' (plain JSON) and are not a deflate stream, raw or "
+          "zlib-wrapped (read as " + std::string(reading) + ": " + (zs.msg ? zs.msg : "invalid data") + ")");
     if (rc == Z_BUF_ERROR || (zs.avail_in == 0 && produced == 0))
-      bad("the deflate stream ends early (truncated URL?)");
+      bad("the deflate stream (read as " + std::string(reading) + ") ends early (truncated URL?)");
   }
-  if (zs.avail_in != 0) bad(std::to_string(zs.avail_in) + " bytes follow the end of the deflate stream");
+  if (zs.avail_in != 0)
+    bad(std::to_string(zs.avail_in) + " bytes follow the end of the deflate stream (read as " + reading + ")");
   return out;
 }
 
@@ -109,14 +109,14 @@ std::string decode_scene_param(std::string_view param, std::size_t max_bytes) {
     return decoded;
   }
   const int window_bits = window_bits_of(decoded);
-  if (window_bits == -15) return inflate(decoded, max_bytes, -15);
+  if (window_bits == -15) return inflate_text(decoded, max_bytes, -15);
   try {
-    return inflate(decoded, max_bytes, window_bits);
+    return inflate_text(decoded, max_bytes, window_bits);
   } catch (const SceneUrlError& wrapped) {
     // Two bytes that happen to look like a zlib header can begin a raw stream too: that reading may work.
     if (wrapped.status() == 413) throw;
     try {
-      return inflate(decoded, max_bytes, -15);
+      return inflate_text(decoded, max_bytes, -15);
     } catch (const SceneUrlError&) {
       throw wrapped;  // the error of what the header announced
     }
