@@ -123,7 +123,7 @@ TEST(ImageUrl, GetEqualsPostForEveryExample) {
     }
     rendered += post->status == 200;
   }
-  EXPECT_GE(rendered, 8) << "bunny-scene.json needs an upload; every other example renders";
+  EXPECT_GE(rendered, 8) << "model-scene.json needs an upload; every other example renders";
 }
 
 TEST(ImageUrl, ObjModelsAndExplainWorkAsForPost) {
