@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: test-openapi deps build serve test test-asan fuzz bench-build bench lighting bench-accuracy loadtest loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
+.PHONY: test-openapi deps build serve test test-asan fuzz bench-build bench lighting bench-accuracy loadtest loadtest-admission loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster clean
 
 deps:
 	@scripts/install-deps
@@ -61,6 +61,12 @@ bench-accuracy: bench-build
 # wrk against a local server on the mid-size scene; LOADTEST_SECONDS=30 by default.
 loadtest: bench-build
 	@scripts/loadtest
+
+# A web page's mix under 16 and 256 connections, old and new admission side by side; writes docs/admission.md
+# (ADMISSION_SECONDS=20 a row).
+loadtest-admission: build
+	@scripts/install-deps load
+	@scripts/loadtest-admission
 
 # One image URL over and over: rendering, the 304, rasterd's cheapest request and nginx's cache hit, side by
 # side (LOADTEST_SECONDS=10 a row); writes docs/cache.txt. Why rasterd has no cache of its own.

@@ -56,22 +56,42 @@ std::string colour_param(const std::string& value) {
   return bare_hex ? "#" + value : value;
 }
 
+// The query parameter a field of the default scene comes from ("/camera/fov/..." -> "fov"), or "".
+std::string param_of_pointer(const std::string& pointer, const Params& params) {
+  std::string name = pointer.starts_with("/camera/") ? pointer.substr(8) : pointer.substr(pointer.empty() ? 0 : 1);
+  name = name.substr(0, name.find('/'));
+  return params.contains(name) ? name : "";
+}
+
+// An OBJ model's first statement: what a body declared as JSON holds when a model was sent with the wrong
+// Content-Type.
+bool starts_like_obj(std::string_view body) {
+  const std::size_t i = body.find_first_not_of(" \t\r\n");
+  if (i == std::string_view::npos) return false;
+  body.remove_prefix(i);
+  for (std::string_view statement : {"# ", "v ", "vn ", "vt ", "f ", "o ", "g ", "mtllib ", "usemtl "})
+    if (body.starts_with(statement)) return true;
+  return false;
+}
+
 // The default scene of a bare model, with the parameters turned into JSON and parsed like any scene, so
 // that a bad parameter gets the same precise message as the same field in a scene document.
 std::string default_scene_json(const Params& params) {
   nlohmann::json scene = {{"width", 512}, {"height", 512}};
   nlohmann::json camera = nlohmann::json::object();
-  auto number = [&](const std::string& name, const std::string& text) {
+  auto number = [&](const std::string& name, const std::string& text) -> nlohmann::json {
     double v = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
       bad_param(name, "expected a number, got \"" + text + "\"");
+    // A whole number stays one, so that an error quotes "0" as it was sent, not "0.0".
+    if (v == std::trunc(v) && std::fabs(v) < 1e15) return static_cast<std::int64_t>(v);
     return v;
   };
   auto vector = [&](const std::string& name, const std::string& text) {
     nlohmann::json out = nlohmann::json::array();
     std::size_t start = 0;
-    while (start <= text.size()) {
+    while (start <= text.size()) {  // "x,y,z"
       std::size_t comma = text.find(',', start);
       if (comma == std::string::npos) comma = text.size();
       out.push_back(number(name, text.substr(start, comma - start)));
@@ -194,6 +214,10 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
                                     "\"" + name + "\" (or its camera) in its JSON"
                                   : "unknown; a scene takes only: explain");
     }
+    if (declared_json && !is_scene_text(body) && starts_like_obj(body))
+      throw raster::SceneError(raster::ErrorKind::syntax,
+                               "the Content-Type says JSON, but the body looks like an OBJ model; send a model "
+                               "as model/obj, or with curl --data-binary and no Content-Type of its own");
     return raster::parse_scene(body, limits, uploads);
   }
   if (looks_like_flattened_obj(body))
@@ -205,7 +229,14 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     throw raster::SceneError(raster::ErrorKind::syntax,
                              "the request is empty: send a scene (JSON) or a model (OBJ)");
   if (!body.empty()) uploads["model"] = std::move(body);
-  return raster::parse_scene(default_scene_json(params), limits, uploads);
+  try {
+    return raster::parse_scene(default_scene_json(params), limits, uploads);
+  } catch (const raster::SceneError& e) {
+    // A field the query set is reported as that parameter: the client sent no document to point into.
+    const std::string param = param_of_pointer(e.where().pointer, params);
+    if (param.empty()) throw;
+    throw raster::SceneError(e.kind(), "query parameter \"" + param + "\": " + e.what());
+  }
 }
 
 }  // namespace rasterd

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <exception>
 #include <map>
+#include <set>
 #include <mutex>
 #include <thread>
 
@@ -174,6 +175,8 @@ std::string next_request_id() {
   std::snprintf(buf, sizeof buf, "r%08llx", static_cast<unsigned long long>(++counter));
   return buf;
 }
+
+const std::set<std::string> kServedMethods = {"GET", "HEAD", "POST", "OPTIONS"};
 
 // A bounded set of labels: every route by its pattern, anything else "other".
 std::string route_label(const std::string& path) {
@@ -513,6 +516,7 @@ void Service::install(httplib::Server& server) {
     // 0.11 would slice every answer, problems included, with a Content-Range past their end. The Request is
     // the server's own non-const object, handed to handlers as const.
     const_cast<httplib::Request&>(req).ranges.clear();
+    res.set_header("Accept-Ranges", "none");  // else cpp-httplib advertises "bytes" on HEAD answers
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
@@ -558,12 +562,16 @@ void Service::install(httplib::Server& server) {
           write_problem(res, problem(414, "uri-too-long", "The request URI is too long",
                                      "a request line is at most 8192 bytes; POST the scene to /render "
                                      "instead of putting it in the URL"));
-        } else if (res.status == 404)
+        } else if (res.status == 405 || !kServedMethods.contains(req.method)) {
+          // cpp-httplib answers a method no route has with 404 or 400; every route here is GET, HEAD, POST
+          // or OPTIONS, so the method is what is wrong.
+          res.set_header("Allow", "GET, HEAD, POST, OPTIONS");
+          write_problem(res, problem(405, "method-not-allowed", "Method not allowed",
+                                     detail + ": rasterd answers GET, HEAD, POST and OPTIONS"));
+        } else if (res.status == 404) {
           write_problem(res, problem(404, "not-found", "No such route",
                                      detail + " (the routes are described at GET /openapi.json)"));
-        else if (res.status == 405)
-          write_problem(res, problem(405, "method-not-allowed", "Method not allowed", detail));
-        else
+        } else
           write_problem(
               res, problem(res.status, "http-error", "HTTP error " + std::to_string(res.status), detail));
         return httplib::Server::HandlerResponse::Handled;

@@ -349,6 +349,9 @@ TEST(Newcomer, SmallThingsAreRight) {
   EXPECT_EQ(ranged->status, 200);
   EXPECT_EQ(ranged->body, "ok\n");
   EXPECT_FALSE(ranged->has_header("Content-Range"));
+  auto head = server.client().Head("/healthz");
+  ASSERT_TRUE(head);
+  EXPECT_EQ(head->get_header_value("Accept-Ranges"), "none");
 
   auto nope = server.client().Get("/examples/nope.json");
   ASSERT_TRUE(nope);
@@ -363,6 +366,36 @@ TEST(Newcomer, SmallThingsAreRight) {
   for (const char* label : {"route=\"/\",status=\"200\"", "route=\"/examples\",status=\"200\"",
                             "route=\"/examples/{name}\",status=\"404\""})
     EXPECT_NE(metrics->body.find(label), std::string::npos) << label << " in\n" << metrics->body;
+}
+
+// What people type next: a method no route has, a model sent as JSON, a query value the scene refuses.
+TEST(Newcomer, MoreMistakesGetSpecificAnswers) {
+  TestServer server;
+  auto put = server.client().Put("/render", kScene, "application/json");
+  ASSERT_TRUE(put);
+  EXPECT_EQ(put->status, 405);
+  EXPECT_EQ(put->get_header_value("Allow"), "GET, HEAD, POST, OPTIONS");
+  EXPECT_EQ(problem_of(put)["type"], "urn:rasterd:problem:method-not-allowed");
+
+  auto model_as_json = server.client().Post("/render", kObj, "application/json");
+  ASSERT_TRUE(model_as_json);
+  EXPECT_EQ(model_as_json->status, 400);
+  EXPECT_NE(problem_of(model_as_json)["detail"].get<std::string>().find("looks like an OBJ model"),
+            std::string::npos) << model_as_json->body;
+
+  // A value the default scene refuses names its query parameter; its pointer is the root, as for every
+  // query parameter (the client sent no document of its own).
+  for (const auto& [query, name] : std::vector<std::pair<std::string, std::string>>{
+           {"?view=isometric", "view"}, {"?width=0", "width"}, {"?fov=500", "fov"}}) {
+    auto r = server.client().Post("/render" + query, kObj, "model/obj");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 400) << query;
+    const auto p = problem_of(r);
+    EXPECT_EQ(p["detail"].get<std::string>().rfind("query parameter \"" + name + "\": ", 0), 0u) << r->body;
+    EXPECT_EQ(p["pointer"], "") << r->body;
+  }
+  auto zero = server.client().Post("/render?width=0", kObj, "model/obj");
+  EXPECT_TRUE(problem_of(zero)["detail"].get<std::string>().ends_with("got 0")) << "quoted as sent: " << zero->body;
 }
 
 // 17. A burst of requests waits for the workers instead of being refused; refusals come from the wait

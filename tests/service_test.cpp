@@ -125,6 +125,7 @@ TEST(Service, SaturatedServiceRefusesAtOnceAndStaysHealthy) {
   rasterd::ServiceConfig config;
   config.workers = 1;
   config.max_queue = 1;
+  config.max_queue_wait = std::chrono::minutes(10);  // the queued render waits for the gate, not the clock
   config.render_threads = 1;
   config.after_admission = [&gate] { gate.wait(); };
   TestServer server(config);
@@ -297,8 +298,10 @@ TEST(Service, SigtermLetsAcceptedRendersFinish) {
   env.push_back(nullptr);
 
   const std::string port_text = std::to_string(port);
-  const char* argv[] = {RASTERD_BINARY, "serve", "--host",           "127.0.0.1", "--port", port_text.c_str(),
-                        "--workers",    "1",     "--render-threads", "1",         nullptr};
+  // Queued renders wait for the gate, not for the clock: the wait bound is far beyond any machine's pace.
+  const char* argv[] = {RASTERD_BINARY, "serve",   "--host",           "127.0.0.1", "--port", port_text.c_str(),
+                        "--workers",    "1",       "--render-threads", "1",         "--max-queue-wait-ms",
+                        "600000",       nullptr};
   pid_t pid = 0;
   ASSERT_EQ(posix_spawn(&pid, RASTERD_BINARY, nullptr, nullptr, const_cast<char**>(argv), env.data()), 0);
   httplib::Client probe("127.0.0.1", port);
