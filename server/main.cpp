@@ -31,7 +31,7 @@ constexpr const char* kUsage = R"(usage:
                  [--part NAME=FILE]
                                                         a bare OBJ model with the default scene; the MTL
                                                         and textures it names are read from its folder
-  rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080)
+  rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080; 0: any free)
   rasterd --version                                     the release and the render version
 
 render:  writes the PNG to OUT.png (default: stdout); --explain writes the render plan as JSON instead.
@@ -209,7 +209,9 @@ int run_serve(const std::vector<std::string>& args) {
   httplib::Server server;
   rasterd::Service service(config);
   service.install(server);
-  if (!server.bind_to_port(host, port)) {
+  // Port 0: any free port, which the "listening on" line then names (tests and scripts read it there:
+  // choosing a free port first and binding it later races with every other process that binds one).
+  if (port == 0 ? (port = server.bind_to_any_port(host)) <= 0 : !server.bind_to_port(host, port)) {
     std::cerr << "rasterd: cannot listen on " << host << ":" << port << ": " << std::strerror(errno) << "\n";
     return 1;
   }

@@ -191,7 +191,7 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
   for (const PartName& p : parts) names += (names.empty() ? "\"" : ", \"") + p.part + "\"" + (p.key != p.part ? " (" + p.key + ")" : "");
   return "the upload has the parts " + names + " but none is named \"scene\" or \"model\"" +
          (candidates.empty() ? "" : " and more than one could be") +
-         "; send the model as -F model=@bunny.obj or the scene as -F scene=@scene.json";
+         "; send the model as -F model=@model.obj or the scene as -F scene=@scene.json";
 }
 
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,

@@ -613,7 +613,7 @@ struct Flag {
 };
 constexpr Flag kFlags[] = {
     {"host", "address to listen on (default 0.0.0.0)"},
-    {"port", "port (default 8080; also PORT)"},
+    {"port", "port (default 8080; also PORT); 0 = any free port, named in the \"listening on\" line"},
     {"max-body-bytes", "request body limit, 413 above (default 33554432 = 32 MiB)"},
     {"max-width", "image width limit, 422 above (default 8192)"},
     {"max-height", "image height limit, 422 above (default 8192)"},
@@ -712,7 +712,7 @@ std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig
     if (name == "host")
       host = v;
     else if (name == "port")
-      port = static_cast<int>(number(name, 1, 65535));
+      port = static_cast<int>(number(name, 0, 65535));
     else if (name == "max-body-bytes")
       config.max_body_bytes = static_cast<std::size_t>(number(name, 1, 1ll << 32));
     else if (name == "max-width")

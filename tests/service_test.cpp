@@ -275,21 +275,10 @@ TEST(Service, MetricsAndServerTiming) {
 // renders are held on a FIFO (RASTERD_TEST_RENDER_GATE) until after the signal, so at the moment of the
 // signal one render is provably running and two are queued, however fast the machine.
 TEST(Service, SigtermLetsAcceptedRendersFinish) {
-  int port = 0;
-  {  // a free port for the child (the small race with other processes is acceptable on loopback)
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr);
-    socklen_t len = sizeof addr;
-    ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
-    port = ntohs(addr.sin_port);
-    ::close(fd);
-  }
   char dir_template[] = "/tmp/rasterd-gate-XXXXXX";
   ASSERT_NE(::mkdtemp(dir_template), nullptr);
   const std::string fifo = std::string(dir_template) + "/gate";
+  const std::string log = std::string(dir_template) + "/stderr";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const std::string gate_env = "RASTERD_TEST_RENDER_GATE=" + fifo;
   std::vector<char*> env;
@@ -297,13 +286,29 @@ TEST(Service, SigtermLetsAcceptedRendersFinish) {
   env.push_back(const_cast<char*>(gate_env.c_str()));
   env.push_back(nullptr);
 
-  const std::string port_text = std::to_string(port);
+  // Port 0: the child binds a free port itself and names it on stderr. (Picking a free port here and
+  // passing it on raced with every other test binding one: under ctest -j2 another test's server could
+  // take it first, and with SO_REUSEPORT, which rasterd used to set, both then shared the port and took
+  // each other's requests: the one way found for ImageUrl.GetEqualsPostForEveryExample, which ran beside
+  // this test, to get answers from a server other than its own.)
   // Queued renders wait for the gate, not for the clock: the wait bound is far beyond any machine's pace.
-  const char* argv[] = {RASTERD_BINARY, "serve",   "--host",           "127.0.0.1", "--port", port_text.c_str(),
+  const char* argv[] = {RASTERD_BINARY, "serve",   "--host",           "127.0.0.1", "--port", "0",
                         "--workers",    "1",       "--render-threads", "1",         "--max-queue-wait-ms",
                         "600000",       nullptr};
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, RASTERD_BINARY, nullptr, nullptr, const_cast<char**>(argv), env.data()), 0);
+  ASSERT_EQ(posix_spawn(&pid, RASTERD_BINARY, &actions, nullptr, const_cast<char**>(argv), env.data()), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  int port = 0;
+  ASSERT_TRUE(eventually([&] {
+    const std::string text = test::read_file(log);
+    const std::string marker = "listening on 127.0.0.1:";
+    const auto at = text.find(marker);
+    if (at != std::string::npos) port = std::atoi(text.c_str() + at + marker.size());
+    return port > 0;
+  }));
   httplib::Client probe("127.0.0.1", port);
   ASSERT_TRUE(eventually([&] {
     auto h = probe.Get("/healthz");
@@ -340,6 +345,7 @@ TEST(Service, SigtermLetsAcceptedRendersFinish) {
   httplib::Client after("127.0.0.1", port);
   EXPECT_FALSE(after.Get("/healthz")) << "no new connections after shutdown";
   ::unlink(fifo.c_str());
+  ::unlink(log.c_str());
   ::rmdir(dir_template);
 }
 
