@@ -9,7 +9,6 @@
 #include <string>
 #include <type_traits>
 
-
 namespace rasterd {
 namespace {
 

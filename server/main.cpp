@@ -117,8 +117,9 @@ int run_render(const std::vector<std::string>& args) {
       } else if (i + 1 < args.size()) {
         params[a.substr(2)] = args[++i];
       } else {
-        return usage_error(a + " needs a value" +
-                           (a == "--background" ? " (a shell reads an unquoted '#' as a comment: '#ffffff')" : ""));
+        return usage_error(
+            a + " needs a value" +
+            (a == "--background" ? " (a shell reads an unquoted '#' as a comment: '#ffffff')" : ""));
       }
     } else if (a == "-o") {
       return usage_error("-o needs a file name");

@@ -38,10 +38,11 @@ void install_playground(httplib::Server& server) {
         return;
       }
     std::string names;
-    for (const auto& file : embedded::kExampleScenes) names += (names.empty() ? "" : ", ") + std::string(file.name);
+    for (const auto& file : embedded::kExampleScenes)
+      names += (names.empty() ? "" : ", ") + std::string(file.name);
     write_problem(res, problem(404, "not-found", "No such example",
-                               "there is no example \"" + req.matches[1].str() + "\"; the examples are " + names +
-                                   " (GET /examples lists them)"));
+                               "there is no example \"" + req.matches[1].str() + "\"; the examples are " +
+                                   names + " (GET /examples lists them)"));
   });
 }
 

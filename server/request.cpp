@@ -1,8 +1,8 @@
 #include "request.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -23,7 +23,8 @@ constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 // such junction marks the body, however short (a one-face model is 30 bytes).
 bool looks_like_flattened_obj(std::string_view body) {
   if (body.find('\n') != std::string_view::npos) return false;
-  static constexpr std::string_view kStatements[] = {"v ", "vt ", "vn ", "f ", "l ", "o ", "g ", "s ", "usemtl "};
+  static constexpr std::string_view kStatements[] = {"v ", "vt ", "vn ", "f ",     "l ",
+                                                     "o ", "g ",  "s ",  "usemtl "};
   for (std::size_t i = 1; i < body.size(); ++i) {
     const char before = body[i - 1];
     if (!((before >= '0' && before <= '9') || before == '.')) continue;
@@ -52,13 +53,15 @@ std::string colour_param(const std::string& value) {
               "is empty; a URL ends at '#', so a colour arrives empty unless its '#' is written %23 "
               "(?background=%23ffffff) or left out (?background=ffffff)");
   const bool bare_hex = (value.size() == 3 || value.size() == 4 || value.size() == 6 || value.size() == 8) &&
-                        std::all_of(value.begin(), value.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+                        std::all_of(value.begin(), value.end(),
+                                    [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
   return bare_hex ? "#" + value : value;
 }
 
 // The query parameter a field of the default scene comes from ("/camera/fov/..." -> "fov"), or "".
 std::string param_of_pointer(const std::string& pointer, const Params& params) {
-  std::string name = pointer.starts_with("/camera/") ? pointer.substr(8) : pointer.substr(pointer.empty() ? 0 : 1);
+  std::string name =
+      pointer.starts_with("/camera/") ? pointer.substr(8) : pointer.substr(pointer.empty() ? 0 : 1);
   name = name.substr(0, name.find('/'));
   return params.contains(name) ? name : "";
 }
@@ -141,7 +144,8 @@ bool explain_requested(const Params& params) {
   const auto it = params.find("explain");
   if (it == params.end()) return false;
   std::string v = it->second;
-  std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(v.begin(), v.end(), v.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (v.empty() || v == "1" || v == "true" || v == "yes" || v == "on") return true;  // a bare ?explain too
   if (v == "0" || v == "false" || v == "no" || v == "off") return false;
   bad_param("explain", "expected 1, true, yes or on (or 0, false, no, off), got \"" + it->second + "\"");
@@ -188,7 +192,8 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
     return {};
   }
   std::string names;
-  for (const PartName& p : parts) names += (names.empty() ? "\"" : ", \"") + p.part + "\"" + (p.key != p.part ? " (" + p.key + ")" : "");
+  for (const PartName& p : parts)
+    names += (names.empty() ? "\"" : ", \"") + p.part + "\"" + (p.key != p.part ? " (" + p.key + ")" : "");
   return "the upload has the parts " + names + " but none is named \"scene\" or \"model\"" +
          (candidates.empty() ? "" : " and more than one could be") +
          "; send the model as -F model=@model.obj or the scene as -F scene=@scene.json";
@@ -209,15 +214,19 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {
       if (name == "explain") continue;
-      const bool model_param = std::find(std::begin(kModelParams), std::end(kModelParams), name) != std::end(kModelParams);
-      bad_param(name, model_param ? "shapes the default scene of a bare model; this body is a scene, which sets "
-                                    "\"" + name + "\" (or its camera) in its JSON"
-                                  : "unknown; a scene takes only: explain");
+      const bool model_param =
+          std::find(std::begin(kModelParams), std::end(kModelParams), name) != std::end(kModelParams);
+      bad_param(name, model_param
+                          ? "shapes the default scene of a bare model; this body is a scene, which sets "
+                            "\"" +
+                                name + "\" (or its camera) in its JSON"
+                          : "unknown; a scene takes only: explain");
     }
     if (declared_json && !is_scene_text(body) && starts_like_obj(body))
-      throw raster::SceneError(raster::ErrorKind::syntax,
-                               "the Content-Type says JSON, but the body looks like an OBJ model; send a model "
-                               "as model/obj, or with curl --data-binary and no Content-Type of its own");
+      throw raster::SceneError(
+          raster::ErrorKind::syntax,
+          "the Content-Type says JSON, but the body looks like an OBJ model; send a model "
+          "as model/obj, or with curl --data-binary and no Content-Type of its own");
     return raster::parse_scene(body, limits, uploads);
   }
   if (looks_like_flattened_obj(body))

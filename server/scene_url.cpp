@@ -89,12 +89,14 @@ std::string inflate_text(const std::string& compressed, std::size_t max_bytes, i
     if (rc == Z_MEM_ERROR) throw std::bad_alloc();
     if (rc == Z_DATA_ERROR || rc == Z_NEED_DICT)
       bad("the decoded bytes do not start with '{' (plain JSON) and are not a deflate stream, raw or "
-          "zlib-wrapped (read as " + std::string(reading) + ": " + (zs.msg ? zs.msg : "invalid data") + ")");
+          "zlib-wrapped (read as " +
+          std::string(reading) + ": " + (zs.msg ? zs.msg : "invalid data") + ")");
     if (rc == Z_BUF_ERROR || (zs.avail_in == 0 && produced == 0))
       bad("the deflate stream (read as " + std::string(reading) + ") ends early (truncated URL?)");
   }
   if (zs.avail_in != 0)
-    bad(std::to_string(zs.avail_in) + " bytes follow the end of the deflate stream (read as " + reading + ")");
+    bad(std::to_string(zs.avail_in) + " bytes follow the end of the deflate stream (read as " + reading +
+        ")");
   return out;
 }
 

@@ -10,8 +10,8 @@
 #include <cstdlib>
 #include <exception>
 #include <map>
-#include <set>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "api.h"
@@ -39,7 +39,7 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
 class Admission {
  public:
   struct Verdict {
-    const char* refused = nullptr;    ///< nullptr: admitted; else the metrics reason of the refusal
+    const char* refused = nullptr;     ///< nullptr: admitted; else the metrics reason of the refusal
     std::chrono::milliseconds wait{};  ///< the expected wait when refused (for Retry-After)
   };
 
@@ -180,8 +180,8 @@ const std::set<std::string> kServedMethods = {"GET", "HEAD", "POST", "OPTIONS"};
 
 // A bounded set of labels: every route by its pattern, anything else "other".
 std::string route_label(const std::string& path) {
-  for (const char* route : {"/render", "/healthz", "/metrics", "/schema/scene.json", "/openapi.json", "/",
-                            "/examples"})
+  for (const char* route :
+       {"/render", "/healthz", "/metrics", "/schema/scene.json", "/openapi.json", "/", "/examples"})
     if (path == route) return path;
   if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos) return "/examples/{name}";
   return "other";
@@ -222,7 +222,8 @@ struct Service::State {
     if (!any) res.set_header("Vary", "Origin");
     if (!any && std::find(allowed.begin(), allowed.end(), origin) == allowed.end()) return;
     res.set_header("Access-Control-Allow-Origin", any ? "*" : origin);
-    res.set_header("Access-Control-Expose-Headers", "ETag, Retry-After, Server-Timing, X-Render-Plan, X-Request-Id");
+    res.set_header("Access-Control-Expose-Headers",
+                   "ETag, Retry-After, Server-Timing, X-Render-Plan, X-Request-Id");
     res.set_header("Timing-Allow-Origin", any ? "*" : origin);
   }
 
@@ -343,9 +344,10 @@ struct Service::State {
     std::string body;
     raster::Uploads uploads;
     if (!read_body(req, res, reader, body, uploads)) return;
-    const bool declared_json = !req.is_multipart_form_data() && is_json_media_type(req.get_header_value("Content-Type"));
-    render(req, res, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()),
-           false, declared_json);
+    const bool declared_json =
+        !req.is_multipart_form_data() && is_json_media_type(req.get_header_value("Content-Type"));
+    render(req, res, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()), false,
+           declared_json);
   }
 
   // GET /render?scene=...: the scene is in the URL, so the answer can be cached by URL.
@@ -384,13 +386,14 @@ struct Service::State {
       const auto seconds = std::max<std::int64_t>(1, (verdict.wait.count() + 999) / 1000);
       res.set_header("Retry-After", std::to_string(seconds));
       const bool timed_out = std::string_view(verdict.refused) == "queue_timeout";
-      refuse(res,
-             problem(503, "overloaded", "All render workers are busy",
-                     timed_out ? "no worker was free within " + std::to_string(config.max_queue_wait.count()) +
-                                     " ms; try again in " + std::to_string(seconds) + " s"
-                               : "the wait for a worker would be about " + std::to_string(verdict.wait.count()) +
-                                     " ms; try again in " + std::to_string(seconds) + " s"),
-             verdict.refused);
+      refuse(
+          res,
+          problem(503, "overloaded", "All render workers are busy",
+                  timed_out ? "no worker was free within " + std::to_string(config.max_queue_wait.count()) +
+                                  " ms; try again in " + std::to_string(seconds) + " s"
+                            : "the wait for a worker would be about " + std::to_string(verdict.wait.count()) +
+                                  " ms; try again in " + std::to_string(seconds) + " s"),
+          verdict.refused);
       return;
     }
     const Clock::time_point admitted = Clock::now();
@@ -520,7 +523,8 @@ void Service::install(httplib::Server& server) {
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
-  // CORS preflight (a page's POST of JSON, or a GET with If-None-Match): which methods and request headers a page on an allowed origin may use.
+  // CORS preflight (a page's POST of JSON, or a GET with If-None-Match): which methods and request headers a
+  // page on an allowed origin may use.
   server.Options("/render", [](const httplib::Request&, httplib::Response& res) {
     res.status = 204;
     res.set_header("Allow", "GET, HEAD, POST, OPTIONS");
@@ -628,7 +632,8 @@ constexpr Flag kFlags[] = {
     {"max-queue-wait-ms",
      "a render waits only if its expected wait is within this, and at most this long (default 2000)"},
     {"max-queued-bytes", "request bytes held by waiting renders, 503 beyond (default 268435456 = 256 MiB)"},
-    {"cors-origins", "origins whose pages may read answers, comma-separated; * = any (default), none = no CORS"},
+    {"cors-origins",
+     "origins whose pages may read answers, comma-separated; * = any (default), none = no CORS"},
     {"render-threads", "band threads per render (default: core count)"},
     {"shutdown-grace-ms", "after SIGTERM/SIGINT, time for running and queued renders (default 20000)"},
     {"cache-max-age",

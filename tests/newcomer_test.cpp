@@ -79,8 +79,8 @@ TEST(Newcomer, ASecondServerOnATakenPortFails) {
   service.install(server);
   EXPECT_FALSE(server.bind_to_port("127.0.0.1", first.port())) << "bound a port another server listens on";
   // The CLI says so and exits 1 (`timeout` only keeps a regression from serving forever).
-  const auto [status, out] = run("timeout 20 " RASTERD_BINARY " serve --host 127.0.0.1 --port " +
-                                 std::to_string(first.port()));
+  const auto [status, out] =
+      run("timeout 20 " RASTERD_BINARY " serve --host 127.0.0.1 --port " + std::to_string(first.port()));
   EXPECT_EQ(status, 1) << out;
   EXPECT_NE(out.find("Address already in use"), std::string::npos) << out;
 }
@@ -88,7 +88,8 @@ TEST(Newcomer, ASecondServerOnATakenPortFails) {
 // 2. Every tag carries the render version, and `rasterd --version` names it.
 TEST(Newcomer, TagsAndVersionNameTheRenderVersion) {
   const raster::Scene scene = raster::parse_scene(kScene);
-  EXPECT_NE(rasterd::scene_etag(scene, raster::kRenderVersion), rasterd::scene_etag(scene, raster::kRenderVersion + 1));
+  EXPECT_NE(rasterd::scene_etag(scene, raster::kRenderVersion),
+            rasterd::scene_etag(scene, raster::kRenderVersion + 1));
   EXPECT_EQ(rasterd::scene_etag(scene), rasterd::scene_etag(scene, raster::kRenderVersion));
   const auto [status, out] = run(RASTERD_BINARY " --version");
   EXPECT_EQ(status, 0);
@@ -109,11 +110,11 @@ TEST(Newcomer, APostWithoutABodyIsA400) {
 // 4. JSON is JSON by its Content-Type or its first byte ('{' or '['), after a byte order mark.
 TEST(Newcomer, JsonIsReadAsJsonWhateverItHolds) {
   TestServer server;
-  for (const auto& [body, type] : std::vector<std::pair<std::string, std::string>>{
-           {"[1, 2]", "application/x-www-form-urlencoded"},
-           {"null", "application/json"},
-           {"42", "application/json; charset=utf-8"},
-           {"\"text\"", "application/vnd.rasterd.scene+json"}}) {
+  for (const auto& [body, type] :
+       std::vector<std::pair<std::string, std::string>>{{"[1, 2]", "application/x-www-form-urlencoded"},
+                                                        {"null", "application/json"},
+                                                        {"42", "application/json; charset=utf-8"},
+                                                        {"\"text\"", "application/vnd.rasterd.scene+json"}}) {
     auto r = server.client().Post("/render", body, type);
     ASSERT_TRUE(r);
     EXPECT_EQ(r->status, 400) << body;
@@ -136,7 +137,8 @@ TEST(Newcomer, ALonePartIsTheBodyWhateverItsName) {
   TestServer server;
   auto model = server.client().Post("/render", kObj, "model/obj");
   auto file = server.client().Post("/render", httplib::MultipartFormDataItems{{"file", kObj, "tri.obj", ""}});
-  auto scene = server.client().Post("/render", httplib::MultipartFormDataItems{{"upload", kScene, "s.json", ""}});
+  auto scene =
+      server.client().Post("/render", httplib::MultipartFormDataItems{{"upload", kScene, "s.json", ""}});
   auto posted = server.client().Post("/render", kScene, "application/json");
   ASSERT_TRUE(model && file && scene && posted);
   EXPECT_EQ(file->status, 200) << file->body;
@@ -174,9 +176,11 @@ TEST(Newcomer, QueryParametersAreCheckedForScenesToo) {
     auto r = server.client().Post(std::string("/render") + query, kScene, "application/json");
     ASSERT_TRUE(r);
     EXPECT_EQ(r->status, 400) << query;
-    EXPECT_NE(problem_of(r)["detail"].get<std::string>().find("query parameter"), std::string::npos) << r->body;
+    EXPECT_NE(problem_of(r)["detail"].get<std::string>().find("query parameter"), std::string::npos)
+        << r->body;
   }
-  for (const char* query : {"?explain", "?explain=", "?explain=1", "?explain=true", "?explain=Yes", "?explain=on"}) {
+  for (const char* query :
+       {"?explain", "?explain=", "?explain=1", "?explain=true", "?explain=Yes", "?explain=on"}) {
     auto r = server.client().Post(std::string("/render") + query, kScene, "application/json");
     ASSERT_TRUE(r);
     EXPECT_EQ(r->get_header_value("Content-Type"), "application/json") << query;
@@ -248,7 +252,8 @@ TEST(Newcomer, HexIsSuggestedOnlyForByteComponents) {
   };
   EXPECT_EQ(detail("[1, 1, 2]").find("did you mean"), std::string::npos) << detail("[1, 1, 2]");
   EXPECT_EQ(detail("[1, 0, 0, 255]").find("did you mean"), std::string::npos) << detail("[1, 0, 0, 255]");
-  EXPECT_NE(detail("[255, 128, 0]").find("did you mean \"#ff8000\"?"), std::string::npos) << detail("[255, 128, 0]");
+  EXPECT_NE(detail("[255, 128, 0]").find("did you mean \"#ff8000\"?"), std::string::npos)
+      << detail("[255, 128, 0]");
 }
 
 // 11. "$schema" and "$comment" at the top of a scene are what editors write; they draw nothing.
@@ -308,7 +313,8 @@ TEST(Newcomer, PagesOnOtherOriginsMayReadAnswers) {
   EXPECT_EQ(preflight->status, 204);
   EXPECT_EQ(preflight->get_header_value("Access-Control-Allow-Origin"), "*");
   EXPECT_NE(preflight->get_header_value("Access-Control-Allow-Methods").find("POST"), std::string::npos);
-  EXPECT_NE(preflight->get_header_value("Access-Control-Allow-Headers").find("Content-Type"), std::string::npos);
+  EXPECT_NE(preflight->get_header_value("Access-Control-Allow-Headers").find("Content-Type"),
+            std::string::npos);
   auto image = server.client().Post("/render", origin, kScene, "application/json");
   auto error = server.client().Post("/render", origin, "{", "application/json");
   ASSERT_TRUE(image && error);
@@ -321,7 +327,8 @@ TEST(Newcomer, PagesOnOtherOriginsMayReadAnswers) {
   config.cors_origins = {"https://pages.example"};
   TestServer listed(config);
   auto allowed = listed.client().Post("/render", origin, kScene, "application/json");
-  auto other = listed.client().Post("/render", {{"Origin", "https://elsewhere.example"}}, kScene, "application/json");
+  auto other =
+      listed.client().Post("/render", {{"Origin", "https://elsewhere.example"}}, kScene, "application/json");
   ASSERT_TRUE(allowed && other);
   EXPECT_EQ(allowed->get_header_value("Access-Control-Allow-Origin"), "https://pages.example");
   EXPECT_EQ(allowed->get_header_value("Vary"), "Origin");
@@ -361,11 +368,16 @@ TEST(Newcomer, SmallThingsAreRight) {
 
   ASSERT_TRUE(server.client().Get("/"));
   ASSERT_TRUE(server.client().Get("/examples"));
-  auto metrics = server.client().Get("/metrics");
-  ASSERT_TRUE(metrics);
-  for (const char* label : {"route=\"/\",status=\"200\"", "route=\"/examples\",status=\"200\"",
-                            "route=\"/examples/{name}\",status=\"404\""})
-    EXPECT_NE(metrics->body.find(label), std::string::npos) << label << " in\n" << metrics->body;
+  // A request is counted by the logger, which runs after its answer is sent: wait for the count.
+  std::string metrics;
+  EXPECT_TRUE(eventually([&] {
+    const auto m = server.client().Get("/metrics");
+    metrics = m ? m->body : "";
+    for (const char* label : {"route=\"/\",status=\"200\"", "route=\"/examples\",status=\"200\"",
+                              "route=\"/examples/{name}\",status=\"404\""})
+      if (metrics.find(label) == std::string::npos) return false;
+    return true;
+  })) << metrics;
 }
 
 // What people type next: a method no route has, a model sent as JSON, a query value the scene refuses.
@@ -381,7 +393,8 @@ TEST(Newcomer, MoreMistakesGetSpecificAnswers) {
   ASSERT_TRUE(model_as_json);
   EXPECT_EQ(model_as_json->status, 400);
   EXPECT_NE(problem_of(model_as_json)["detail"].get<std::string>().find("looks like an OBJ model"),
-            std::string::npos) << model_as_json->body;
+            std::string::npos)
+      << model_as_json->body;
 
   // A value the default scene refuses names its query parameter; its pointer is the root, as for every
   // query parameter (the client sent no document of its own).
@@ -395,7 +408,8 @@ TEST(Newcomer, MoreMistakesGetSpecificAnswers) {
     EXPECT_EQ(p["pointer"], "") << r->body;
   }
   auto zero = server.client().Post("/render?width=0", kObj, "model/obj");
-  EXPECT_TRUE(problem_of(zero)["detail"].get<std::string>().ends_with("got 0")) << "quoted as sent: " << zero->body;
+  EXPECT_TRUE(problem_of(zero)["detail"].get<std::string>().ends_with("got 0"))
+      << "quoted as sent: " << zero->body;
 }
 
 // 17. A burst of requests waits for the workers instead of being refused; refusals come from the wait
@@ -434,7 +448,8 @@ TEST(Newcomer, TheQueueRefusesPastItsMemoryAndItsWait) {
   config.after_admission = [&gate] { gate.wait(); };
   TestServer server(config);
   auto post = [&] {
-    return std::async(std::launch::async, [&] { return server.client().Post("/render", kScene, "application/json"); });
+    return std::async(std::launch::async,
+                      [&] { return server.client().Post("/render", kScene, "application/json"); });
   };
   auto running = post();
   auto waiting = post();
@@ -459,7 +474,8 @@ TEST(Newcomer, TheQueueRefusesPastItsMemoryAndItsWait) {
   config.max_queue_wait = std::chrono::milliseconds(0);
   config.after_admission = [&held] { held.wait(); };
   TestServer strict(config);
-  auto first = std::async(std::launch::async, [&] { return strict.client().Post("/render", kScene, "application/json"); });
+  auto first = std::async(std::launch::async,
+                          [&] { return strict.client().Post("/render", kScene, "application/json"); });
   ASSERT_TRUE(eventually([&] {
     const auto m = strict.client().Get("/metrics");
     return m && metric(m->body, "rasterd_renders_in_flight") == 1;

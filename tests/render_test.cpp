@@ -165,9 +165,9 @@ TEST(Render, BlendingOntoTransparentKeepsStraightAlpha) {
 // Regenerate the hashes only after looking at the new pictures (examples/README.md says how), and raise
 // the render version with them (the next test).
 struct Golden {
-  const char* name;         // examples/<name>
-  std::uint64_t pixels;     // test::image_hash of the render
-  std::uint64_t png;        // FNV-1a of the PNG that raster::encode_png makes of it
+  const char* name;      // examples/<name>
+  std::uint64_t pixels;  // test::image_hash of the render
+  std::uint64_t png;     // FNV-1a of the PNG that raster::encode_png makes of it
 };
 const Golden kGoldens[] = {
 #include "golden_hashes.inc"
@@ -210,12 +210,15 @@ TEST(Render, GoldensBelongToTheRenderVersion) {
   for (std::size_t i = 0; i < std::size(versions); ++i) {
     EXPECT_EQ(versions[i].first, static_cast<int>(i) + 1) << "versions are numbered 1, 2, 3, ...";
     for (std::size_t j = 0; j < i; ++j)
-      EXPECT_NE(versions[i].second, versions[j].second) << "versions " << j + 1 << " and " << i + 1 << " draw the same";
+      EXPECT_NE(versions[i].second, versions[j].second)
+          << "versions " << j + 1 << " and " << i + 1 << " draw the same";
   }
   const auto& [version, expected] = versions[std::size(versions) - 1];
-  EXPECT_EQ(version, raster::kRenderVersion) << "the last row of tests/render_versions.inc is raster::kRenderVersion";
+  EXPECT_EQ(version, raster::kRenderVersion)
+      << "the last row of tests/render_versions.inc is raster::kRenderVersion";
   EXPECT_EQ(digest, expected) << "the golden images changed but raster::kRenderVersion did not: raise it to "
-                              << raster::kRenderVersion + 1 << " (renderer/include/raster/version.h) and append {"
+                              << raster::kRenderVersion + 1
+                              << " (renderer/include/raster/version.h) and append {"
                               << raster::kRenderVersion + 1 << ", 0x" << std::hex << digest
                               << "ull} to tests/render_versions.inc";
 }

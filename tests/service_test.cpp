@@ -22,8 +22,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support.h"
 #include "service_support.h"
+#include "support.h"
 #include "test_server.h"
 
 extern char** environ;
@@ -292,9 +292,19 @@ TEST(Service, SigtermLetsAcceptedRendersFinish) {
   // each other's requests: the one way found for ImageUrl.GetEqualsPostForEveryExample, which ran beside
   // this test, to get answers from a server other than its own.)
   // Queued renders wait for the gate, not for the clock: the wait bound is far beyond any machine's pace.
-  const char* argv[] = {RASTERD_BINARY, "serve",   "--host",           "127.0.0.1", "--port", "0",
-                        "--workers",    "1",       "--render-threads", "1",         "--max-queue-wait-ms",
-                        "600000",       nullptr};
+  const char* argv[] = {RASTERD_BINARY,
+                        "serve",
+                        "--host",
+                        "127.0.0.1",
+                        "--port",
+                        "0",
+                        "--workers",
+                        "1",
+                        "--render-threads",
+                        "1",
+                        "--max-queue-wait-ms",
+                        "600000",
+                        nullptr};
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);

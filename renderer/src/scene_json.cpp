@@ -969,10 +969,10 @@ class BoundedDomBuilder {
   // An open object or array, for the pointer of a repeated key.
   struct Frame {
     bool object = false;
-    std::size_t elements = 0;               // an array's elements so far: the current one is elements - 1
-    std::string key;                        // an object's current key
-    std::vector<std::string> keys;          // an object's keys so far, while it has few
-    std::unordered_set<std::string> many;   // all of them, once there are many (no quadratic search)
+    std::size_t elements = 0;              // an array's elements so far: the current one is elements - 1
+    std::string key;                       // an object's current key
+    std::vector<std::string> keys;         // an object's keys so far, while it has few
+    std::unordered_set<std::string> many;  // all of them, once there are many (no quadratic search)
 
     bool add_key(const std::string& k) {
       if (!many.empty()) return many.insert(k).second;
@@ -1005,7 +1005,8 @@ class BoundedDomBuilder {
     };
     std::string pointer;
     for (std::size_t i = 0; i + 1 < frames_.size(); ++i)
-      pointer += "/" + (frames_[i].object ? escaped(frames_[i].key) : std::to_string(frames_[i].elements - 1));
+      pointer +=
+          "/" + (frames_[i].object ? escaped(frames_[i].key) : std::to_string(frames_[i].elements - 1));
     return pointer + "/" + escaped(last_key);
   }
 
@@ -1029,8 +1030,8 @@ json parse_document(std::string_view text, int max_depth) {
 void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
   if (!doc.is_object()) invalid(kRoot, std::string("a scene is a JSON object, got ") + type_name(doc));
   check_keys(doc, kRoot,
-             {"width", "height", "background", "antialias", "primitives", "camera", "light", "lights", "$schema",
-              "$comment"});
+             {"width", "height", "background", "antialias", "primitives", "camera", "light", "lights",
+              "$schema", "$comment"});
   // What editors and JSON Schema give a document: the schema it follows, and a note. Neither draws.
   for (const char* key : {"$schema", "$comment"})
     if (auto it = doc.find(key); it != doc.end() && !it->is_string())
