@@ -19,15 +19,14 @@ local requests = {
           model .. "\r\n--" .. boundary .. "--\r\n",
    type = "multipart/form-data; boundary=" .. boundary},
 }
-local counter = 0
-local statuses = {}
 local threads = {}
 
 function setup(thread)
   table.insert(threads, thread)
 end
 
-function init()
+function init(args)
+  counter = 0    -- globals: done() reads them from each thread's state
   statuses = {}
 end
 
