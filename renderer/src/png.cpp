@@ -13,9 +13,11 @@
 #include <algorithm>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <isa-l/crc.h>
 #include <isa-l/igzip_lib.h>
@@ -24,12 +26,16 @@ namespace raster {
 namespace {
 
 // igzip's state for one level: the stream (large: it holds the history window) and the level's hash
-// buffer. One per thread and level, kept: setting one up costs more than compressing a small image. A
-// cache, not a setting: every call names its level.
+// buffer, 360 KB together at level 1. Setting one up costs more than compressing a small image, so they are
+// kept for reuse: a cache, not a setting (every call names its level). Kept in a pool rather than per
+// thread: a service encodes on whichever of its many connection threads serves the request, so per-thread
+// state would be set up once per thread (a first request on each of rasterd's hundreds of threads paid it)
+// and held by every thread; the pool holds as many as ever encode at once, each warm for the next.
 struct Deflater {
   isal_zstream stream;
   std::unique_ptr<std::uint8_t[]> level_buffer;
   std::uint32_t level_buffer_size = 0;
+  int level = 0;
 };
 
 std::uint32_t level_buffer_size(int level) {
@@ -45,20 +51,39 @@ std::uint32_t level_buffer_size(int level) {
   }
 }
 
-Deflater& deflater_for(int level) {
-  struct Cache {
-    int level = -1;
-    std::unique_ptr<Deflater> d;
-  };
-  thread_local Cache cache;
-  if (cache.level != level || !cache.d) {
+class DeflaterPool {
+ public:
+  std::unique_ptr<Deflater> take(int level) {
+    {
+      std::lock_guard lock(mutex_);
+      auto& spare = spare_[level];
+      if (!spare.empty()) {
+        std::unique_ptr<Deflater> d = std::move(spare.back());
+        spare.pop_back();
+        return d;
+      }
+    }
     auto d = std::make_unique<Deflater>();
+    d->level = level;
     d->level_buffer_size = level_buffer_size(level);
     if (d->level_buffer_size) d->level_buffer = std::make_unique<std::uint8_t[]>(d->level_buffer_size);
-    cache.d = std::move(d);
-    cache.level = level;
+    return d;
   }
-  return *cache.d;
+  void give(std::unique_ptr<Deflater> d) {
+    std::lock_guard lock(mutex_);
+    auto& spare = spare_[d->level];
+    if (spare.size() < kMaxSpare) spare.push_back(std::move(d));  // else freed: more than ever ran at once
+  }
+
+ private:
+  static constexpr std::size_t kMaxSpare = 64;  // per level: far above any machine's encodes at once
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Deflater>> spare_[4];
+};
+
+DeflaterPool& deflaters() {
+  static DeflaterPool pool;  // process-wide by nature: reusable memory, no behaviour
+  return pool;
 }
 
 // zlib stream (header, deflate, Adler-32) of `in` at igzip `level` (0..3) into a buffer that grows only if
@@ -66,7 +91,11 @@ Deflater& deflater_for(int level) {
 std::pair<std::unique_ptr<std::uint8_t[]>, std::size_t> zlib_compress(const std::vector<std::uint8_t>& in,
                                                                       int level) {
   level = std::clamp(level, 0, 3);  // igzip's levels
-  Deflater& d = deflater_for(level);
+  struct Lease {
+    std::unique_ptr<Deflater> d;
+    ~Lease() { deflaters().give(std::move(d)); }
+  } lease{deflaters().take(level)};
+  Deflater& d = *lease.d;
   isal_zstream& s = d.stream;
   isal_deflate_init(&s);
   s.level = static_cast<std::uint32_t>(level);
