@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "api.h"
+#include "connection_threads.h"
 #include "etag.h"
 #include "playground.h"
 #include "problem.h"
@@ -492,7 +493,7 @@ void Service::install(httplib::Server& server) {
   // Connection threads: every admitted or queued render holds one, slow bodies hold one while they
   // arrive, and health and metrics must still find one free.
   const std::size_t threads = static_cast<std::size_t>(s.config.workers + s.config.max_queue) + 16;
-  server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
+  server.new_task_queue = [threads] { return new ConnectionThreads(threads); };
   // One request per connection. After a 408 a kept-alive connection goes on reading whatever the client
   // still drips as its next request line, holding a thread for as long as the client likes; cpp-httplib
   // 0.11 decides keep-alive from the request, before routing, so a handler cannot close its own

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "connection_threads.h"
 #include "etag.h"
 #include "raster/raster.h"
 #include "service_support.h"
@@ -486,6 +488,59 @@ TEST(Newcomer, TheQueueRefusesPastItsMemoryAndItsWait) {
   EXPECT_EQ(late->get_header_value("Retry-After"), "1");
   held.open();
   EXPECT_EQ(first.get()->status, 200);
+}
+
+}  // namespace
+
+namespace {
+
+// The connection threads behind every test above: made on demand, the last idle one reused, bounded.
+// Jobs are held on gates, so no verdict depends on the machine's pace.
+TEST(ConnectionThreads, MadeOnDemandReusedLastIdleFirstAndBounded) {
+  rasterd::ConnectionThreads pool(2);
+  EXPECT_EQ(pool.thread_count(), 0u) << "no thread before the first connection";
+  std::mutex mutex;
+  std::vector<std::thread::id> ran;
+  auto record = [&] {
+    std::lock_guard lock(mutex);
+    ran.push_back(std::this_thread::get_id());
+  };
+  pool.enqueue(record);
+  ASSERT_TRUE(eventually([&] { return pool.idle_count() == 1; }));
+  pool.enqueue(record);
+  ASSERT_TRUE(eventually([&] { return pool.idle_count() == 1; }));
+  EXPECT_EQ(pool.thread_count(), 1u) << "one connection at a time needs one thread";
+  ASSERT_EQ(ran.size(), 2u);
+  EXPECT_EQ(ran[0], ran[1]);
+
+  // Two held at once make the second thread; a third waits for whichever finishes first.
+  Gate first, second;
+  std::atomic<int> third_ran{0};
+  pool.enqueue([&] { first.wait(), record(); });
+  pool.enqueue([&] { second.wait(), record(); });
+  pool.enqueue([&] { ++third_ran; });
+  EXPECT_EQ(pool.thread_count(), 2u) << "bounded at 2";
+  EXPECT_EQ(third_ran.load(), 0);
+  first.open();
+  ASSERT_TRUE(eventually([&] { return third_ran.load() == 1 && pool.idle_count() == 1; }));
+  second.open();
+  ASSERT_TRUE(eventually([&] { return pool.idle_count() == 2; }));
+  // The thread that finished last takes the next connection.
+  const std::thread::id last = ran.back();
+  pool.enqueue(record);
+  ASSERT_TRUE(eventually([&] { return pool.idle_count() == 2 && ran.size() == 5; }));
+  EXPECT_EQ(ran.back(), last);
+
+  // Shutdown runs what is queued before the threads end.
+  Gate hold_a, hold_b;
+  std::atomic<int> queued_ran{0};
+  pool.enqueue([&] { hold_a.wait(); });
+  pool.enqueue([&] { hold_b.wait(); });
+  pool.enqueue([&] { ++queued_ran; });
+  std::thread stopper([&] { pool.shutdown(); });
+  hold_a.open(), hold_b.open();
+  stopper.join();
+  EXPECT_EQ(queued_ran.load(), 1);
 }
 
 }  // namespace
