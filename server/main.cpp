@@ -141,21 +141,24 @@ int run_render(const std::vector<std::string>& args) {
     raster::Scene scene =
         rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{});
     const raster::RenderPlan plan = raster::plan(scene);
-    std::string bytes;
+    // The plan or the PNG, written where -o says (the PNG is not copied: it can be tens of MB).
+    std::string plan_text;
+    std::vector<std::uint8_t> png;
     if (explain) {
-      bytes = raster::explain_json(plan) + "\n";
+      plan_text = raster::explain_json(plan) + "\n";
     } else {
       raster::Image image = raster::render(scene, plan);
       scene = {};  // as the server does: the scene's memory goes before the PNG's comes
-      const std::vector<std::uint8_t> png = raster::encode_png(std::move(image), plan.png);
-      bytes.assign(png.begin(), png.end());
+      png = raster::encode_png(std::move(image), plan.png);
     }
+    const char* data = explain ? plan_text.data() : reinterpret_cast<const char*>(png.data());
+    const auto size = static_cast<std::streamsize>(explain ? plan_text.size() : png.size());
     if (output == "-") {
-      std::cout.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      std::cout.write(data, size);
       return std::cout.flush() ? 0 : 1;
     }
     std::ofstream out(output, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.write(data, size);
     if (!out.flush()) {
       std::cerr << "rasterd: cannot write " << output << "\n";
       return 1;
