@@ -177,7 +177,15 @@ std::string next_request_id() {
   return buf;
 }
 
-const std::set<std::string> kServedMethods = {"GET", "HEAD", "POST", "OPTIONS"};
+// The methods each route answers ("" for a path no route has): a request with another method gets a 405
+// that names them, where cpp-httplib would answer 404 or 400.
+std::string allowed_methods(const std::string& path) {
+  if (path == "/render") return "GET, HEAD, POST, OPTIONS";
+  for (const char* route : {"/healthz", "/metrics", "/schema/scene.json", "/openapi.json", "/", "/examples"})
+    if (path == route) return "GET, HEAD";
+  if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos) return "GET, HEAD";
+  return "";
+}
 
 // A bounded set of labels: every route by its pattern, anything else "other".
 std::string route_label(const std::string& path) {
@@ -567,12 +575,12 @@ void Service::install(httplib::Server& server) {
           write_problem(res, problem(414, "uri-too-long", "The request URI is too long",
                                      "a request line is at most 8192 bytes; POST the scene to /render "
                                      "instead of putting it in the URL"));
-        } else if (res.status == 405 || !kServedMethods.contains(req.method)) {
-          // cpp-httplib answers a method no route has with 404 or 400; every route here is GET, HEAD, POST
-          // or OPTIONS, so the method is what is wrong.
-          res.set_header("Allow", "GET, HEAD, POST, OPTIONS");
+        } else if (const std::string allowed = allowed_methods(req.path);
+                   !allowed.empty() && (", " + allowed + ",").find(", " + req.method + ",") == std::string::npos) {
+          // The route exists but not with this method (cpp-httplib says 404 or 400 here).
+          res.set_header("Allow", allowed);
           write_problem(res, problem(405, "method-not-allowed", "Method not allowed",
-                                     detail + ": rasterd answers GET, HEAD, POST and OPTIONS"));
+                                     detail + ": " + req.path + " answers " + allowed));
         } else if (res.status == 404) {
           write_problem(res, problem(404, "not-found", "No such route",
                                      detail + " (the routes are described at GET /openapi.json)"));

@@ -390,6 +390,13 @@ TEST(Newcomer, MoreMistakesGetSpecificAnswers) {
   EXPECT_EQ(put->status, 405);
   EXPECT_EQ(put->get_header_value("Allow"), "GET, HEAD, POST, OPTIONS");
   EXPECT_EQ(problem_of(put)["type"], "urn:rasterd:problem:method-not-allowed");
+  auto post_health = server.client().Post("/healthz", "x", "text/plain");
+  ASSERT_TRUE(post_health);
+  EXPECT_EQ(post_health->status, 405);
+  EXPECT_EQ(post_health->get_header_value("Allow"), "GET, HEAD");
+  auto nowhere = server.client().Put("/nowhere", "x", "text/plain");
+  ASSERT_TRUE(nowhere);
+  EXPECT_EQ(nowhere->status, 404) << "no route at all: not found, whatever the method";
 
   auto model_as_json = server.client().Post("/render", kObj, "application/json");
   ASSERT_TRUE(model_as_json);
