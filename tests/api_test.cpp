@@ -1,6 +1,5 @@
 // Issue 16, parts 1 and 3, over real HTTP: the API documents, image URLs (GET /render?scene=), ETags,
 // conditional requests and Cache-Control.
-#include <zlib.h>
 
 #include <gtest/gtest.h>
 
@@ -13,50 +12,18 @@
 
 #include "etag.h"
 #include "scene_url.h"
+#include "scene_url_support.h"
 #include "support.h"
 #include "test_server.h"
 
 namespace {
 
+using test::base64url;
+using test::deflate;
 using test::TestServer;
 
-std::string base64url(const std::string& bytes, bool pad = false) {
-  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
-  std::string out;
-  std::size_t i = 0;
-  for (; i + 3 <= bytes.size(); i += 3) {
-    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 |
-                       static_cast<unsigned char>(bytes[i + 1]) << 8 |
-                       static_cast<unsigned char>(bytes[i + 2]);
-    for (int k = 18; k >= 0; k -= 6) out += alphabet[(v >> k) & 63];
-  }
-  if (const std::size_t rest = bytes.size() - i) {
-    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
-    if (rest == 2) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    out += alphabet[v >> 18], out += alphabet[(v >> 12) & 63];
-    if (rest == 2) out += alphabet[(v >> 6) & 63];
-    if (pad) out += rest == 1 ? "==" : "=";
-  }
-  return out;
-}
-
-// Raw deflate (no zlib header), as CompressionStream('deflate-raw') and zlib.compressobj(wbits=-15) make.
-std::string deflate_raw(const std::string& text, int level = 9) {
-  z_stream zs{};
-  EXPECT_EQ(deflateInit2(&zs, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY), Z_OK);
-  std::string out(deflateBound(&zs, text.size()), '\0');
-  zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-  zs.avail_in = static_cast<uInt>(text.size());
-  zs.next_out = reinterpret_cast<Bytef*>(out.data());
-  zs.avail_out = static_cast<uInt>(out.size());
-  EXPECT_EQ(deflate(&zs, Z_FINISH), Z_STREAM_END);
-  out.resize(zs.total_out);
-  deflateEnd(&zs);
-  return out;
-}
-
 std::string url_of(const std::string& scene, bool deflated = true) {
-  return "/render?scene=" + base64url(deflated ? deflate_raw(scene) : scene);
+  return "/render?scene=" + base64url(deflated ? deflate(scene) : scene);
 }
 
 // The value of the sample line `name value` in a Prometheus text body, -1 when absent.
@@ -147,7 +114,7 @@ TEST(ImageUrl, ObjModelsAndExplainWorkAsForPost) {
 
 TEST(ImageUrl, UndecodableScenesAre400s) {
   TestServer server;
-  const std::string deflated = deflate_raw(kScene);
+  const std::string deflated = deflate(kScene);
   const std::pair<std::string, std::string> cases[] = {
       {"/render", "missing-scene"},
       {"/render?scene=", "invalid-scene-url"},
@@ -158,7 +125,7 @@ TEST(ImageUrl, UndecodableScenesAre400s) {
       {"/render?scene=" + base64url(deflated.substr(0, deflated.size() / 2)), "invalid-scene-url"},  // cut
       {"/render?scene=" + base64url(deflated + "xyz"), "invalid-scene-url"},  // bytes after the stream
       {"/render?scene=" + base64url("{\"width\": 4,"), "malformed-scene"},    // plain JSON, broken
-      {"/render?scene=" + base64url(deflate_raw(R"({"width": 4, "height": 4, "colour": 1})")),
+      {"/render?scene=" + base64url(deflate(R"({"width": 4, "height": 4, "colour": 1})")),
        "invalid-scene"},
   };
   for (const auto& [url, type] : cases) {
@@ -196,12 +163,12 @@ TEST(ImageUrl, InflateBombIsA413) {
   }
   // The decoder's own cap, directly: the output never grows past it.
   try {
-    rasterd::decode_scene_param(base64url(deflate_raw(std::string(1000, 'a'))), 999);
+    rasterd::decode_scene_param(base64url(deflate(std::string(1000, 'a'))), 999);
     ADD_FAILURE() << "1000 bytes passed a 999-byte cap";
   } catch (const rasterd::SceneUrlError& e) {
     EXPECT_EQ(e.status(), 413);
   }
-  EXPECT_EQ(rasterd::decode_scene_param(base64url(deflate_raw(std::string(1000, 'a'))), 1000).size(), 1000u);
+  EXPECT_EQ(rasterd::decode_scene_param(base64url(deflate(std::string(1000, 'a'))), 1000).size(), 1000u);
 }
 
 // cpp-httplib itself answers a request line over 8192 bytes, before any route: the service's error

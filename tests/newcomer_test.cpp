@@ -1,7 +1,6 @@
 // Issue 28: the service as a newcomer finds it. Each test is one of the issue's points, through real HTTP
 // (or the CLI) as a person would meet it.
 #include <sys/wait.h>
-#include <zlib.h>
 
 #include <gtest/gtest.h>
 
@@ -19,12 +18,15 @@
 #include "connection_threads.h"
 #include "etag.h"
 #include "raster/raster.h"
+#include "scene_url_support.h"
 #include "service_support.h"
 #include "support.h"
 #include "test_server.h"
 
 namespace {
 
+using test::base64url;
+using test::deflate;
 using test::TestServer;
 
 const std::string kScene =
@@ -44,33 +46,6 @@ std::pair<int, std::string> run(const std::string& command) {
   while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
   const int status = ::pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-std::string compress(const std::string& text, int window_bits) {
-  z_stream zs{};
-  EXPECT_EQ(deflateInit2(&zs, 9, Z_DEFLATED, window_bits, 8, Z_DEFAULT_STRATEGY), Z_OK);
-  std::string out(deflateBound(&zs, text.size()) + 32, '\0');
-  zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-  zs.avail_in = static_cast<uInt>(text.size());
-  zs.next_out = reinterpret_cast<Bytef*>(out.data());
-  zs.avail_out = static_cast<uInt>(out.size());
-  EXPECT_EQ(deflate(&zs, Z_FINISH), Z_STREAM_END);
-  out.resize(zs.total_out);
-  deflateEnd(&zs);
-  return out;
-}
-
-std::string base64url(const std::string& bytes) {
-  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
-  std::string out;
-  unsigned bits = 0;
-  int count = 0;
-  for (unsigned char c : bytes) {
-    bits = bits << 8 | c, count += 8;
-    while (count >= 6) out += alphabet[(bits >> (count -= 6)) & 63];
-  }
-  if (count) out += alphabet[(bits << (6 - count)) & 63];
-  return out;
 }
 
 // 1. A second server on a taken port fails to bind, in the library and as `rasterd serve`.
@@ -276,17 +251,17 @@ TEST(Newcomer, SchemaAndCommentKeysAreAccepted) {
 // 12. ?scene= deflated as Kroki documents it (zlib-wrapped), raw, or gzip: the same picture.
 TEST(Newcomer, ImageUrlsTakeEveryDeflateWrapping) {
   TestServer server;
-  auto raw = server.client().Get("/render?scene=" + base64url(compress(kScene, -15)));
+  auto raw = server.client().Get("/render?scene=" + base64url(deflate(kScene, -15)));
   ASSERT_TRUE(raw);
   ASSERT_EQ(raw->status, 200) << raw->body;
   for (const int bits : {15, 31}) {
-    auto r = server.client().Get("/render?scene=" + base64url(compress(kScene, bits)));
+    auto r = server.client().Get("/render?scene=" + base64url(deflate(kScene, bits)));
     ASSERT_TRUE(r);
     EXPECT_EQ(r->status, 200) << bits << ": " << r->body;
     EXPECT_EQ(r->body, raw->body) << bits;
   }
   // A broken zlib stream says how it was read.
-  std::string broken = compress(kScene, 15);
+  std::string broken = deflate(kScene, 15);
   broken.resize(broken.size() / 2);
   broken += "garbage!";
   auto r = server.client().Get("/render?scene=" + base64url(broken));
