@@ -12,6 +12,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <string_view>
 #include <thread>
 
 #include "api.h"
@@ -177,23 +178,29 @@ std::string next_request_id() {
   return buf;
 }
 
-// The methods each route answers ("" for a path no route has): a request with another method gets a 405
-// that names them, where cpp-httplib would answer 404 or 400.
-std::string allowed_methods(const std::string& path) {
-  if (path == "/render") return "GET, HEAD, POST, OPTIONS";
-  for (const char* route : {"/healthz", "/metrics", "/schema/scene.json", "/openapi.json", "/", "/examples"})
-    if (path == route) return "GET, HEAD";
-  if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos) return "GET, HEAD";
-  return "";
+// Every route by its path pattern, with the methods it answers: the metrics count requests by pattern (a
+// bounded set of labels), and a request with another method gets a 405 naming them (cpp-httplib would
+// answer 404 or 400).
+struct Route {
+  std::string_view pattern;  ///< the path, or "/examples/{name}" for any one example
+  std::string_view methods;  ///< for the Allow header, e.g. "GET, HEAD"
+};
+
+const Route* route_of(const std::string& path) {
+  static constexpr Route kRoutes[] = {
+      {"/render", "GET, HEAD, POST, OPTIONS"}, {"/healthz", "GET, HEAD"}, {"/metrics", "GET, HEAD"},
+      {"/schema/scene.json", "GET, HEAD"},     {"/openapi.json", "GET, HEAD"}, {"/", "GET, HEAD"},
+      {"/examples", "GET, HEAD"},               {"/examples/{name}", "GET, HEAD"},
+  };
+  for (const Route& route : kRoutes)
+    if (path == route.pattern) return &route;
+  if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos) return &std::end(kRoutes)[-1];
+  return nullptr;
 }
 
-// A bounded set of labels: every route by its pattern, anything else "other".
 std::string route_label(const std::string& path) {
-  for (const char* route :
-       {"/render", "/healthz", "/metrics", "/schema/scene.json", "/openapi.json", "/", "/examples"})
-    if (path == route) return path;
-  if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos) return "/examples/{name}";
-  return "other";
+  const Route* route = route_of(path);
+  return route ? std::string(route->pattern) : "other";
 }
 
 // A client's own request id is passed on when it is one a log line can carry as it is: short, and made of
@@ -575,9 +582,11 @@ void Service::install(httplib::Server& server) {
           write_problem(res, problem(414, "uri-too-long", "The request URI is too long",
                                      "a request line is at most 8192 bytes; POST the scene to /render "
                                      "instead of putting it in the URL"));
-        } else if (const std::string allowed = allowed_methods(req.path);
-                   !allowed.empty() && (", " + allowed + ",").find(", " + req.method + ",") == std::string::npos) {
+        } else if (const Route* route = route_of(req.path);
+                   route && (", " + std::string(route->methods) + ",").find(", " + req.method + ",") ==
+                                std::string::npos) {
           // The route exists but not with this method (cpp-httplib says 404 or 400 here).
+          const std::string allowed(route->methods);
           res.set_header("Allow", allowed);
           write_problem(res, problem(405, "method-not-allowed", "Method not allowed",
                                      detail + ": " + req.path + " answers " + allowed));
