@@ -234,3 +234,30 @@ TEST(Contracts, ThePlanOwnsThePerPrimitiveDecisions) {
 }
 
 }  // namespace
+
+// With centre coverage a triangle that holds no pixel centre draws nothing, so setup writes no record for
+// it (a dense model's triangles are mostly smaller than a pixel); with multisampling it may cover a sample
+// and keeps its record. Counted by RenderStats::records.
+TEST(Core, ATriangleHoldingNoPixelCentreGetsNoRecord) {
+  auto records = [](const raster::Scene& scene) {
+    raster::RenderStats stats;
+    raster::RenderControl control;
+    control.stats = &stats;
+    const raster::Image image = raster::render(scene, raster::plan(scene), control);
+    return std::pair{stats.records, test::count_not(image, test::kBlack)};
+  };
+  SceneBuilder corner(16, 16);  // inside pixel (5, 5), away from its centre (5.5, 5.5)
+  corner.triangle({5.05, 5.05}, {5.4, 5.05}, {5.05, 5.4}, test::kWhite);
+  EXPECT_EQ(records(corner.scene), std::pair(std::int64_t{0}, 0));
+  SceneBuilder between(16, 16);  // a sliver between two rows of centres
+  between.triangle({4.6, 4.9}, {7.4, 5.2}, {7.4, 5.3}, test::kWhite);
+  EXPECT_EQ(records(between.scene), std::pair(std::int64_t{0}, 0));
+  SceneBuilder diagonal(16, 16);  // its box holds nine centres, it covers none (each lies below it)
+  diagonal.triangle({4.0, 4.3}, {7.0, 7.2}, {7.0, 7.4}, test::kWhite);
+  EXPECT_EQ(records(diagonal.scene), std::pair(std::int64_t{0}, 0));
+  SceneBuilder centre(16, 16);  // the same size around a centre: one record, one pixel
+  centre.triangle({5.3, 5.3}, {5.7, 5.3}, {5.5, 5.7}, test::kWhite);
+  EXPECT_EQ(records(centre.scene), std::pair(std::int64_t{1}, 1));
+  corner.scene.samples = 4;  // a sample of the pattern may lie in it: the record stays
+  EXPECT_EQ(records(corner.scene).first, 1);
+}

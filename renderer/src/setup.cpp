@@ -38,6 +38,29 @@ std::pair<int, int> pixel_span(double lo, double hi, int size) {
           static_cast<int>(std::clamp(last + 1, 0.0, static_cast<double>(size)))};
 }
 
+// Pixels whose centre lies in [lo, hi] (1/256 px units), clipped to [0, size): with centre coverage no other
+// pixel can be covered, so the box is no larger than the samples it may hold (often empty for a sliver).
+std::pair<int, int> centre_span(double lo, double hi, int size) {
+  const double half = kSubpixelScale / 2;
+  const double first = std::ceil((lo - half) / kSubpixelScale), last = std::floor((hi - half) / kSubpixelScale);
+  return {static_cast<int>(std::clamp(first, 0.0, static_cast<double>(size))),
+          static_cast<int>(std::clamp(last + 1, 0.0, static_cast<double>(size)))};
+}
+
+// True when a pixel centre of `box` is covered by `e` (the box holds at most kProbePixels pixels).
+constexpr int kProbePixels = 16;
+bool covers_a_centre(const Edges<std::int64_t>& e, Rect box) {
+  for (int y = box.y0; y < box.y1; ++y)
+    for (int x = box.x0; x < box.x1; ++x) {
+      const std::int64_t X = std::int64_t{x} * kSubpixelScale + kSubpixelScale / 2,
+                         Y = std::int64_t{y} * kSubpixelScale + kSubpixelScale / 2;
+      if (e.a[0] * X + e.b[0] * Y + e.c[0] >= 0 && e.a[1] * X + e.b[1] * Y + e.c[1] >= 0 &&
+          e.a[2] * X + e.b[2] * Y + e.c[2] >= 0)
+        return true;
+    }
+  return false;
+}
+
 // False when the whole of `tile`'s sample points (any sample position) lies outside an edge of `e`.
 bool may_touch(const Edges<std::int64_t>& e, Rect tile) {
   const double x0 = double(tile.x0) * kSubpixelScale, x1 = double(tile.x1) * kSubpixelScale - 1;
@@ -78,8 +101,9 @@ void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool
   const double min_y = std::min({given[0].y, given[1].y, given[2].y}),
                max_y = std::max({given[0].y, given[1].y, given[2].y});
   TriangleRecord r;
-  std::tie(r.box.x0, r.box.x1) = pixel_span(min_x, max_x, width);
-  std::tie(r.box.y0, r.box.y1) = pixel_span(min_y, max_y, height);
+  const auto span = centre_samples ? centre_span : pixel_span;
+  std::tie(r.box.x0, r.box.x1) = span(min_x, max_x, width);
+  std::tie(r.box.y0, r.box.y1) = span(min_y, max_y, height);
   if (r.box.empty()) return;
 
   constexpr double kFastUnits = kFastRangePx * kSubpixelScale;
@@ -95,6 +119,11 @@ void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool
       area = -area;
     }
     r.edges = make_edges(x, y, area);
+    // A small triangle that holds no pixel centre draws nothing: it gets no record (most of a dense
+    // model's triangles are smaller than a pixel).
+    if (centre_samples && (r.box.x1 - r.box.x0) * (r.box.y1 - r.box.y0) <= kProbePixels &&
+        !covers_a_centre(r.edges, r.box))
+      return;
   } else {
     Wide x[3], y[3];
     for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(v[k]->x), y[k] = Wide::from_double(v[k]->y);

@@ -167,6 +167,9 @@ struct Setup {
   std::vector<RecordRef> order;  ///< every record once, in the order the scene draws them
   std::deque<MipChain> textures;  ///< the mip chains textured calls sample (a deque: calls point into it)
   int width = 0, height = 0;     ///< the image, pixels
+  /// The plan's coverage samples each pixel at its centre only (no multisampling, no area): boxes hold the
+  /// pixels whose centre they contain, and a triangle that covers no centre gets no record.
+  bool centre_samples = false;
 
   /// Adds a draw call; returns its index.
   std::uint32_t add_call(const DrawCall& call);
