@@ -3,10 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <span>
 #include <tuple>
+#include <type_traits>
 
 #include "geometry.h"
+#include "memory.h"
+#include "parallel.h"
 #include "shade.h"
 #include "vecmath.h"
 
@@ -127,9 +132,23 @@ void grow_chunk(std::size_t total, First& first, Rest&... rest) {
   (rest.resize(n), ...);
 }
 
+// acos to within 2e-8 rad (Abramowitz & Stegun 4.4.46), a square root and a polynomial: three per triangle
+// were the costliest part of computing a model's normals (libm's acos), and an error this small is below
+// what the float normals the records carry can hold (6e-8 relative).
+double arc_cosine(double x) {
+  const double a = std::fabs(x);
+  const double p =
+      1.5707963050 +
+      a * (-0.2145988016 +
+           a * (0.0889789874 +
+                a * (-0.0501743046 + a * (0.0308918810 + a * (-0.0170881256 + a * (0.0066700901 + a * -0.0012624911))))));
+  const double r = std::sqrt(1 - a) * p;
+  return x < 0 ? std::numbers::pi - r : r;
+}
+
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
 // the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
-std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& world, StopMeter& meter) {
+std::vector<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, StopMeter& meter) {
   std::vector<Vec3> normals;
   normals.reserve(world.size());
   while (normals.size() < world.size()) {
@@ -148,7 +167,7 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& worl
       const int prev = (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
       const double norms = len[k] * len[prev];
       const double cosine = norms > 0 && std::isfinite(norms) ? -dot(edge[k], edge[prev]) / norms : 0.0;
-      const double angle = std::acos(std::clamp(cosine, -1.0, 1.0));
+      const double angle = arc_cosine(std::clamp(cosine, -1.0, 1.0));
       normals[t[k]] = normals[t[k]] + face * angle;
     }
   }
@@ -156,51 +175,74 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh, const std::vector<Vec3>& worl
   return normals;
 }
 
-/// A mesh through the camera: every vertex once (clip-space position, which clip planes it is outside of,
-/// and inside all of them its projected, snapped screen position, so a triangle that needs no clipping costs
-/// no projection), and what the triangles and lines share.
+/// A vertex inside every clip plane, projected: what its triangles' records are made of.
+struct ScreenVertex {
+  std::int32_t x, y;  ///< snapped, 1/256 px, origin top-left, y down (inside the guard band: |x| < 2^23)
+  float depth;        ///< z / w in [0, 1], reversed
+  float inv_w;        ///< 1 / w
+};
+
+/// Meshes with at least this many vertices (triangles) have them transformed (set up) in pieces of this
+/// size on every render thread; smaller ones stay on the calling thread.
+constexpr std::size_t kPiece = 16384;
+
+/// A mesh through the camera: every vertex once (which clip planes it is outside of, its world position,
+/// and inside all of them its projected, snapped screen position, so a triangle that needs no clipping
+/// costs no projection), and what the triangles and lines share.
 struct MeshView {
   const Mesh& mesh;
   const RenderPlan& plan;
   Planes planes;
   Viewport viewport;
-  std::vector<Vec4> clip;
-  std::vector<std::uint8_t> outside;  ///< bit p: outside plane p; 0x40: inside but not projectable; 0x80: not finite
-  std::vector<SetupVertex> screen;    ///< valid where outside == 0
+  Mat4 model_to_clip;
+  // Per vertex, each written once before it is read:
+  PodArray<std::uint8_t> outside;  ///< bit p: outside plane p; 0x40: inside but not projectable; 0x80: not finite
+  PodArray<ScreenVertex> screen;   ///< valid where outside == 0
+  PodArray<Vec3> world;            ///< world positions
 
   MeshView(const Mesh& m, const RenderPlan& p)
       : mesh(m), plan(p), planes{1 + 2 * kGuardPx / p.width, 1 + 2 * kGuardPx / p.height},
-        viewport{static_cast<double>(p.width), static_cast<double>(p.height)} {}
+        viewport{static_cast<double>(p.width), static_cast<double>(p.height)},
+        model_to_clip(p.view.world_to_clip * m.transform) {
+    outside.resize_uninitialized(m.positions.size()), screen.resize_uninitialized(m.positions.size()),
+        world.resize_uninitialized(m.positions.size());
+  }
 
-  /// False when `meter` stopped it.
+  /// Every vertex, in pieces on the render's threads (each writes its own vertices). False when stopped.
   bool project(StopMeter& meter) {
-    const Mat4 model_to_clip = plan.view.world_to_clip * mesh.transform;
     const std::size_t nv = mesh.positions.size();
-    clip.reserve(nv), outside.reserve(nv), screen.reserve(nv);
-    for (std::size_t i = 0; i < nv; ++i) {
-      if (meter.add(StopMeter::kRowWork)) return false;  // deadline: a model can have millions of vertices
-      if (i == clip.size()) grow_chunk(nv, clip, outside, screen);
-      const Vec4 c = clip[i] = transform(model_to_clip, mesh.positions[i]);
-      if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
-        outside[i] = 0x80;
-        continue;
-      }
-      const ClipVertex v{c.x, c.y, c.z, c.w, {}};
-      std::uint8_t bits = 0;
-      for (int plane = 0; plane < kPlaneCount; ++plane) bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
-      outside[i] = bits;
-      if (bits) continue;
-      double sx, sy, depth, inv_w;
-      viewport.project(v, sx, sy, depth, inv_w);
-      if (!in_guard_band(sx, sy, inv_w)) {
-        outside[i] = 0x40;  // inside every plane yet not projectable: dropped like a clipped one would be
-        continue;
-      }
-      SetupVertex& out = screen[i];
-      out.x = snap(sx), out.y = snap(sy);
-      out.depth = static_cast<float>(depth), out.inv_w = static_cast<float>(inv_w);
+    const std::size_t pieces = (nv + kPiece - 1) / kPiece;
+    parallel_for(nv >= 2 * kPiece ? plan.threads : 1, pieces, meter.stop(),
+                 [&](std::size_t piece, StopMeter& own, int) {
+                   const std::size_t end = std::min(nv, (piece + 1) * kPiece);
+                   for (std::size_t i = piece * kPiece; i < end; ++i) {
+                     if (own.add(StopMeter::kRowWork)) return;  // a model can have millions of vertices
+                     project_vertex(i);
+                   }
+                 });
+    return !meter.check();
+  }
+
+  void project_vertex(std::size_t i) {
+    world[i] = transform_point(mesh.transform, mesh.positions[i]);
+    const Vec4 c = transform(model_to_clip, mesh.positions[i]);
+    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+      outside[i] = 0x80;
+      return;
     }
-    return true;
+    const ClipVertex v{c.x, c.y, c.z, c.w, {}};
+    std::uint8_t bits = 0;
+    for (int plane = 0; plane < kPlaneCount; ++plane) bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
+    outside[i] = bits;
+    if (bits) return;
+    double sx, sy, depth, inv_w;
+    viewport.project(v, sx, sy, depth, inv_w);
+    if (!in_guard_band(sx, sy, inv_w)) {
+      outside[i] = 0x40;  // inside every plane yet not projectable: dropped like a clipped one would be
+      return;
+    }
+    screen[i] = {static_cast<std::int32_t>(snap(sx)), static_cast<std::int32_t>(snap(sy)),
+                 static_cast<float>(depth), static_cast<float>(inv_w)};
   }
 
   Rgba8 vertex_color(std::uint32_t vertex) const {
@@ -209,8 +251,10 @@ struct MeshView {
   Rgba8 color_at(std::size_t triangle, std::uint32_t vertex) const {
     return mesh.face_colors.empty() ? vertex_color(vertex) : mesh.face_colors[triangle];
   }
+  /// The vertex in clip space (computed again: only clipped primitives need it).
   ClipVertex clip_vertex(std::uint32_t i, Rgba8 c) const {
-    ClipVertex v{clip[i].x, clip[i].y, clip[i].z, clip[i].w, {}};
+    const Vec4 p = transform(model_to_clip, mesh.positions[i]);
+    ClipVertex v{p.x, p.y, p.z, p.w, {}};
     v.attr[0] = c.r, v.attr[1] = c.g, v.attr[2] = c.b, v.attr[3] = c.a;
     return v;
   }
@@ -218,7 +262,7 @@ struct MeshView {
 
 // A triangle that crosses a clip plane: clipped in homogeneous space, projected, fanned into records.
 void add_clipped(const MeshView& view, std::array<ClipVertex, 9>& poly, std::uint32_t call, bool back,
-                 Setup& setup) {
+                 const Setup& setup, Records& part) {
   SetupVertex dv[9];
   const int n = clip_polygon(poly, 3, view.planes);
   for (int k = 0; k < n; ++k) {
@@ -233,46 +277,32 @@ void add_clipped(const MeshView& view, std::array<ClipVertex, 9>& poly, std::uin
     std::copy(poly[k].attr + 7, poly[k].attr + 9, dv[k].uv);
     std::copy(poly[k].attr + 9, poly[k].attr + 12, dv[k].position);
   }
-  for (int k = 1; k + 1 < n; ++k) setup.add_triangle(call, {dv[0], dv[k], dv[k + 1]}, back);
+  for (int k = 1; k + 1 < n; ++k) setup.add_triangle(part, call, {dv[0], dv[k], dv[k + 1]}, back);
 }
 
-void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup, StopMeter& meter) {
+/// What the triangles of one mesh share while they are set up, piece by piece.
+struct TriangleJob {
+  const MeshView& view;
+  const PrimitivePlan& mode;
+  const Setup& setup;
+  std::uint32_t call;                        ///< faces without a texture (or untextured meshes)
+  std::vector<std::uint32_t> texture_calls;  ///< textured: the call of each of the mesh's textures
+  std::vector<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
+  Vec3 forward;               ///< unit view direction
+
+  // Triangles [begin, end) into `part`, in order.
+  void run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const;
+};
+
+void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
+  const PodArray<Vec3>& world = view.world;
   const bool light_per_pixel = mode.light_per_pixel;
-  std::vector<Vec3> world;
-  world.reserve(mesh.positions.size());
-  for (const Vec3& p : mesh.positions) {
-    if (meter.add(StopMeter::kRowWork)) return;
-    world.push_back(transform_point(mesh.transform, p));
-  }
-  std::vector<Vec3> normals;  // world space, per position (computed) or per OBJ normal index (given)
-  if (light_per_pixel) {
-    const Mat4 to_world_normal = normal_matrix(mesh.transform);
-    if (mode.compute_normals)
-      normals = vertex_normals(mesh, world, meter);
-    else
-      for (const Vec3& n : mesh.normals) normals.push_back(normalize(transform_point(to_world_normal, n)));
-  }
-  const Vec3 forward = normalize(camera.target - camera.eye);
-  DrawCall call = make_call(mode);
-  call.lights = camera.lights;
-  const std::uint32_t call_index = setup.add_call(call);
-  // Textured: one call per texture, the same mode; faces without a texture keep `call_index` (no texture).
-  std::vector<std::uint32_t> texture_calls;
-  if (mode.textured)
-    for (const Texture& texture : mesh.textures) {
-      call.texture = &setup.textures.emplace_back(build_mips(texture, &meter));
-      if (meter.stopped()) return;
-      texture_calls.push_back(setup.add_call(call));
-    }
-  const std::size_t count = mesh.triangles.size();  // before clipping, which rarely adds any
-  setup.triangles.reserve(setup.triangles.size() + count);
-  setup.order.reserve(setup.order.size() + count);
-  setup.attributes.reserve(setup.attributes.size() + count * setup.calls[call_index].layout.size);
-
-  for (std::size_t t = 0; t < count; ++t) {
-    if (meter.add(StopMeter::kPrimitiveWork)) break;  // deadline: a mesh can be millions of triangles
+  const std::size_t floats = static_cast<std::size_t>(setup.calls[call].layout.size);
+  part.triangles.reserve(end - begin), part.order.reserve(end - begin), part.attributes.reserve((end - begin) * floats);
+  for (std::size_t t = begin; t < end; ++t) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return;  // deadline: a mesh can be millions of triangles
     const auto& tri = mesh.triangles[t];
     // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
     // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
@@ -287,6 +317,16 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
     const bool back = dot(face, toward_eye) < 0;
     if (back && mesh.cull == Cull::back) continue;
 
+    // Inside every plane, the record first: most of a dense mesh's triangles cover no pixel centre and are
+    // dropped before any attribute is looked at.
+    TriangleRecord record;
+    int order[3] = {0, 1, 2};
+    if (any_out == 0) {
+      FastTriangle fast;
+      for (int k = 0; k < 3; ++k) fast.x[k] = view.screen[tri[k]].x, fast.y[k] = view.screen[tri[k]].y;
+      if (!setup.fast_record(fast, record, order)) continue;
+    }
+
     float shade[3] = {1, 1, 1};
     if (mode.lit && !light_per_pixel) {  // flat: once per face, lit from the side seen, at its centroid
       const Vec3 n = normalize(back ? face * -1.0 : face);
@@ -296,8 +336,8 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
       for (int k = 0; k < 3; ++k) shade[k] = static_cast<float>(lit[k]);
     }
     // The vertices' colours (lit per face) and normals, onto the projected vertices or the clip polygon.
-    SetupVertex dv[3] = {view.screen[tri[0]], view.screen[tri[1]], view.screen[tri[2]]};
-    std::uint32_t triangle_call = call_index;
+    SetupVertex dv[3];
+    std::uint32_t triangle_call = call;
     if (mode.textured) {
       const std::int32_t texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
       if (texture >= 0) triangle_call = texture_calls[static_cast<std::size_t>(texture)];
@@ -322,7 +362,8 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
       }
     }
     if (any_out == 0) {  // inside every plane: the vertices were projected once
-      setup.add_triangle(triangle_call, dv, back);
+      for (int k = 0; k < 3; ++k) dv[k].depth = view.screen[tri[k]].depth, dv[k].inv_w = view.screen[tri[k]].inv_w;
+      setup.append(part, record, triangle_call, {&dv[order[0]], &dv[order[1]], &dv[order[2]]}, back);
       continue;
     }
     std::array<ClipVertex, 9> poly;
@@ -333,8 +374,47 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
       std::copy(dv[k].uv, dv[k].uv + 2, poly[k].attr + 7);
       std::copy(dv[k].position, dv[k].position + 3, poly[k].attr + 9);
     }
-    add_clipped(view, poly, triangle_call, back, setup);
+    add_clipped(view, poly, triangle_call, back, setup, part);
   }
+}
+
+// The mesh's triangles into records: in pieces of kPiece triangles on every render thread, each piece
+// into a part of its own (parts in triangle order, so the image is that of one thread).
+void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  const ViewPlan& camera = view.plan.view;
+  TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye)};
+  if (mode.light_per_pixel) {
+    const Mat4 to_world_normal = normal_matrix(mesh.transform);
+    if (mode.compute_normals)
+      job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()), meter);
+    else
+      for (const Vec3& n : mesh.normals) job.normals.push_back(normalize(transform_point(to_world_normal, n)));
+    if (meter.stopped()) return;
+  }
+  DrawCall call = make_call(mode);
+  call.lights = camera.lights;
+  job.call = setup.add_call(call);
+  // Textured: one call per texture, the same mode; faces without a texture keep `job.call` (no texture).
+  if (mode.textured)
+    for (const Texture& texture : mesh.textures) {
+      call.texture = &setup.textures.emplace_back(build_mips(texture, &meter));
+      if (meter.stopped()) return;
+      job.texture_calls.push_back(setup.add_call(call));
+    }
+  const std::size_t count = mesh.triangles.size();
+  // Four pieces a thread (some pieces clip, some lie off-screen: threads that finish early take more), of
+  // at least kPiece triangles; the parts do not change the image, only who made it.
+  const int threads = count >= 2 * kPiece ? view.plan.threads : 1;
+  const std::size_t size = threads > 1 ? std::max(kPiece, (count + 4 * threads - 1) / (4 * threads)) : count;
+  const std::size_t pieces = count ? (count + size - 1) / size : 0;
+  const std::size_t first = setup.parts.size();
+  setup.parts.resize(first + pieces);
+  parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
+    job.run(piece * size, std::min(count, (piece + 1) * size), setup.parts[first + piece], own);
+  });
+  meter.check();
+  setup.parts.emplace_back();  // what follows the mesh goes after all of its pieces
 }
 
 // A projected segment as the rectangle `width` pixels wide around it (butt caps), two triangles whose depth
@@ -418,12 +498,7 @@ void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setu
 void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setup, StopMeter& meter) {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
-  std::vector<Vec3> world;
-  world.reserve(mesh.positions.size());
-  for (const Vec3& p : mesh.positions) {
-    if (meter.add(StopMeter::kRowWork)) return;
-    world.push_back(transform_point(mesh.transform, p));
-  }
+  const std::span<const Vec3> world = std::span<const Vec3>(view.world.data(), view.world.size());
   // Positions with equal coordinates are one point here: models that repeat a corner per face (UV seams,
   // STL-like soups) still have shared edges, not a boundary around every face.
   std::vector<std::uint32_t> same(world.size());

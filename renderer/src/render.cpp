@@ -7,15 +7,14 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
-#include <functional>
 #include <memory>
-#include <thread>
 #include <vector>
 
 #include "coverage.h"
 #include "framebuffer.h"
 #include "geometry.h"
 #include "line.h"
+#include "parallel.h"
 #include "setup.h"
 #include "shade.h"
 
@@ -65,11 +64,12 @@ void cover(const detail::Edges<T>& e, Rect clip, Coverage coverage, const detail
 }
 
 template <int C>
-void draw_triangle(const detail::Setup& setup, const detail::TriangleRecord& t, const detail::Surface& surface,
-                   Rect clip, Coverage coverage, detail::Lanes lanes, detail::StopMeter& meter) {
-  const float* attributes = setup.attributes.data() + t.attributes;
+void draw_triangle(const detail::Setup& setup, const detail::Records& part, const detail::TriangleRecord& t,
+                   const detail::Surface& surface, Rect clip, Coverage coverage, detail::Lanes lanes,
+                   detail::StopMeter& meter) {
+  const float* attributes = part.attributes.data() + t.attributes;
   if (t.wide != detail::TriangleRecord::kFast) {
-    const detail::Edges<detail::Wide>& e = setup.wide_edges[t.wide];
+    const detail::Edges<detail::Wide>& e = part.wide_edges[t.wide];
     const detail::Wide scale(detail::kSubpixelScale);
     const double dx[3] = {(e.a[0] * scale).to_double(), (e.a[1] * scale).to_double(), (e.a[2] * scale).to_double()};
     const double dy[3] = {(e.b[0] * scale).to_double(), (e.b[1] * scale).to_double(), (e.b[2] * scale).to_double()};
@@ -99,18 +99,19 @@ inline void fetch(const T* p) {
 // A bin lists records from all over the setup (scene order, not memory order): without help every record
 // is a cache miss. Records kAhead entries on are fetched, and the attributes of those half as far on (whose
 // record has arrived by then).
-inline void prefetch(const detail::Setup& setup, const detail::Bins& bins, std::uint32_t i, std::uint32_t end) {
+inline void prefetch(const detail::Records& part, const detail::Bins::Part& bins, std::uint32_t i,
+                     std::uint32_t end) {
   constexpr std::uint32_t kAhead = 8;
   if (i + kAhead < end) {
     const std::uint32_t ref = bins.records[i + kAhead].value;
-    if (!(ref & detail::RecordRef::kLineBit)) fetch(&setup.triangles[ref]);
+    if (!(ref & detail::RecordRef::kLineBit)) fetch(&part.triangles[ref]);
   }
   if (i + kAhead / 2 < end) {
     const std::uint32_t ref = bins.records[i + kAhead / 2].value;
     if (ref & detail::RecordRef::kLineBit) return;
-    const detail::TriangleRecord& t = setup.triangles[ref];
+    const detail::TriangleRecord& t = part.triangles[ref];
     fetch(reinterpret_cast<const char*>(&t) + 64);  // the record's second cache line
-    fetch(&setup.attributes[t.attributes]);
+    fetch(&part.attributes[t.attributes]);
   }
 }
 
@@ -128,28 +129,32 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
     if (open != kNone) detail::composite_union<C>(surface, reached);
     open = kNone;
   };
-  const std::uint32_t end = f.bins.offsets[tile + 1];
-  for (std::uint32_t i = f.bins.offsets[tile]; i < end; ++i) {
-    if (meter.add(detail::StopMeter::kPrimitiveWork)) return;
-    prefetch(f.setup, f.bins, i, end);
-    const std::uint32_t ref = f.bins.records[i].value;
-    if (ref & detail::RecordRef::kLineBit) {
-      close();
-      const detail::LineRecord& line = f.setup.lines[ref & ~detail::RecordRef::kLineBit];
-      detail::draw_line(line, f.setup.calls[line.call].mode, surface, rect, meter);
-      continue;
+  for (std::size_t p = 0; p < f.bins.parts.size(); ++p) {  // parts in scene order, as one sequence
+    const detail::Records& part = f.setup.parts[p];
+    const detail::Bins::Part& bins = f.bins.parts[p];
+    const std::uint32_t end = bins.offsets[tile + 1];
+    for (std::uint32_t i = bins.offsets[tile]; i < end; ++i) {
+      if (meter.add(detail::StopMeter::kPrimitiveWork)) return;
+      prefetch(part, bins, i, end);
+      const std::uint32_t ref = bins.records[i].value;
+      if (ref & detail::RecordRef::kLineBit) {
+        close();
+        const detail::LineRecord& line = part.lines[ref & ~detail::RecordRef::kLineBit];
+        detail::draw_line(line, f.setup.calls[line.call].mode, surface, rect, meter);
+        continue;
+      }
+      const detail::TriangleRecord& t = part.triangles[ref];
+      const Rect clip{std::max(rect.x0, t.box.x0), std::max(rect.y0, t.box.y0), std::min(rect.x1, t.box.x1),
+                      std::min(rect.y1, t.box.y1)};
+      if (t.call != open) {
+        close();
+        if (surface.coverage && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
+      } else {
+        reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0), std::max(reached.x1, clip.x1),
+                   std::max(reached.y1, clip.y1)};
+      }
+      draw_triangle<C>(f.setup, part, t, surface, clip, coverage, lanes, meter);
     }
-    const detail::TriangleRecord& t = f.setup.triangles[ref];
-    const Rect clip{std::max(rect.x0, t.box.x0), std::max(rect.y0, t.box.y0), std::min(rect.x1, t.box.x1),
-                    std::min(rect.y1, t.box.y1)};
-    if (t.call != open) {
-      close();
-      if (surface.coverage && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
-    } else {
-      reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0), std::max(reached.x1, clip.x1),
-                 std::max(reached.y1, clip.y1)};
-    }
-    draw_triangle<C>(f.setup, t, surface, clip, coverage, lanes, meter);
   }
   close();
 }
@@ -222,8 +227,14 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const detail::Setup setup = detail::build_setup(scene, plan, meter);
   if (meter.stopped()) throw cancelled();
   lap(&RenderStats::geometry_ms);
-  const detail::Bins bins = detail::bin(setup, plan.tile, meter);
-  if (meter.stopped()) throw cancelled();
+  // Each part binned on its own (on every render thread for a large mesh's parts).
+  detail::Bins bins = detail::bin_grid(setup, plan.tile);
+  bins.parts.resize(setup.parts.size());
+  detail::parallel_for(setup.parts.size() > 1 ? plan.threads : 1, setup.parts.size(), stop,
+                       [&](std::size_t p, detail::StopMeter& own, int) {
+                         bins.parts[p] = detail::bin_part(bins, setup, setup.parts[p], own);
+                       });
+  if (stopped) throw cancelled();
   lap(&RenderStats::bin_ms);
 
   // Buffers are cleared as they are allocated, looking at the deadline every megabyte.
@@ -252,30 +263,20 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
       bytes += static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float) +
                                          t.sample_bytes + t.expanded.size() * sizeof(std::uint64_t));
     control.stats->pixel_bytes = bytes;
-    control.stats->bin_bytes = static_cast<std::int64_t>(bins.records.size() * sizeof(detail::RecordRef) +
-                                                         bins.offsets.size() * sizeof(std::uint32_t));
-    control.stats->records = static_cast<std::int64_t>(setup.order.size());
-    control.stats->bin_entries = static_cast<std::int64_t>(bins.records.size());
+    std::size_t bin_bytes = 0;
+    for (const detail::Bins::Part& part : bins.parts)
+      bin_bytes += part.records.size() * sizeof(detail::RecordRef) + part.offsets.size() * sizeof(std::uint32_t);
+    control.stats->bin_bytes = static_cast<std::int64_t>(bin_bytes);
+    control.stats->records = static_cast<std::int64_t>(setup.record_count());
+    control.stats->bin_entries = static_cast<std::int64_t>(bins.entry_count());
   }
   lap(&RenderStats::clear_ms);
   const Frame frame{setup, bins, plan, image};
-  std::atomic<int> next{0};  // tiles are taken in order; which thread takes one does not change its bytes
-  auto worker = [&](Scratch& own) {
-    detail::StopMeter tile_meter(stop);  // each thread counts its own work
-    if (tile_meter.check()) return;      // a deadline already past stops even the smallest render
-    for (int t; (t = next.fetch_add(1, std::memory_order_relaxed)) < tiles;) {
-      draw_tile(frame, t, own, tile_meter);
-      if (tile_meter.stopped()) return;
-    }
-  };
-  if (threads <= 1) {
-    worker(scratch[0]);  // small work: no hand-off at all
-  } else {
-    std::vector<std::jthread> workers;
-    workers.reserve(threads - 1);
-    for (int w = 1; w < threads; ++w) workers.emplace_back(worker, std::ref(scratch[w]));
-    worker(scratch[0]);
-  }  // jthreads join here
+  // Tiles are taken in order; which thread takes one does not change its bytes. One thread: no hand-off.
+  detail::parallel_for(threads, static_cast<std::size_t>(tiles), stop,
+                       [&](std::size_t t, detail::StopMeter& own, int thread) {
+                         draw_tile(frame, static_cast<int>(t), scratch[static_cast<std::size_t>(thread)], own);
+                       });
   if (stopped) throw cancelled();
   lap(&RenderStats::tiles_ms);
   if (control.stats) {

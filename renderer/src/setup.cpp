@@ -94,37 +94,58 @@ std::uint32_t Setup::add_call(const DrawCall& call) {
   return static_cast<std::uint32_t>(calls.size() - 1);
 }
 
-void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool back_facing) {
+bool Setup::fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3]) const {
+  std::int64_t x[3] = {t.x[0], t.x[1], t.x[2]}, y[3] = {t.y[0], t.y[1], t.y[2]};
+  // The box in integers (the same pixels as pixel_span / centre_span give for these values): the pixels
+  // whose square, or with centre coverage whose centre, holds a point of the vertices' range.
+  const std::int64_t lo[2] = {std::min({x[0], x[1], x[2]}), std::min({y[0], y[1], y[2]})};
+  const std::int64_t hi[2] = {std::max({x[0], x[1], x[2]}), std::max({y[0], y[1], y[2]})};
+  const std::int64_t size[2] = {width, height};
+  int first[2], end[2];
+  for (int d = 0; d < 2; ++d) {
+    const std::int64_t f = centre_samples ? (lo[d] + kSubpixelScale / 2 - 1) >> kSubpixelBits : lo[d] >> kSubpixelBits;
+    const std::int64_t l = centre_samples ? (hi[d] - kSubpixelScale / 2) >> kSubpixelBits : hi[d] >> kSubpixelBits;
+    first[d] = static_cast<int>(std::clamp<std::int64_t>(f, 0, size[d]));
+    end[d] = static_cast<int>(std::clamp<std::int64_t>(l + 1, 0, size[d]));
+  }
+  r.box = {first[0], first[1], end[0], end[1]};
+  if (r.box.empty()) return false;
+  std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+  if (area == 0) return false;  // degenerate: covers nothing
+  order[0] = 0, order[1] = 1, order[2] = 2;
+  if (area < 0) {  // both windings are drawn: normalize to positive area
+    std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(order[1], order[2]);
+    area = -area;
+  }
+  r.edges = make_edges(x, y, area);
+  r.wide = TriangleRecord::kFast;
+  // A small triangle that holds no pixel centre draws nothing: it gets no record (most of a dense model's
+  // triangles are smaller than a pixel).
+  return !(centre_samples && (r.box.x1 - r.box.x0) * (r.box.y1 - r.box.y0) <= kProbePixels &&
+           !covers_a_centre(r.edges, r.box));
+}
+
+void Setup::add_triangle(Records& part, std::uint32_t call, const SetupVertex (&given)[3], bool back_facing) const {
   const SetupVertex* v[3] = {&given[0], &given[1], &given[2]};
   const double min_x = std::min({given[0].x, given[1].x, given[2].x}),
                max_x = std::max({given[0].x, given[1].x, given[2].x});
   const double min_y = std::min({given[0].y, given[1].y, given[2].y}),
                max_y = std::max({given[0].y, given[1].y, given[2].y});
   TriangleRecord r;
-  const auto span = centre_samples ? centre_span : pixel_span;
-  std::tie(r.box.x0, r.box.x1) = span(min_x, max_x, width);
-  std::tie(r.box.y0, r.box.y1) = span(min_y, max_y, height);
-  if (r.box.empty()) return;
-
   constexpr double kFastUnits = kFastRangePx * kSubpixelScale;
   const bool wide = !(std::max(std::fabs(min_x), std::fabs(max_x)) <= kFastUnits &&
                       std::max(std::fabs(min_y), std::fabs(max_y)) <= kFastUnits);
   if (!wide) {
-    std::int64_t x[3], y[3];
-    for (int k = 0; k < 3; ++k) x[k] = static_cast<std::int64_t>(v[k]->x), y[k] = static_cast<std::int64_t>(v[k]->y);
-    std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-    if (area == 0) return;  // degenerate: covers nothing
-    if (area < 0) {         // both windings are drawn: normalize to positive area
-      std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(v[1], v[2]);
-      area = -area;
-    }
-    r.edges = make_edges(x, y, area);
-    // A small triangle that holds no pixel centre draws nothing: it gets no record (most of a dense
-    // model's triangles are smaller than a pixel).
-    if (centre_samples && (r.box.x1 - r.box.x0) * (r.box.y1 - r.box.y0) <= kProbePixels &&
-        !covers_a_centre(r.edges, r.box))
-      return;
+    FastTriangle t;
+    for (int k = 0; k < 3; ++k) t.x[k] = static_cast<std::int64_t>(v[k]->x), t.y[k] = static_cast<std::int64_t>(v[k]->y);
+    int order[3];
+    if (!fast_record(t, r, order)) return;
+    for (int k = 0; k < 3; ++k) v[k] = &given[order[k]];
   } else {
+    const auto span = centre_samples ? centre_span : pixel_span;
+    std::tie(r.box.x0, r.box.x1) = span(min_x, max_x, width);
+    std::tie(r.box.y0, r.box.y1) = span(min_y, max_y, height);
+    if (r.box.empty()) return;
     Wide x[3], y[3];
     for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(v[k]->x), y[k] = Wide::from_double(v[k]->y);
     Wide area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
@@ -133,16 +154,20 @@ void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool
       std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(v[1], v[2]);
       area = -area;
     }
-    r.wide = static_cast<std::uint32_t>(wide_edges.size());
-    wide_edges.push_back(make_edges(x, y, area));
+    r.wide = static_cast<std::uint32_t>(part.wide_edges.size());
+    part.wide_edges.push_back(make_edges(x, y, area));
   }
 
+  append(part, r, call, v, back_facing);
+}
+
+void Setup::append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
+                   bool back_facing) const {
   // Attributes in the normalized vertex order, only those the call's layout has.
   const PrimitivePlan& mode = calls[call].mode;
   const AttributeLayout& layout = calls[call].layout;
-  r.attributes = static_cast<std::uint32_t>(attributes.size());
-  attributes.resize(attributes.size() + layout.size);
-  float* out = attributes.data() + r.attributes;
+  r.attributes = static_cast<std::uint32_t>(part.attributes.size());
+  float* out = part.attributes.grow(static_cast<std::size_t>(layout.size));
   for (int k = 0; k < (mode.varying_color ? 3 : 1); ++k) std::copy(v[k]->color, v[k]->color + 4, out + 4 * k);
   for (int k = 0; k < 3; ++k) {
     if (layout.depth >= 0) out[layout.depth + k] = v[k]->depth;
@@ -153,8 +178,14 @@ void Setup::add_triangle(std::uint32_t call, const SetupVertex (&given)[3], bool
   }
   r.call = call;
   r.back_facing = back_facing;
-  order.push_back({static_cast<std::uint32_t>(triangles.size())});
-  triangles.push_back(r);
+  part.order.push_back({static_cast<std::uint32_t>(part.triangles.size())});
+  part.triangles.push_back(r);
+}
+
+std::size_t Setup::record_count() const {
+  std::size_t n = 0;
+  for (const Records& part : parts) n += part.order.size();
+  return n;
 }
 
 void Setup::add_line(LineRecord line) {
@@ -163,8 +194,9 @@ void Setup::add_line(LineRecord line) {
   std::tie(line.box.y0, line.box.y1) =
       pixel_span(std::min(line.y0, line.y1) * kSubpixelScale, std::max(line.y0, line.y1) * kSubpixelScale, height);
   if (line.box.empty()) return;
-  order.push_back({RecordRef::kLineBit | static_cast<std::uint32_t>(lines.size())});
-  lines.push_back(line);
+  Records& part = last_part();
+  part.order.push_back({RecordRef::kLineBit | static_cast<std::uint32_t>(part.lines.size())});
+  part.lines.push_back(line);
 }
 
 Rect Bins::tile_rect(int index, int width, int height) const {
@@ -172,38 +204,50 @@ Rect Bins::tile_rect(int index, int width, int height) const {
   return {tx * tile, ty * tile, std::min(width, (tx + 1) * tile), std::min(height, (ty + 1) * tile)};
 }
 
-Bins bin(const Setup& setup, int tile, StopMeter& meter) {
+std::size_t Bins::entry_count() const {
+  std::size_t n = 0;
+  for (const Part& part : parts) n += part.records.size();
+  return n;
+}
+
+Bins bin_grid(const Setup& setup, int tile) {
   Bins bins;
   bins.tile = tile;
   bins.columns = (setup.width + tile - 1) / tile;
   bins.rows = (setup.height + tile - 1) / tile;
-  const std::size_t tiles = static_cast<std::size_t>(bins.columns) * bins.rows;
+  return bins;
+}
+
+Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, StopMeter& meter) {
+  const int tile = grid.tile;
+  const std::size_t tiles = static_cast<std::size_t>(grid.columns) * grid.rows;
+  Bins::Part bins;
   std::vector<std::uint32_t> count(tiles + 1, 0);
   // Calls visit(tile index) for every tile record `ref` may touch.
   auto for_each_tile = [&](RecordRef ref, auto&& visit) {
     const bool line = ref.value & RecordRef::kLineBit;
     const std::uint32_t index = ref.value & ~RecordRef::kLineBit;
-    const Rect box = line ? setup.lines[index].box : setup.triangles[index].box;
+    const Rect box = line ? part.lines[index].box : part.triangles[index].box;
     const int tx0 = box.x0 / tile, tx1 = (box.x1 - 1) / tile, ty0 = box.y0 / tile, ty1 = (box.y1 - 1) / tile;
-    const TriangleRecord* t = line ? nullptr : &setup.triangles[index];
-    const bool test = t && t->wide == TriangleRecord::kFast && (tx1 > tx0 || ty1 > ty0);  // one tile: no skip
+    if (tx0 == tx1 && ty0 == ty1) return visit(ty0 * grid.columns + tx0);  // one tile: no test
+    const TriangleRecord* t = line ? nullptr : &part.triangles[index];
+    const bool test = t && t->wide == TriangleRecord::kFast;
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) {
-        const int at = ty * bins.columns + tx;
-        if (test && !may_touch(t->edges, bins.tile_rect(at, setup.width, setup.height))) continue;
+        const int at = ty * grid.columns + tx;
+        if (test && !may_touch(t->edges, grid.tile_rect(at, setup.width, setup.height))) continue;
         visit(at);
       }
   };
   // Both passes look at the deadline: millions of records take tens of milliseconds.
-  for (const RecordRef ref : setup.order) {
+  for (const RecordRef ref : part.order) {
     if (meter.add(StopMeter::kPrimitiveWork)) return bins;  // the caller sees meter.stopped()
     for_each_tile(ref, [&](int at) { ++count[at + 1]; });
   }
-  bins.offsets.resize(tiles + 1);
   for (std::size_t t = 0; t < tiles; ++t) count[t + 1] += count[t];
   bins.offsets = count;
-  bins.records.resize(count[tiles]);
-  for (const RecordRef ref : setup.order) {
+  bins.records.resize_uninitialized(count[tiles]);
+  for (const RecordRef ref : part.order) {
     if (meter.add(StopMeter::kPrimitiveWork)) return bins;
     for_each_tile(ref, [&](int at) { bins.records[count[at]++] = ref; });
   }

@@ -11,6 +11,7 @@
 
 #include "raster/plan.h"
 #include "raster/scene.h"
+#include "memory.h"
 #include "stop.h"
 #include "texture.h"
 #include "wide.h"
@@ -79,6 +80,7 @@ struct Surface {
 ///   uv: 3 x (u, v)                         (mode.textured)
 ///   position: 3 x xyz                      (mode.position_per_pixel)
 struct AttributeLayout {
+  static constexpr int kMax = 12 + 3 + 3 + 9 + 6 + 9;  ///< floats of a record with every attribute
   int color = 0, depth = -1, inv_w = -1, normal = -1, uv = -1, position = -1, size = 0;
   static AttributeLayout of(const PrimitivePlan& mode);
 };
@@ -157,42 +159,77 @@ struct RecordRef {
   std::uint32_t value = 0;  ///< index into Setup::triangles, or kLineBit | index into Setup::lines
 };
 
+/// A run of records in scene order, with the storage they index. A setup is a sequence of parts so that the
+/// triangles of a large mesh can be set up on every render thread at once, each thread filling its own
+/// parts; the tiles draw the parts in order, so the image does not depend on how the work was split.
+struct Records {
+  PodArray<TriangleRecord> triangles;
+  std::vector<Edges<Wide>> wide_edges;  ///< TriangleRecord::wide indexes these
+  PodArray<float> attributes;           ///< TriangleRecord::attributes indexes these
+  std::vector<LineRecord> lines;
+  PodArray<RecordRef> order;  ///< every record of the part once, in the order the scene draws them
+};
+
+/// A triangle in the fast range, snapped (1/256 px, either winding), before its record exists.
+struct FastTriangle {
+  std::int64_t x[3], y[3];
+};
+
 /// Everything the tiles draw, in scene order.
 struct Setup {
   std::vector<DrawCall> calls;
-  std::vector<TriangleRecord> triangles;
-  std::vector<Edges<Wide>> wide_edges;
-  std::vector<float> attributes;
-  std::vector<LineRecord> lines;
-  std::vector<RecordRef> order;  ///< every record once, in the order the scene draws them
+  std::vector<Records> parts;     ///< in scene order; a part's records all follow the previous part's
   std::deque<MipChain> textures;  ///< the mip chains textured calls sample (a deque: calls point into it)
-  int width = 0, height = 0;     ///< the image, pixels
+  int width = 0, height = 0;      ///< the image, pixels
   /// The plan's coverage samples each pixel at its centre only (no multisampling, no area): boxes hold the
   /// pixels whose centre they contain, and a triangle that covers no centre gets no record.
   bool centre_samples = false;
 
   /// Adds a draw call; returns its index.
   std::uint32_t add_call(const DrawCall& call);
-  /// Sets up a triangle from three snapped vertices; degenerate ones and ones that miss the image are not
-  /// added. Colours only (2D) or every attribute of `call`'s layout (3D).
-  void add_triangle(std::uint32_t call, const SetupVertex (&v)[3], bool back_facing = false);
+  /// The part records are appended to (a new one when there is none).
+  Records& last_part() { return parts.empty() ? parts.emplace_back() : parts.back(); }
+  /// Sets up a triangle from three snapped vertices into `part`; degenerate ones and ones that miss the
+  /// image are not added. Colours only (2D) or every attribute of `call`'s layout (3D). Reads only the
+  /// setup's calls and image: threads may fill different parts at once.
+  void add_triangle(Records& part, std::uint32_t call, const SetupVertex (&v)[3], bool back_facing = false) const;
+  void add_triangle(std::uint32_t call, const SetupVertex (&v)[3], bool back_facing = false) {
+    add_triangle(last_part(), call, v, back_facing);
+  }
+  /// The record of a fast-range triangle, its vertices put in the order of positive area (`order[k]` is the
+  /// given vertex that became vertex k); false when it has no area or can cover nothing of the image. The
+  /// caller appends it with its attributes in that order (as add_triangle does).
+  bool fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3]) const;
+  /// Appends `r` (from fast_record, or with its edges and box set) to `part` with the attributes of `call`'s
+  /// layout taken from `v`, already in the record's vertex order.
+  void append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
+              bool back_facing) const;
   /// Adds a 1-px line record (its box is computed here).
   void add_line(LineRecord line);
+  /// Records of every part.
+  std::size_t record_count() const;
 };
 
-/// Per tile, the records that may touch it, in scene order: a flat array of record references and, for
-/// tile t, the range [offsets[t], offsets[t + 1]).
+/// Per tile, the records that may touch it, in scene order: for each part of the setup a flat array of
+/// record references and, for tile t, the range [offsets[t], offsets[t + 1]) of it.
 struct Bins {
-  int tile = 64;           ///< tile side, pixels (a multiple of kBlock)
+  int tile = 64;              ///< tile side, pixels (a multiple of kBlock)
   int columns = 0, rows = 0;  ///< tiles across and down
-  std::vector<std::uint32_t> offsets;  ///< columns * rows + 1 entries
-  std::vector<RecordRef> records;
+  struct Part {
+    std::vector<std::uint32_t> offsets;  ///< columns * rows + 1 entries
+    PodArray<RecordRef> records;         ///< references into the setup part of the same index
+  };
+  std::vector<Part> parts;  ///< one per Setup::parts, in the same order
   Rect tile_rect(int index, int width, int height) const;
+  /// Record-tile pairs of every part.
+  std::size_t entry_count() const;
 };
 
-/// Bins every record of `setup` by its bounding box, skipping tiles a triangle's edges exclude entirely.
+/// The bins' grid for `setup` and a tile side, with no part binned yet.
+Bins bin_grid(const Setup& setup, int tile);
+/// Bins every record of `part` by its bounding box, skipping tiles a triangle's edges exclude entirely.
 /// Returns early, incomplete, once `meter` says the render must stop.
-Bins bin(const Setup& setup, int tile, StopMeter& meter);
+Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, StopMeter& meter);
 
 /// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
 /// whole pixels translates the result exactly.

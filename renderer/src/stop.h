@@ -39,6 +39,8 @@ class StopMeter {
   /// Asks now, whatever the count: when a thread starts, so an expired deadline stops even a tiny render.
   bool check() { return stopped_ = stop_.now(); }
   bool stopped() const { return stopped_; }
+  /// What it asks: other threads of the render make their own meters from it.
+  const Stop& stop() const { return stop_; }
 
  private:
   const Stop& stop_;
