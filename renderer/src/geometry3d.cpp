@@ -121,17 +121,6 @@ Rgba8 to_rgba8(const float* c) {
   return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
 }
 
-// Per-vertex arrays of a big model are tens of megabytes, and zeroing fresh pages is most of what sizing
-// them costs: they are reserved, then sized a chunk at a time inside that capacity between looks at the
-// deadline, so a render stops on time even before its first vertex is transformed.
-constexpr std::size_t kGrowChunk = 16384;
-template <typename First, typename... Rest>
-void grow_chunk(std::size_t total, First& first, Rest&... rest) {
-  const std::size_t n = std::min(total, first.size() + kGrowChunk);  // all have the same size
-  first.resize(n);
-  (rest.resize(n), ...);
-}
-
 // acos to within 2e-8 rad (Abramowitz & Stegun 4.4.46), a square root and a polynomial: three per triangle
 // were the costliest part of computing a model's normals (libm's acos), and an error this small is below
 // what the float normals the records carry can hold (6e-8 relative).
@@ -148,30 +137,42 @@ double arc_cosine(double x) {
 
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
 // the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
-std::vector<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, StopMeter& meter) {
-  std::vector<Vec3> normals;
-  normals.reserve(world.size());
-  while (normals.size() < world.size()) {
-    if (meter.check()) return normals;
-    grow_chunk(world.size(), normals);
-  }
-  for (const auto& t : mesh.triangles) {
-    if (meter.add(StopMeter::kPrimitiveWork)) break;  // the caller sees meter.stopped() and draws nothing
-    const Vec3 p[3] = {world[t[0]], world[t[1]], world[t[2]]};
-    const Vec3 face = normalize(cross(p[1] - p[0], p[2] - p[0]));
-    // Edge k runs from vertex k to the next; each length is taken once (a zero-length edge: angle pi/2,
-    // as for a zero vector's direction).
-    const Vec3 edge[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};
-    const double len[3] = {length(edge[0]), length(edge[1]), length(edge[2])};
-    for (int k = 0; k < 3; ++k) {
-      const int prev = (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
-      const double norms = len[k] * len[prev];
-      const double cosine = norms > 0 && std::isfinite(norms) ? -dot(edge[k], edge[prev]) / norms : 0.0;
-      const double angle = arc_cosine(std::clamp(cosine, -1.0, 1.0));
-      normals[t[k]] = normals[t[k]] + face * angle;
+//
+// On several threads each takes a range of the vertices and goes through all the triangles, adding only to its
+// own vertices: every vertex still sums its faces in triangle order, so the normals are the same bits for any
+// thread count (a triangle whose corners lie in two ranges is measured twice).
+PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, StopMeter& meter) {
+  const std::size_t nv = world.size();
+  PodArray<Vec3> normals;
+  normals.resize_uninitialized(nv);
+  const std::size_t pieces = static_cast<std::size_t>(std::max(threads, 1));
+  parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
+    const std::uint32_t v0 = static_cast<std::uint32_t>(nv * piece / pieces),
+                        v1 = static_cast<std::uint32_t>(nv * (piece + 1) / pieces);
+    std::fill(normals.data() + v0, normals.data() + v1, Vec3{});
+    auto mine = [&](std::uint32_t v) { return v >= v0 && v < v1; };
+    for (const auto& t : mesh.triangles) {
+      if (own.add(StopMeter::kRowWork)) return;  // the caller sees meter.stopped() and draws nothing
+      const bool corner[3] = {mine(t[0]), mine(t[1]), mine(t[2])};
+      if (!(corner[0] || corner[1] || corner[2])) continue;
+      const Vec3 p[3] = {world[t[0]], world[t[1]], world[t[2]]};
+      const Vec3 face = normalize(cross(p[1] - p[0], p[2] - p[0]));
+      // Edge k runs from vertex k to the next; each length is taken once (a zero-length edge: angle pi/2,
+      // as for a zero vector's direction).
+      const Vec3 edge[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};
+      const double len[3] = {length(edge[0]), length(edge[1]), length(edge[2])};
+      for (int k = 0; k < 3; ++k) {
+        if (!corner[k]) continue;
+        const int prev = (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
+        const double norms = len[k] * len[prev];
+        const double cosine = norms > 0 && std::isfinite(norms) ? -dot(edge[k], edge[prev]) / norms : 0.0;
+        const double angle = arc_cosine(std::clamp(cosine, -1.0, 1.0));
+        normals[t[k]] = normals[t[k]] + face * angle;
+      }
     }
-  }
-  for (Vec3& n : normals) n = normalize(n);
+    for (std::uint32_t v = v0; v < v1; ++v) normals[v] = normalize(normals[v]);
+  });
+  meter.check();
   return normals;
 }
 
@@ -287,7 +288,7 @@ struct TriangleJob {
   const Setup& setup;
   std::uint32_t call;                        ///< faces without a texture (or untextured meshes)
   std::vector<std::uint32_t> texture_calls;  ///< textured: the call of each of the mesh's textures
-  std::vector<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
+  PodArray<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
   Vec3 forward;               ///< unit view direction
 
   // Triangles [begin, end) into `part`, in order.
@@ -387,7 +388,8 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   if (mode.light_per_pixel) {
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
     if (mode.compute_normals)
-      job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()), meter);
+      job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
+                                   mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1, meter);
     else
       for (const Vec3& n : mesh.normals) job.normals.push_back(normalize(transform_point(to_world_normal, n)));
     if (meter.stopped()) return;
@@ -411,7 +413,11 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   const std::size_t first = setup.parts.size();
   setup.parts.resize(first + pieces);
   parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
-    job.run(piece * size, std::min(count, (piece + 1) * size), setup.parts[first + piece], own);
+    // Filled on the thread's stack and moved in at the end: parts lie side by side in memory, and two threads
+    // growing neighbouring ones would share the cache line of their sizes.
+    Records part;
+    job.run(piece * size, std::min(count, (piece + 1) * size), part, own);
+    setup.parts[first + piece] = std::move(part);
   });
   meter.check();
   setup.parts.emplace_back();  // what follows the mesh goes after all of its pieces

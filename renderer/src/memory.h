@@ -1,7 +1,9 @@
 // Memory for a render's large arrays (records, attributes, bins, per-vertex values). Fresh pages are what
 // a large render spends most on where page faults are expensive (a VM: 26% of the sphere's cycles were the
-// fault path), so blocks of 2 MiB and more are aligned to 2 MiB and advised as transparent huge pages: the
-// first touch of 2 MiB is one fault, not 512. Smaller blocks come from malloc as usual.
+// fault path, and two threads faulting at once ran no faster than one), so blocks of 2 MiB and more are
+// aligned to 2 MiB and advised as transparent huge pages (the first touch of 2 MiB is one fault, not 512),
+// and a freed one is kept for the next render, up to kKeptBytes in all (the pages a warm server has already
+// touched, as a long-running allocator would keep them). Smaller blocks come from malloc as usual.
 #pragma once
 
 #include <algorithm>
@@ -12,10 +14,18 @@
 
 namespace raster::detail {
 
-/// `bytes` of uninitialised storage (see above); never null (throws std::bad_alloc).
-void* allocate_large(std::size_t bytes);
-/// Frees what allocate_large returned for the same `bytes`.
-void free_large(void* p, std::size_t bytes) noexcept;
+/// Bytes of freed large blocks kept for later renders, at most (process-wide, shared by all renders).
+inline constexpr std::size_t kKeptBytes = std::size_t{128} << 20;
+
+/// A block of uninitialised storage.
+struct MemoryBlock {
+  void* data = nullptr;
+  std::size_t bytes = 0;  ///< what it holds: at least what was asked for
+};
+/// At least `bytes` of uninitialised storage (see above); never null (throws std::bad_alloc).
+MemoryBlock allocate_large(std::size_t bytes);
+/// Frees (or keeps for reuse) a block allocate_large returned.
+void free_large(MemoryBlock block) noexcept;
 
 /// A growable array of a trivially copyable type whose new elements are not initialised: every element is
 /// written before it is read, and zeroing first would touch each fresh page twice. Storage from
@@ -32,7 +42,7 @@ class PodArray {
     return *this;
   }
   ~PodArray() {
-    if (data_) free_large(data_, capacity_ * sizeof(T));
+    if (data_) free_large({data_, capacity_ * sizeof(T)});
   }
 
   std::size_t size() const { return size_; }
@@ -47,10 +57,10 @@ class PodArray {
 
   void reserve(std::size_t n) {
     if (n <= capacity_) return;
-    T* fresh = static_cast<T*>(allocate_large(n * sizeof(T)));
-    if (size_) std::memcpy(static_cast<void*>(fresh), data_, size_ * sizeof(T));
-    if (data_) free_large(data_, capacity_ * sizeof(T));
-    data_ = fresh, capacity_ = n;
+    const MemoryBlock fresh = allocate_large(n * sizeof(T));
+    if (size_) std::memcpy(fresh.data, data_, size_ * sizeof(T));
+    if (data_) free_large({data_, capacity_ * sizeof(T)});
+    data_ = static_cast<T*>(fresh.data), capacity_ = fresh.bytes / sizeof(T);
   }
   /// Appends `n` elements, not initialised, and returns the first.
   T* grow(std::size_t n) {
