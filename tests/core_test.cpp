@@ -3,7 +3,11 @@
 // against the scalar path of the same routine, and one test per contract so none can silently come back.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -97,6 +101,71 @@ TEST(Core, SameBytesForEveryTileSizeAndThreadCount) {
               << "seed " << seed << ", " << samples << " samples, tile " << tile << ", " << threads << " threads";
         }
     }
+}
+
+// A UV sphere of 2 n^2 triangles (a large mesh is set up in parts on every render thread from 32,768
+// triangles on), per-vertex colours and texture coordinates, every other band of faces textured.
+raster::Scene sphere_scene(int n, int side) {
+  raster::Scene s;
+  s.width = s.height = side;
+  raster::Mesh mesh;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double theta = pi * i / n, phi = 2 * pi * j / n;
+      mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+      mesh.colors.push_back({static_cast<std::uint8_t>(i * 255 / n), static_cast<std::uint8_t>(j * 255 / n), 128, 255});
+      mesh.uvs.push_back({static_cast<float>(j) / n * 4, static_cast<float>(i) / n * 4});
+    }
+  auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
+      mesh.triangles.push_back({at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
+    }
+  mesh.uv_triangles = mesh.triangles;
+  raster::Texture checker;
+  checker.width = checker.height = 4;
+  for (int t = 0; t < 16; ++t) {
+    const std::uint8_t v = (t + t / 4) % 2 ? 255 : 40;
+    checker.rgba.insert(checker.rgba.end(), {v, v, 255, 255});
+  }
+  mesh.textures.push_back(checker);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) mesh.face_textures.push_back((t / 512) % 2 ? 0 : -1);
+  s.meshes.push_back(std::move(mesh));
+  raster::Primitive p;
+  p.kind = raster::PrimitiveKind::mesh;
+  s.primitives.push_back(p);
+  return s;
+}
+
+// Meshes split into parts set up on every thread give the bytes of one thread: lit smooth with computed
+// normals, flat, textured, culled, clipped by the near plane (the eye inside the sphere's bounds) and by the
+// guard band, aliased and multisampled.
+TEST(Core, MeshPartsGiveTheBytesOfOneThread) {
+  std::vector<std::pair<std::string, raster::Scene>> cases;
+  const raster::Scene lit = sphere_scene(130, 160);
+  cases.emplace_back("smooth, computed normals, textured", lit);
+  raster::Scene flat = lit;
+  flat.meshes[0].shading = raster::Shading::flat, flat.meshes[0].cull = raster::Cull::back;
+  cases.emplace_back("flat, back faces culled", flat);
+  raster::Scene clipped = lit;
+  clipped.camera.has_eye = clipped.camera.has_target = true;
+  clipped.camera.eye = {0.2, 0.3, 0.95}, clipped.camera.target = {0, 0, 0}, clipped.camera.fov_deg = 100;
+  cases.emplace_back("clipped by the near plane", clipped);
+  raster::Scene band = lit;
+  band.camera.has_eye = band.camera.has_target = true;
+  band.camera.eye = {0.5, 0.5, 60}, band.camera.target = {0.5, 0.5, 0}, band.camera.fov_deg = 0.01;
+  cases.emplace_back("clipped by the guard band", band);
+  raster::Scene msaa = lit;
+  msaa.samples = 4;
+  cases.emplace_back("4 samples", msaa);
+  for (const auto& [name, scene] : cases) {
+    const raster::Image one = render_with(scene, 64, 1);
+    EXPECT_GT(test::count_not(one, {0, 0, 0, 255}), 1000) << name << ": the mesh is drawn";
+    for (int threads : {2, 3, 7})
+      EXPECT_EQ(render_with(scene, 64, threads).pixels, one.pixels) << name << ", " << threads << " threads";
+  }
 }
 
 // A tile size that is not a power of two, and the one-tile direct path, agree too.
