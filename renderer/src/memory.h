@@ -1,10 +1,9 @@
 // Memory for a render's large arrays (records, attributes, bins, per-vertex values). Fresh pages are what
-// a large render spends most on where page faults are expensive (a VM: 26% of the sphere's cycles were the
+// a large render spent most on where page faults are expensive (a VM: 26% of the sphere's cycles were the
 // fault path, and two threads faulting at once ran no faster than one), so blocks of 2 MiB and more are
-// aligned to 2 MiB and advised as transparent huge pages (the first touch of 2 MiB is one fault, not 512),
-// and a freed one is kept for the next render, up to kKeptBytes in all: pages a warm server has touched
-// once, kept as a long-running allocator keeps them (a 600k-triangle model at two threads uses ~140 MB of
-// them). Smaller blocks come from malloc as usual.
+// mapped apart from malloc's heap and a freed one is kept for the next render, up to kKeptBytes in all:
+// pages a warm server has touched once, kept as a long-running allocator keeps them (a 600k-triangle model
+// at two threads uses ~140 MB of them). Smaller blocks come from malloc as usual.
 #pragma once
 
 #include <algorithm>
