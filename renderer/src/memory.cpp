@@ -48,7 +48,8 @@ void unmap_block(MemoryBlock b) {
 }
 
 // Freed large blocks, oldest first. A request takes the smallest kept block that holds it and is at most
-// twice its size (a larger one would hold pages idle that another render could use).
+// twice its size (a larger one would hold pages idle that another render could use), the newest of equals
+// (the likeliest still in a cache).
 class KeptBlocks {
  public:
   MemoryBlock take(std::size_t bytes) {
@@ -56,7 +57,7 @@ class KeptBlocks {
     std::size_t best = blocks_.size();
     for (std::size_t i = 0; i < blocks_.size(); ++i)
       if (blocks_[i].bytes >= bytes && blocks_[i].bytes <= 2 * bytes &&
-          (best == blocks_.size() || blocks_[i].bytes < blocks_[best].bytes))
+          (best == blocks_.size() || blocks_[i].bytes <= blocks_[best].bytes))
         best = i;
     if (best == blocks_.size()) return {};
     const MemoryBlock b = blocks_[best];

@@ -42,7 +42,7 @@ class PodArray {
     return *this;
   }
   ~PodArray() {
-    if (data_) free_large({data_, capacity_ * sizeof(T)});
+    if (data_) free_large(block_);
   }
 
   std::size_t size() const { return size_; }
@@ -59,7 +59,8 @@ class PodArray {
     if (n <= capacity_) return;
     const MemoryBlock fresh = allocate_large(n * sizeof(T));
     if (size_) std::memcpy(fresh.data, data_, size_ * sizeof(T));
-    if (data_) free_large({data_, capacity_ * sizeof(T)});
+    if (data_) free_large(block_);
+    block_ = fresh;  // freed as it was given: its bytes need not be a multiple of sizeof(T)
     data_ = static_cast<T*>(fresh.data), capacity_ = fresh.bytes / sizeof(T);
   }
   /// Appends `n` elements, not initialised, and returns the first.
@@ -78,8 +79,10 @@ class PodArray {
 
  private:
   void swap(PodArray& o) noexcept {
-    std::swap(data_, o.data_), std::swap(size_, o.size_), std::swap(capacity_, o.capacity_);
+    std::swap(block_, o.block_), std::swap(data_, o.data_), std::swap(size_, o.size_),
+        std::swap(capacity_, o.capacity_);
   }
+  MemoryBlock block_;
   T* data_ = nullptr;
   std::size_t size_ = 0, capacity_ = 0;
 };
