@@ -21,9 +21,9 @@ constexpr std::size_t kHugePage = std::size_t{2} << 20;
 void* map_block(std::size_t bytes) {
 #if defined(__linux__)
   // One alignment more than needed, then the unaligned ends given back: aligned blocks can take huge pages
-  // where the system gives them to every mapping (THP "always"). Not asked for with MADV_HUGEPAGE: on this
-  // 2-core VM that made the next request's OBJ parse ~40% slower (median 571 vs 407 ms, alternating
-  // requests) for a raster ~5% faster once blocks are kept.
+  // where the system gives them to every mapping (THP "always"). Not advised with MADV_HUGEPAGE: with blocks
+  // kept it gains nothing measurable (the sphere at 2 threads, 68-72 ms either way), and the next request's
+  // OBJ parse measured slower with it (median 571 vs 407 ms, alternating requests).
   const std::size_t span = bytes + kHugePage;
   void* p = ::mmap(nullptr, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (p == MAP_FAILED) throw std::bad_alloc();
