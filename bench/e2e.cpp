@@ -10,6 +10,11 @@
 #include <thread>
 #include <vector>
 
+#if __has_include(<malloc.h>)
+#include <malloc.h>  // mallopt (glibc)
+#endif
+#include <tiny_obj_loader.h>
+
 #include "raster/raster.h"
 #include "peer.h"
 #include "scenes.h"
@@ -195,5 +200,63 @@ int main(int argc, char** argv) {
         "the in-process stages above, plus process start and reading the file");
     row("end to end ≥ 5× llvmpipe + stb, HTTP", fmt("%.2fx (worst scene)", http), http >= 5,
         "the in-process stages above, plus moving the request and the PNG over loopback");
+  }
+
+  // Models through the service (issue 29's targets): a warm server's Server-Timing for an OBJ body, against
+  // tinyobjloader reading the same text in this process and llvmpipe drawing the same mesh, at 2 threads.
+  if (!rasterd.empty()) {
+    std::printf("\n## Models through the service (issue 29)\n\n"
+                "A warm `rasterd serve` (render threads: every core) answering POST /render with the model as the "
+                "raw body, medians of %d requests of its Server-Timing; *tinyobjloader* is its `ParseFromString` on "
+                "the same text in this process (triangulating, as rasterd asks it to); *llvmpipe* draws the same "
+                "mesh at %d threads (depth test, one light; the service's default scene lights a model with "
+                "three). Targets: parse ≤ 1.3× tinyobjloader, raster ≥ 1.5× llvmpipe (sphere) and ≥ 2× (bunny), "
+                "the request ≤ 1× tinyobjloader + llvmpipe.\n\n",
+                std::max(3, runs / 2), cores);
+    std::printf("| model | OBJ MB | parse ms | tinyobjloader ms | parse / tinyobjloader | raster ms | llvmpipe ms | "
+                "raster vs llvmpipe | request ms | request / (tinyobjloader + llvmpipe) |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const char* model : {"sphere", "bunny"}) {
+      std::string obj;
+      std::string query;
+      try {
+        const raster::Scene scene = bench::mesh_scene(model);
+        const raster::Mesh& mesh = scene.meshes[0];
+        obj.reserve(mesh.positions.size() * 40 + mesh.triangles.size() * 30);
+        char line[128];
+        for (const raster::Vec3& v : mesh.positions) {
+          const int n = std::snprintf(line, sizeof line, "v %.7g %.7g %.7g\n", v.x, v.y, v.z);
+          obj.append(line, static_cast<std::size_t>(n));
+        }
+        for (const auto& t : mesh.triangles) {
+          const int n = std::snprintf(line, sizeof line, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
+          obj.append(line, static_cast<std::size_t>(n));
+        }
+        query = "width=" + std::to_string(scene.width) + "&height=" + std::to_string(scene.height);
+      } catch (const std::exception& e) {
+        std::printf("| %s | %s | | | | | | | | |\n", model, e.what());
+        continue;
+      }
+      // With the allocator policy `rasterd serve` sets at start (freed heap pages kept), so tinyobjloader's
+      // arrays are as warm here as the server's are.
+#if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
+      mallopt(M_MMAP_THRESHOLD, 64 << 20);
+      mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
+      const double theirs_parse = bench::median_ms(std::max(3, runs / 2), [&] {
+        tinyobj::ObjReader reader;
+        tinyobj::ObjReaderConfig config;
+        config.triangulate = true;
+        config.vertex_color = false;
+        reader.ParseFromString(obj, "", config);
+      });
+      const bench::ServerTimes ours = bench::server_times(rasterd, obj, query, std::max(3, runs / 2));
+      const double peer_raster = llvmpipe.count(cores) && llvmpipe[cores].count(model) ? llvmpipe[cores][model] : 0;
+      const double request = ours.parse_ms + ours.raster_ms + ours.encode_ms;
+      std::printf("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f | %.2fx | %.1f | %.2f |\n", model, obj.size() / 1e6,
+                  ours.parse_ms, theirs_parse, ours.parse_ms / theirs_parse, ours.raster_ms, peer_raster,
+                  peer_raster > 0 ? peer_raster / ours.raster_ms : 0.0, request,
+                  peer_raster > 0 ? request / (theirs_parse + peer_raster) : 0.0);
+    }
   }
 }

@@ -81,4 +81,31 @@ WallTimes wall_times(const std::string& rasterd, const std::string& scene_json, 
   return out;
 }
 
+ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query, int runs) {
+  const int port = 20000 + static_cast<int>((getpid() + 1) % 20000);
+  const pid_t server = spawn({rasterd, "serve", "--host", "127.0.0.1", "--port", std::to_string(port),
+                              "--max-body-bytes", "268435456", "--render-deadline-ms", "120000"});
+  httplib::Client client("127.0.0.1", port);
+  client.set_read_timeout(120, 0);
+  for (int tries = 0; !client.Get("/healthz") && tries < 200; ++tries)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  std::vector<double> stage[3];
+  for (int r = 0; r <= runs; ++r) {  // the first request warms the server up and is not counted
+    const auto res = client.Post("/render?" + query, body, "text/plain");
+    if (!res || res->status != 200) {
+      kill(server, SIGKILL);
+      waitpid(server, nullptr, 0);
+      throw std::runtime_error("POST /render of a model failed");
+    }
+    const std::string timing = res->get_header_value("Server-Timing");
+    const char* names[3] = {"parse;dur=", "raster;dur=", "encode;dur="};
+    for (int k = 0; k < 3 && r > 0; ++k)
+      if (const auto at = timing.find(names[k]); at != std::string::npos)
+        stage[k].push_back(std::stod(timing.substr(at + std::char_traits<char>::length(names[k]))));
+  }
+  kill(server, SIGTERM);
+  waitpid(server, nullptr, 0);
+  return {median(stage[0]), median(stage[1]), median(stage[2])};
+}
+
 }  // namespace bench

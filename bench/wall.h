@@ -15,4 +15,12 @@ struct WallTimes {
 /// Runs `rasterd` (a path) both ways on `scene_json`, `runs` times each.
 WallTimes wall_times(const std::string& rasterd, const std::string& scene_json, int runs);
 
+/// A warm server's own account of a request (its Server-Timing header), medians, milliseconds.
+struct ServerTimes {
+  double parse_ms = 0, raster_ms = 0, encode_ms = 0;
+};
+
+/// POSTs `body` (a model) to `rasterd serve` at /render?`query`, `runs` times after one warm-up request.
+ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query, int runs);
+
 }  // namespace bench
