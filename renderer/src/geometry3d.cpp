@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <memory>
 #include <numbers>
 #include <span>
 #include <tuple>
-#include <type_traits>
 
 #include "geometry.h"
 #include "memory.h"
@@ -183,8 +181,9 @@ struct ScreenVertex {
   float inv_w;        ///< 1 / w
 };
 
-/// Meshes with at least this many vertices (triangles) have them transformed (set up) in pieces of this
-/// size on every render thread; smaller ones stay on the calling thread.
+/// Meshes with at least twice this many vertices (triangles) have them transformed (set up, and their
+/// normals computed) on every render thread: vertices in pieces of this size, triangles in four pieces a
+/// thread of at least this size. Smaller ones stay on the calling thread.
 constexpr std::size_t kPiece = 16384;
 
 /// A mesh through the camera: every vertex once (which clip planes it is outside of, its world position,
@@ -301,7 +300,8 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
   const PodArray<Vec3>& world = view.world;
   const bool light_per_pixel = mode.light_per_pixel;
   const std::size_t floats = static_cast<std::size_t>(setup.calls[call].layout.size);
-  part.triangles.reserve(end - begin), part.order.reserve(end - begin), part.attributes.reserve((end - begin) * floats);
+  part.triangles.reserve_more(end - begin), part.order.reserve_more(end - begin);
+  part.attributes.reserve_more((end - begin) * floats);
   for (std::size_t t = begin; t < end; ++t) {
     if (meter.add(StopMeter::kPrimitiveWork)) return;  // deadline: a mesh can be millions of triangles
     const auto& tri = mesh.triangles[t];
@@ -410,6 +410,10 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   const int threads = count >= 2 * kPiece ? view.plan.threads : 1;
   const std::size_t size = threads > 1 ? std::max(kPiece, (count + 4 * threads - 1) / (4 * threads)) : count;
   const std::size_t pieces = count ? (count + size - 1) / size : 0;
+  if (pieces <= 1) {  // one piece: into the current part, as 2D records are (no part per small mesh)
+    job.run(0, count, setup.last_part(), meter);
+    return;
+  }
   const std::size_t first = setup.parts.size();
   setup.parts.resize(first + pieces);
   parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {

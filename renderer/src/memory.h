@@ -63,9 +63,13 @@ class PodArray {
     block_ = fresh;  // freed as it was given: its bytes need not be a multiple of sizeof(T)
     data_ = static_cast<T*>(fresh.data), capacity_ = fresh.bytes / sizeof(T);
   }
+  /// Room for `n` more elements, growing geometrically (so that many small additions cost linear time).
+  void reserve_more(std::size_t n) {
+    if (size_ + n > capacity_) reserve(std::max(size_ + n, capacity_ * 2));
+  }
   /// Appends `n` elements, not initialised, and returns the first.
   T* grow(std::size_t n) {
-    if (size_ + n > capacity_) reserve(std::max(size_ + n, capacity_ * 2));
+    reserve_more(n);
     T* first = data_ + size_;
     size_ += n;
     return first;

@@ -80,7 +80,6 @@ struct Surface {
 ///   uv: 3 x (u, v)                         (mode.textured)
 ///   position: 3 x xyz                      (mode.position_per_pixel)
 struct AttributeLayout {
-  static constexpr int kMax = 12 + 3 + 3 + 9 + 6 + 9;  ///< floats of a record with every attribute
   int color = 0, depth = -1, inv_w = -1, normal = -1, uv = -1, position = -1, size = 0;
   static AttributeLayout of(const PrimitivePlan& mode);
 };
@@ -156,7 +155,7 @@ struct LineRecord {
 /// A record in scene order: which kind and its index in that kind's array.
 struct RecordRef {
   static constexpr std::uint32_t kLineBit = 1u << 31;
-  std::uint32_t value = 0;  ///< index into Setup::triangles, or kLineBit | index into Setup::lines
+  std::uint32_t value = 0;  ///< index into its part's triangles, or kLineBit | index into its part's lines
 };
 
 /// A run of records in scene order, with the storage they index. A setup is a sequence of parts so that the
