@@ -10,9 +10,6 @@
 #include <thread>
 #include <vector>
 
-#if __has_include(<malloc.h>)
-#include <malloc.h>  // mallopt (glibc)
-#endif
 #include <tiny_obj_loader.h>
 
 #include "raster/raster.h"
@@ -237,12 +234,6 @@ int main(int argc, char** argv) {
         std::printf("| %s | %s | | | | | | | | |\n", model, e.what());
         continue;
       }
-      // With the allocator policy `rasterd serve` sets at start (freed heap pages kept), so tinyobjloader's
-      // arrays are as warm here as the server's are.
-#if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
-      mallopt(M_MMAP_THRESHOLD, 64 << 20);
-      mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
       const double theirs_parse = bench::median_ms(std::max(3, runs / 2), [&] {
         tinyobj::ObjReader reader;
         tinyobj::ObjReaderConfig config;

@@ -2,9 +2,6 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
-#if __has_include(<malloc.h>)
-#include <malloc.h>  // mallopt (glibc)
-#endif
 
 #include <cerrno>
 #include <condition_variable>
@@ -173,19 +170,7 @@ int run_render(const std::vector<std::string>& args) {
   }
 }
 
-// Set once when the server starts, before any request. glibc gives blocks above 128 KiB back to the kernel
-// as soon as they are freed (raising that bound only as it sees large frees), so a model's parse faulted
-// fresh pages on some requests and not others: the 400k-triangle OBJ parsed in 190-1,000 ms on a warm
-// server. Keeping up to 256 MiB of freed heap lets each request reuse the pages the last one touched.
-void keep_freed_heap_pages() {
-#if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
-  mallopt(M_MMAP_THRESHOLD, 64 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
-}
-
 int run_serve(const std::vector<std::string>& args) {
-  keep_freed_heap_pages();
   std::string host = "0.0.0.0";
   int port = 8080;
   rasterd::ServiceConfig config;
