@@ -6,7 +6,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <istream>
 #include <map>
+#include <streambuf>
 #include <string>
 
 #include <tiny_obj_loader.h>
@@ -393,6 +395,19 @@ std::vector<std::string> obj_files(std::string_view obj_text, std::string_view m
   return names;
 }
 
+namespace {
+
+// A read-only stream buffer over text held elsewhere (tinyobjloader reads lines with sbumpc/sgetc only).
+class TextBuf : public std::streambuf {
+ public:
+  explicit TextBuf(std::string_view text) {
+    char* first = const_cast<char*>(text.data());  // a get area only: nothing is written through it
+    setg(first, first, first + text.size());
+  }
+};
+
+}  // namespace
+
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits, const Uploads& files) {
   // Checked first: names and tokens of the model are quoted in its errors.
   require_utf8(obj_text, "the model (OBJ)", true);
@@ -411,15 +426,23 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   }
   const MtlPass mtl = read_mtl(mtl_text);
 
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;  // colours only where the file has them (no white fallback)
-  tinyobj::ObjReader reader;
-  // From memory: a `mtllib` line reads the uploaded MTL text, never a file named in the upload.
-  if (!reader.ParseFromString(std::string(obj_text), mtl.text, config))
-    model_error(0, "the model could not be parsed: " + reader.Error());
+  // What ObjReader::ParseFromString does (triangulated, colours only where the file has them: no white
+  // fallback), on a stream over the text where it lies: ParseFromString copied a model twice (into a
+  // std::string, then into a stringbuf), 2 x its size of fresh memory per request. From memory: a `mtllib`
+  // line reads the uploaded MTL text, never a file named in the upload.
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  {
+    TextBuf obj_buf(obj_text), mtl_buf(mtl.text);
+    std::istream obj_stream(&obj_buf), mtl_stream(&mtl_buf);
+    tinyobj::MaterialStreamReader mtl_reader(mtl_stream);
+    std::string warning, error;
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &obj_stream, &mtl_reader,
+                          /*triangulate=*/true, /*default_vcols_fallback=*/false))
+      model_error(0, "the model could not be parsed: " + error);
+  }
 
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
   Mesh mesh;
   mesh.positions.reserve(attrib.vertices.size() / 3);
   for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
@@ -434,7 +457,6 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
                              unit_byte(attrib.colors[i + 2]), 255});
   }
 
-  const auto& materials = reader.GetMaterials();
   // Per material: its MTL extras, and the index of its texture in mesh.textures once decoded (each file
   // decoded once, however many materials use it), -1 without one.
   std::vector<const MaterialExtra*> extras(materials.size(), nullptr);
@@ -473,11 +495,11 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   bool any_material = false, all_normals = true;
   std::vector<Rgba8> face_colors;
   std::size_t triangles = 0;  // sized once: growing them by doubling copied a large model's arrays ~20 times
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) triangles += shape.mesh.indices.size() / 3;
+  for (const tinyobj::shape_t& shape : shapes) triangles += shape.mesh.indices.size() / 3;
   mesh.triangles.reserve(triangles), face_colors.reserve(triangles);
   if (!attrib.normals.empty()) mesh.normal_triangles.reserve(triangles);
   if (!mesh.textures.empty()) mesh.face_textures.reserve(triangles), mesh.uv_triangles.reserve(triangles);
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+  for (const tinyobj::shape_t& shape : shapes) {
     const auto& idx = shape.mesh.indices;
     for (std::size_t f = 0; f * 3 + 2 < idx.size(); ++f) {
       const tinyobj::index_t* c = &idx[f * 3];
