@@ -20,7 +20,7 @@ struct ServerTimes {
   double parse_ms = 0, raster_ms = 0, encode_ms = 0;
 };
 
-/// POSTs `body` (a model) to `rasterd serve` at /render?`query`, `runs` times after one warm-up request.
+/// POSTs `body` (a model) to `rasterd serve` at /render?`query`, `runs` times after four warm-up requests.
 ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query, int runs);
 
 }  // namespace bench
