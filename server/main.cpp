@@ -176,9 +176,10 @@ int run_render(const std::vector<std::string>& args) {
 // Set once when the server starts, before any request (not per request): glibc hands allocations above
 // 128 KiB to the kernel as fresh mappings and returns freed heap to it, raising those bounds only as it
 // happens to see large frees, so whether a request's image, PNG and model arrays land on pages the last
-// request touched was luck. Minor faults per request on a warm server (field 10 of /proc/PID/stat over 5 of
-// ab-bench's scenes after 3): without this 924 / 1,378 / 2,523 / 9,681 for 2d-large-tris / 2d-lines / 2d-small-tris /
-// obj-sphere-400k; with it 0 / 0 / 0 / 7. The render's own large arrays are kept apart (renderer/src/memory.h).
+// request touched was luck. Minor faults per request of a warm server (field 10 of /proc/PID/stat, 5
+// requests of each ab-bench scene after 3 uncounted), 2d-large-tris / 2d-lines / 2d-small-tris /
+// obj-sphere-400k: 924 / 1,378 / 2,523 / 9,681 without this, 0 / 0 / 0 / 5-7 with it. The render's own
+// large arrays are kept apart (renderer/src/memory.h).
 void keep_freed_pages() {
 #if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
