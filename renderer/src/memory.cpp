@@ -15,15 +15,13 @@ namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
-// Large blocks are mapped directly, not taken from malloc's heap: kept blocks living inside that heap split
-// its free memory, and a model's parse, which allocates there, then faulted fresh pages on every request
-// (the 400k-triangle OBJ's parse went from 190-300 ms to 460-560 ms on a warm server).
+// Large blocks are mapped directly rather than taken from malloc: a kept block then holds no part of the
+// heap that the rest of a request (the model's parse, the image, the PNG) reuses from request to request.
 void* map_block(std::size_t bytes) {
 #if defined(__linux__)
   // One alignment more than needed, then the unaligned ends given back: aligned blocks can take huge pages
   // where the system gives them to every mapping (THP "always"). Not advised with MADV_HUGEPAGE: with blocks
-  // kept it gains nothing measurable (the sphere at 2 threads, 68-72 ms either way), and the next request's
-  // OBJ parse measured slower with it (median 571 vs 407 ms, alternating requests).
+  // kept it gains nothing measurable (the sphere at 2 threads, 68-72 ms either way).
   const std::size_t span = bytes + kHugePage;
   void* p = ::mmap(nullptr, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (p == MAP_FAILED) throw std::bad_alloc();
