@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
     const char* kind;
     double ratio;  // required llvmpipe time / ours
   };
-  const Target targets[] = {{"small", 2.5}, {"large", 2}, {"grid", 2}, {"flat", 2}, {"sphere", 1.5}, {"bunny", 2}};
+  const Target targets[] = {{"small", 2.5}, {"large", 2},    {"grid", 2},
+                            {"flat", 2},    {"sphere", 1.5}, {"bunny", 2}};
   std::printf("| scene | threads | triangles | raster ms | llvmpipe ms | vs llvmpipe | target | verdict |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---|\n");
   std::map<std::string, double> flat_ms;
@@ -109,13 +110,14 @@ int main(int argc, char** argv) {
   // What blocks the gaps, from the stage times above.
   if (stage.count("sphere")) {
     const Stages& st = stage["sphere"];
-    std::printf("\nWhere the sphere's time goes at 1 thread: geometry + setup %.0f%% (%.1f ms: each vertex transformed "
-                "and its angle-weighted normal computed once, facing per face, and one 88-byte record plus 76 bytes of "
-                "attributes for each triangle that holds a pixel centre), tiles %.0f%% (%.1f ms). Every stage but the "
-                "plan runs on all the render's threads: vertices, normals and triangles in pieces, each piece's records "
-                "binned on their own.\n",
-                100 * st.geometry / (st.geometry + st.bin + st.clear + st.tiles), st.geometry,
-                100 * st.tiles / (st.geometry + st.bin + st.clear + st.tiles), st.tiles);
+    std::printf(
+        "\nWhere the sphere's time goes at 1 thread: geometry + setup %.0f%% (%.1f ms: each vertex transformed "
+        "and its angle-weighted normal computed once, facing per face, and one 88-byte record plus 76 "
+        "bytes of attributes for each triangle that holds a pixel centre), tiles %.0f%% (%.1f ms). Every "
+        "stage but the plan runs on all the render's threads: vertices, normals and triangles in pieces, "
+        "each piece's records binned on their own.\n",
+        100 * st.geometry / (st.geometry + st.bin + st.clear + st.tiles), st.geometry,
+        100 * st.tiles / (st.geometry + st.bin + st.clear + st.tiles), st.tiles);
     if (raster_ms["sphere"].count(1) && raster_ms["sphere"].count(2)) {
       const double speedup = raster_ms["sphere"][1] / raster_ms["sphere"][2];
       std::printf("The sphere from 1 thread to 2: %.2fx faster (target 1.7x: %s).\n", speedup,

@@ -202,16 +202,18 @@ int main(int argc, char** argv) {
   // Models through the service (issue 29's targets): a warm server's Server-Timing for an OBJ body, against
   // tinyobjloader reading the same text in this process and llvmpipe drawing the same mesh, at 2 threads.
   if (!rasterd.empty()) {
-    std::printf("\n## Models through the service (issue 29)\n\n"
-                "A warm `rasterd serve` (render threads: every core) answering POST /render with the model as the "
-                "raw body, medians of %d requests of its Server-Timing (after four not counted); *tinyobjloader* is its `ParseFromString` on "
-                "the same text in this process (triangulating, as rasterd asks it to); *llvmpipe* draws the same "
-                "mesh at %d threads (depth test, one light; the service's default scene lights a model with "
-                "three). Targets: parse ≤ 1.3× tinyobjloader, raster ≥ 1.5× llvmpipe (sphere) and ≥ 2× (bunny), "
-                "the request ≤ 1× tinyobjloader + llvmpipe.\n\n",
-                std::max(5, runs), cores);
-    std::printf("| model | OBJ MB | parse ms | tinyobjloader ms | parse / tinyobjloader | raster ms | llvmpipe ms | "
-                "raster vs llvmpipe | request ms | request / (tinyobjloader + llvmpipe) |\n");
+    std::printf(
+        "\n## Models through the service (issue 29)\n\n"
+        "A warm `rasterd serve` (render threads: every core) answering POST /render with the model as the "
+        "raw body, medians of %d requests of its Server-Timing (after four not counted); *tinyobjloader* is "
+        "its `ParseFromString` on the same text in this process (triangulating, as rasterd asks it to); "
+        "*llvmpipe* draws the same mesh at %d threads (depth test, one light; the service's default scene lights a model with "
+        "three). Targets: parse ≤ 1.3× tinyobjloader, raster ≥ 1.5× llvmpipe (sphere) and ≥ 2× (bunny), "
+        "the request ≤ 1× tinyobjloader + llvmpipe.\n\n",
+        std::max(5, runs), cores);
+    std::printf(
+        "| model | OBJ MB | parse ms | tinyobjloader ms | parse / tinyobjloader | raster ms | llvmpipe ms | "
+        "raster vs llvmpipe | request ms | request / (tinyobjloader + llvmpipe) |\n");
     std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const char* model : {"sphere", "bunny"}) {
       std::string obj;
@@ -242,11 +244,12 @@ int main(int argc, char** argv) {
         reader.ParseFromString(obj, "", config);
       });
       const bench::ServerTimes ours = bench::server_times(rasterd, obj, query, std::max(5, runs));
-      const double peer_raster = llvmpipe.count(cores) && llvmpipe[cores].count(model) ? llvmpipe[cores][model] : 0;
+      const double peer_raster =
+          llvmpipe.count(cores) && llvmpipe[cores].count(model) ? llvmpipe[cores][model] : 0;
       const double request = ours.parse_ms + ours.raster_ms + ours.encode_ms;
-      std::printf("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f | %.2fx | %.1f | %.2f |\n", model, obj.size() / 1e6,
-                  ours.parse_ms, theirs_parse, ours.parse_ms / theirs_parse, ours.raster_ms, peer_raster,
-                  peer_raster > 0 ? peer_raster / ours.raster_ms : 0.0, request,
+      std::printf("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f | %.2fx | %.1f | %.2f |\n", model,
+                  obj.size() / 1e6, ours.parse_ms, theirs_parse, ours.parse_ms / theirs_parse, ours.raster_ms,
+                  peer_raster, peer_raster > 0 ? peer_raster / ours.raster_ms : 0.0, request,
                   peer_raster > 0 ? request / (theirs_parse + peer_raster) : 0.0);
     }
   }

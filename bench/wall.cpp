@@ -81,7 +81,8 @@ WallTimes wall_times(const std::string& rasterd, const std::string& scene_json, 
   return out;
 }
 
-ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query, int runs) {
+ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query,
+                         int runs) {
   const int port = 20000 + static_cast<int>((getpid() + 1) % 20000);
   const pid_t server = spawn({rasterd, "serve", "--host", "127.0.0.1", "--port", std::to_string(port),
                               "--max-body-bytes", "268435456", "--render-deadline-ms", "120000"});

@@ -21,6 +21,7 @@ struct ServerTimes {
 };
 
 /// POSTs `body` (a model) to `rasterd serve` at /render?`query`, `runs` times after four warm-up requests.
-ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query, int runs);
+ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query,
+                         int runs);
 
 }  // namespace bench

@@ -113,8 +113,10 @@ raster::Scene sphere_scene(int n, int side) {
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j) {
       const double theta = pi * i / n, phi = 2 * pi * j / n;
-      mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
-      mesh.colors.push_back({static_cast<std::uint8_t>(i * 255 / n), static_cast<std::uint8_t>(j * 255 / n), 128, 255});
+      mesh.positions.push_back(
+          {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+      mesh.colors.push_back(
+          {static_cast<std::uint8_t>(i * 255 / n), static_cast<std::uint8_t>(j * 255 / n), 128, 255});
       mesh.uvs.push_back({static_cast<float>(j) / n * 4, static_cast<float>(i) / n * 4});
     }
   auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
@@ -131,7 +133,8 @@ raster::Scene sphere_scene(int n, int side) {
     checker.rgba.insert(checker.rgba.end(), {v, v, 255, 255});
   }
   mesh.textures.push_back(checker);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) mesh.face_textures.push_back((t / 512) % 2 ? 0 : -1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    mesh.face_textures.push_back((t / 512) % 2 ? 0 : -1);
   s.meshes.push_back(std::move(mesh));
   raster::Primitive p;
   p.kind = raster::PrimitiveKind::mesh;

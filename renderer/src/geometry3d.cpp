@@ -128,7 +128,8 @@ double arc_cosine(double x) {
       1.5707963050 +
       a * (-0.2145988016 +
            a * (0.0889789874 +
-                a * (-0.0501743046 + a * (0.0308918810 + a * (-0.0170881256 + a * (0.0066700901 + a * -0.0012624911))))));
+                a * (-0.0501743046 +
+                     a * (0.0308918810 + a * (-0.0170881256 + a * (0.0066700901 + a * -0.0012624911))))));
   const double r = std::sqrt(1 - a) * p;
   return x < 0 ? std::numbers::pi - r : r;
 }
@@ -136,9 +137,9 @@ double arc_cosine(double x) {
 // Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
 // the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
 //
-// On several threads each takes a range of the vertices and goes through all the triangles, adding only to its
-// own vertices: every vertex still sums its faces in triangle order, so the normals are the same bits for any
-// thread count (a triangle whose corners lie in two ranges is measured twice).
+// On several threads each takes a range of the vertices and goes through all the triangles, adding only to
+// its own vertices: every vertex still sums its faces in triangle order, so the normals are the same bits for
+// any thread count (a triangle whose corners lie in two ranges is measured twice).
 PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, StopMeter& meter) {
   const std::size_t nv = world.size();
   PodArray<Vec3> normals;
@@ -161,7 +162,8 @@ PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int
       const double len[3] = {length(edge[0]), length(edge[1]), length(edge[2])};
       for (int k = 0; k < 3; ++k) {
         if (!corner[k]) continue;
-        const int prev = (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
+        const int prev =
+            (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
         const double norms = len[k] * len[prev];
         const double cosine = norms > 0 && std::isfinite(norms) ? -dot(edge[k], edge[prev]) / norms : 0.0;
         const double angle = arc_cosine(std::clamp(cosine, -1.0, 1.0));
@@ -196,12 +198,15 @@ struct MeshView {
   Viewport viewport;
   Mat4 model_to_clip;
   // Per vertex, each written once before it is read:
-  PodArray<std::uint8_t> outside;  ///< bit p: outside plane p; 0x40: inside but not projectable; 0x80: not finite
-  PodArray<ScreenVertex> screen;   ///< valid where outside == 0
-  PodArray<Vec3> world;            ///< world positions
+  PodArray<std::uint8_t>
+      outside;  ///< bit p: outside plane p; 0x40: inside but not projectable; 0x80: not finite
+  PodArray<ScreenVertex> screen;  ///< valid where outside == 0
+  PodArray<Vec3> world;           ///< world positions
 
   MeshView(const Mesh& m, const RenderPlan& p)
-      : mesh(m), plan(p), planes{1 + 2 * kGuardPx / p.width, 1 + 2 * kGuardPx / p.height},
+      : mesh(m),
+        plan(p),
+        planes{1 + 2 * kGuardPx / p.width, 1 + 2 * kGuardPx / p.height},
         viewport{static_cast<double>(p.width), static_cast<double>(p.height)},
         model_to_clip(p.view.world_to_clip * m.transform) {
     outside.resize_uninitialized(m.positions.size()), screen.resize_uninitialized(m.positions.size()),
@@ -232,7 +237,8 @@ struct MeshView {
     }
     const ClipVertex v{c.x, c.y, c.z, c.w, {}};
     std::uint8_t bits = 0;
-    for (int plane = 0; plane < kPlaneCount; ++plane) bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
+    for (int plane = 0; plane < kPlaneCount; ++plane)
+      bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
     outside[i] = bits;
     if (bits) return;
     double sx, sy, depth, inv_w;
@@ -288,7 +294,7 @@ struct TriangleJob {
   std::uint32_t call;                        ///< faces without a texture (or untextured meshes)
   std::vector<std::uint32_t> texture_calls;  ///< textured: the call of each of the mesh's textures
   PodArray<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
-  Vec3 forward;               ///< unit view direction
+  Vec3 forward;            ///< unit view direction
 
   // Triangles [begin, end) into `part`, in order.
   void run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const;
@@ -363,7 +369,8 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
       }
     }
     if (any_out == 0) {  // inside every plane: the vertices were projected once
-      for (int k = 0; k < 3; ++k) dv[k].depth = view.screen[tri[k]].depth, dv[k].inv_w = view.screen[tri[k]].inv_w;
+      for (int k = 0; k < 3; ++k)
+        dv[k].depth = view.screen[tri[k]].depth, dv[k].inv_w = view.screen[tri[k]].inv_w;
       setup.append(part, record, triangle_call, {&dv[order[0]], &dv[order[1]], &dv[order[2]]}, back);
       continue;
     }
@@ -391,7 +398,8 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
       job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
                                    mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1, meter);
     else
-      for (const Vec3& n : mesh.normals) job.normals.push_back(normalize(transform_point(to_world_normal, n)));
+      for (const Vec3& n : mesh.normals)
+        job.normals.push_back(normalize(transform_point(to_world_normal, n)));
     if (meter.stopped()) return;
   }
   DrawCall call = make_call(mode);

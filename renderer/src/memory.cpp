@@ -28,7 +28,8 @@ void* map_block(std::size_t bytes) {
   const auto at = reinterpret_cast<std::uintptr_t>(p);
   const std::uintptr_t aligned = (at + kHugePage - 1) / kHugePage * kHugePage;
   if (aligned > at) ::munmap(p, aligned - at);
-  if (const std::size_t tail = at + span - (aligned + bytes)) ::munmap(reinterpret_cast<void*>(aligned + bytes), tail);
+  if (const std::size_t tail = at + span - (aligned + bytes))
+    ::munmap(reinterpret_cast<void*>(aligned + bytes), tail);
   return reinterpret_cast<void*>(aligned);
 #else
   void* p = std::aligned_alloc(kHugePage, bytes);

@@ -19,7 +19,8 @@ namespace raster::detail {
 /// stopped thread takes no further piece, and the caller sees `stop.stopped`.
 template <typename Work>
 void parallel_for(int threads, std::size_t count, const Stop& stop, Work&& work) {
-  const int n = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count));
+  const int n =
+      static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count));
   std::atomic<std::size_t> next{0};
   auto run = [&](int thread) {
     StopMeter meter(stop);

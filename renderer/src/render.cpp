@@ -150,8 +150,8 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
         close();
         if (surface.coverage && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
       } else {
-        reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0), std::max(reached.x1, clip.x1),
-                   std::max(reached.y1, clip.y1)};
+        reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0),
+                   std::max(reached.x1, clip.x1), std::max(reached.y1, clip.y1)};
       }
       draw_triangle<C>(f.setup, part, t, surface, clip, coverage, lanes, meter);
     }
@@ -265,7 +265,8 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     control.stats->pixel_bytes = bytes;
     std::size_t bin_bytes = 0;
     for (const detail::Bins::Part& part : bins.parts)
-      bin_bytes += part.records.size() * sizeof(detail::RecordRef) + part.offsets.size() * sizeof(std::uint32_t);
+      bin_bytes +=
+          part.records.size() * sizeof(detail::RecordRef) + part.offsets.size() * sizeof(std::uint32_t);
     control.stats->bin_bytes = static_cast<std::int64_t>(bin_bytes);
     control.stats->records = static_cast<std::int64_t>(setup.record_count());
     control.stats->bin_entries = static_cast<std::int64_t>(bins.entry_count());
@@ -273,10 +274,10 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   lap(&RenderStats::clear_ms);
   const Frame frame{setup, bins, plan, image};
   // Tiles are taken in order; which thread takes one does not change its bytes. One thread: no hand-off.
-  detail::parallel_for(threads, static_cast<std::size_t>(tiles), stop,
-                       [&](std::size_t t, detail::StopMeter& own, int thread) {
-                         draw_tile(frame, static_cast<int>(t), scratch[static_cast<std::size_t>(thread)], own);
-                       });
+  detail::parallel_for(
+      threads, static_cast<std::size_t>(tiles), stop, [&](std::size_t t, detail::StopMeter& own, int thread) {
+        draw_tile(frame, static_cast<int>(t), scratch[static_cast<std::size_t>(thread)], own);
+      });
   if (stopped) throw cancelled();
   lap(&RenderStats::tiles_ms);
   if (control.stats) {

@@ -42,7 +42,8 @@ std::pair<int, int> pixel_span(double lo, double hi, int size) {
 // pixel can be covered, so the box is no larger than the samples it may hold (often empty for a sliver).
 std::pair<int, int> centre_span(double lo, double hi, int size) {
   const double half = kSubpixelScale / 2;
-  const double first = std::ceil((lo - half) / kSubpixelScale), last = std::floor((hi - half) / kSubpixelScale);
+  const double first = std::ceil((lo - half) / kSubpixelScale),
+               last = std::floor((hi - half) / kSubpixelScale);
   return {static_cast<int>(std::clamp(first, 0.0, static_cast<double>(size))),
           static_cast<int>(std::clamp(last + 1, 0.0, static_cast<double>(size)))};
 }
@@ -103,8 +104,10 @@ bool Setup::fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3
   const std::int64_t size[2] = {width, height};
   int first[2], end[2];
   for (int d = 0; d < 2; ++d) {
-    const std::int64_t f = centre_samples ? (lo[d] + kSubpixelScale / 2 - 1) >> kSubpixelBits : lo[d] >> kSubpixelBits;
-    const std::int64_t l = centre_samples ? (hi[d] - kSubpixelScale / 2) >> kSubpixelBits : hi[d] >> kSubpixelBits;
+    const std::int64_t f =
+        centre_samples ? (lo[d] + kSubpixelScale / 2 - 1) >> kSubpixelBits : lo[d] >> kSubpixelBits;
+    const std::int64_t l =
+        centre_samples ? (hi[d] - kSubpixelScale / 2) >> kSubpixelBits : hi[d] >> kSubpixelBits;
     first[d] = static_cast<int>(std::clamp<std::int64_t>(f, 0, size[d]));
     end[d] = static_cast<int>(std::clamp<std::int64_t>(l + 1, 0, size[d]));
   }
@@ -125,7 +128,8 @@ bool Setup::fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3
            !covers_a_centre(r.edges, r.box));
 }
 
-void Setup::add_triangle(Records& part, std::uint32_t call, const SetupVertex (&given)[3], bool back_facing) const {
+void Setup::add_triangle(Records& part, std::uint32_t call, const SetupVertex (&given)[3],
+                         bool back_facing) const {
   const SetupVertex* v[3] = {&given[0], &given[1], &given[2]};
   const double min_x = std::min({given[0].x, given[1].x, given[2].x}),
                max_x = std::max({given[0].x, given[1].x, given[2].x});
@@ -137,7 +141,8 @@ void Setup::add_triangle(Records& part, std::uint32_t call, const SetupVertex (&
                       std::max(std::fabs(min_y), std::fabs(max_y)) <= kFastUnits);
   if (!wide) {
     FastTriangle t;
-    for (int k = 0; k < 3; ++k) t.x[k] = static_cast<std::int64_t>(v[k]->x), t.y[k] = static_cast<std::int64_t>(v[k]->y);
+    for (int k = 0; k < 3; ++k)
+      t.x[k] = static_cast<std::int64_t>(v[k]->x), t.y[k] = static_cast<std::int64_t>(v[k]->y);
     int order[3];
     if (!fast_record(t, r, order)) return;
     for (int k = 0; k < 3; ++k) v[k] = &given[order[k]];

@@ -9,9 +9,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "memory.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
-#include "memory.h"
 #include "stop.h"
 #include "texture.h"
 #include "wide.h"
@@ -191,7 +191,8 @@ struct Setup {
   /// Sets up a triangle from three snapped vertices into `part`; degenerate ones and ones that miss the
   /// image are not added. Colours only (2D) or every attribute of `call`'s layout (3D). Reads only the
   /// setup's calls and image: threads may fill different parts at once.
-  void add_triangle(Records& part, std::uint32_t call, const SetupVertex (&v)[3], bool back_facing = false) const;
+  void add_triangle(Records& part, std::uint32_t call, const SetupVertex (&v)[3],
+                    bool back_facing = false) const;
   void add_triangle(std::uint32_t call, const SetupVertex (&v)[3], bool back_facing = false) {
     add_triangle(last_part(), call, v, back_facing);
   }
