@@ -111,11 +111,11 @@ int main(int argc, char** argv) {
   if (stage.count("sphere")) {
     const Stages& st = stage["sphere"];
     std::printf(
-        "\nWhere the sphere's time goes at 1 thread: geometry + setup %.0f%% (%.1f ms: each vertex transformed "
-        "and its angle-weighted normal computed once, facing per face, and one 88-byte record plus 76 "
-        "bytes of attributes for each triangle that holds a pixel centre), tiles %.0f%% (%.1f ms). Every "
-        "stage but the plan runs on all the render's threads: vertices, normals and triangles in pieces, "
-        "each piece's records binned on their own.\n",
+        "\nWhere the sphere's time goes at 1 thread: geometry + setup %.0f%% (%.1f ms: "
+        "each vertex transformed and its angle-weighted normal computed once, facing per face, "
+        "and one 88-byte record plus 76 bytes of attributes for each triangle that holds a pixel "
+        "centre), tiles %.0f%% (%.1f ms). Every stage but the plan runs on all the render's threads: "
+        "vertices, normals and triangles in pieces, each piece's records binned on their own.\n",
         100 * st.geometry / (st.geometry + st.bin + st.clear + st.tiles), st.geometry,
         100 * st.tiles / (st.geometry + st.bin + st.clear + st.tiles), st.tiles);
     if (raster_ms["sphere"].count(1) && raster_ms["sphere"].count(2)) {
