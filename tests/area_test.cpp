@@ -253,7 +253,7 @@ TEST(Area, ThePlanKeepsAreaFor2DAndMultisamples3D) {
       {"type": "line", "points": [[0, 0], [8, 8]], "color": "#ffffff"}]})");
   EXPECT_TRUE(flat.area);
   const raster::RenderPlan p = raster::plan(flat);
-  EXPECT_TRUE(p.area);
+  EXPECT_EQ(p.coverage, raster::Coverage::area);
   EXPECT_EQ(p.samples, 1);
   EXPECT_TRUE(p.draws[0].mode.union_coverage);
   EXPECT_EQ(p.memory.sample_bytes, 0);
@@ -263,7 +263,7 @@ TEST(Area, ThePlanKeepsAreaFor2DAndMultisamples3D) {
   raster::Scene mesh = raster::parse_scene(R"({"width": 8, "height": 8, "antialias": "area", "primitives": [
       {"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [[0, 1, 2]]}]})");
   const raster::RenderPlan p3 = raster::plan(mesh);
-  EXPECT_FALSE(p3.area);
+  EXPECT_EQ(p3.coverage, raster::Coverage::samples);
   EXPECT_EQ(p3.samples, 8);
   EXPECT_GT(p3.memory.sample_bytes, 0);
 

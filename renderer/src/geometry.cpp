@@ -70,7 +70,7 @@ void add_polyline(const Scene& scene, const Primitive& prim, bool closed, const 
 Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) {
   Setup setup;
   setup.width = plan.width, setup.height = plan.height;
-  setup.centre_samples = plan.samples == 1 && !plan.area;
+  setup.centre_samples = plan.coverage == Coverage::centre;
   Records& first = setup.last_part();  // a record per 2D primitive, about: sized once
   first.order.reserve(plan.draws.size()), first.triangles.reserve(plan.draws.size());
   for (const DrawPlan& draw : plan.draws) {

@@ -10,7 +10,7 @@
 #include "geometry.h"
 #include "memory.h"
 #include "parallel.h"
-#include "shade.h"
+#include "pixel.h"
 #include "vecmath.h"
 
 namespace raster::detail {

@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "shade.h"
+#include "pixel.h"
 #include "wide.h"
 
 namespace raster::detail {

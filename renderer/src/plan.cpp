@@ -307,8 +307,10 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   out.memory.color_bytes = image_pixels * channel_count(out.format);
   // "area" is exact for 2D shapes composited one after another; with depth the share of a pixel each
   // triangle covers is not what is visible (and abutting mesh triangles would seam), so 3D gets samples.
-  out.area = scene.area && !any_3d;
   out.samples = scene.area && any_3d ? kAreaFallbackSamples : scene.samples;
+  out.coverage = scene.area && !any_3d ? Coverage::area
+                 : out.samples > 1     ? Coverage::samples
+                                       : Coverage::centre;
   if (scene.area && any_3d)
     for (DrawPlan& d : out.draws) d.mode.union_coverage = false, any_union = false;
   // Multisampled 3D lines are rectangles a pixel wide, so their edges are covered per sample like the rest.
@@ -389,7 +391,9 @@ std::string explain_json(const RenderPlan& p) {
   j["channels"] = channel_count(p.format);
   j["depth_buffer"] = p.depth_buffer;
   j["samples"] = p.samples;
-  j["antialias"] = p.area ? "area" : p.samples > 1 ? "multisample" : "none";
+  j["antialias"] = p.coverage == Coverage::area      ? "area"
+                   : p.coverage == Coverage::samples ? "multisample"
+                                                     : "none";
   j["primitives"] = {{"flat", p.flat_count},   {"smooth", p.smooth_count},
                      {"blend", p.blend_count}, {"culled", p.culled_count},
                      {"lit", p.lit_count},     {"triangles_3d", p.triangles_3d},
@@ -433,9 +437,9 @@ std::string explain_json(const RenderPlan& p) {
 
 std::string explain_line(const RenderPlan& p) {
   return std::string(format_name(p.format)) + " depth=" + (p.depth_buffer ? "f32" : "none") +
-         " samples=" + (p.area ? std::string("area") : std::to_string(p.samples)) + " flat=" + std::to_string(p.flat_count) +
-         " smooth=" + std::to_string(p.smooth_count) + " blend=" + std::to_string(p.blend_count) +
-         " culled=" + std::to_string(p.culled_count) +
+         " samples=" + (p.coverage == Coverage::area ? std::string("area") : std::to_string(p.samples)) +
+         " flat=" + std::to_string(p.flat_count) + " smooth=" + std::to_string(p.smooth_count) +
+         " blend=" + std::to_string(p.blend_count) + " culled=" + std::to_string(p.culled_count) +
          (p.lit_count ? " lit=" + std::to_string(p.lit_count) : "") + " threads=" + std::to_string(p.threads);
 }
 

@@ -45,10 +45,6 @@ struct Scratch {
   std::int64_t shaded = 0;       // pixels shaded, for RenderStats
 };
 
-/// How a triangle's pixels are covered: at the pixel centre (aliased), at each sample position of the
-/// pattern (multisampling), or by the share of the pixel's square (area).
-enum class Coverage : std::uint8_t { centre, samples, area };
-
 // The coverage routine the plan's anti-aliasing asks for.
 template <typename T, typename Shader>
 void cover(const detail::Edges<T>& e, Rect clip, Coverage coverage, const detail::Surface& surface,
@@ -119,7 +115,7 @@ template <int C>
 void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::StopMeter& meter) {
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::Lanes lanes = f.plan.scalar_coverage ? detail::Lanes::scalar : detail::Lanes::simd;
-  const Coverage coverage = f.plan.area ? Coverage::area : f.plan.samples > 1 ? Coverage::samples : Coverage::centre;
+  const Coverage coverage = f.plan.coverage;
   // A union-coverage primitive (its own draw call) accumulates over its consecutive records, and is
   // composited over the pixels they reached when the next record belongs to another call.
   constexpr std::uint32_t kNone = ~0u;

@@ -48,7 +48,7 @@ struct Surface {
   std::uint8_t* color = nullptr;  ///< channels per pixel as the image's format
   float* depth = nullptr;         ///< z / w (reversed: larger is nearer) per sample, or nullptr without 3D;
                                   ///< multisampled: `sample_count` planes of `plane` values, sample-major
-  float* coverage = nullptr;      ///< area coverage of union primitives: kUnionFloats (shade.h) a pixel
+  float* coverage = nullptr;      ///< area coverage of union primitives: kUnionFloats (pixel.h) a pixel
   int width = 0;                  ///< pixels per row of all of them (whole blocks)
   int x0 = 0, y0 = 0;             ///< image coordinates of the first pixel
   int channels = 3;

@@ -92,13 +92,20 @@ struct PngPlan {
 /// The PNG settings for a pixel format: its colour type, and the default deflate level.
 PngPlan png_plan_for(PixelFormat format);
 
+/// How a triangle's pixels are covered; the one choice every tile obeys.
+enum class Coverage : std::uint8_t {
+  centre,   ///< aliased: a pixel is covered when its centre is (top-left rule for centres on an edge)
+  samples,  ///< multisampling: at each of RenderPlan::samples positions of the standard pattern
+  area,     ///< exact area: the share of the pixel's square (2D scenes with "antialias": "area")
+};
+
 struct RenderPlan {
   int width = 0;                           ///< pixels
   int height = 0;                          ///< pixels
   PixelFormat format = PixelFormat::rgb8;  ///< fewest channels that hold every colour the render can make
   bool depth_buffer = false;               ///< only 3D content needs one; 2D never does
-  int samples = 1;                         ///< per pixel; 1 = aliased or area, no sample storage
-  bool area = false;  ///< exact area coverage (2D scenes with "antialias": "area"); samples is then 1
+  Coverage coverage = Coverage::centre;    ///< how triangles cover pixels
+  int samples = 1;                         ///< per pixel: > 1 exactly when coverage is samples
   std::vector<DrawPlan> draws;             ///< the visible primitives, in scene order
 
   // Counts of the per-primitive decisions, for the explain output and the X-Render-Plan header.
