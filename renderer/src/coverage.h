@@ -142,82 +142,6 @@ inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::i
 
 }  // namespace coverage_detail
 
-/// Covers `edges` over the pixels of `clip` (inside one tile, the record's box already intersected), block
-/// by block in rows, and calls shade(const Block&) for every block with a covered pixel. Whole blocks are
-/// accepted or rejected from the edge values at their corners; only blocks an edge crosses are tested per
-/// pixel. A clip inside the triangle altogether goes to shade.rect(clip, first block) instead. Returns early once `meter` says the render must stop (a block is kBlock^2 units of work).
-template <typename T, typename Shade>
-void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter, Shade&& shade) {
-  using namespace coverage_detail;
-  if (clip.empty()) return;
-  const int bx0 = clip.x0 - clip.x0 % kBlock, by0 = clip.y0 - clip.y0 % kBlock;  // clip >= 0
-  T step_x[3], step_y[3], block_x[3], block_y[3], row_start[3];
-  T low_extent[3], high_extent[3];  // the smallest and largest change of E_k across a block's samples
-  const T sx(std::int64_t{bx0} * kSubpixelScale + sample.x), sy(std::int64_t{by0} * kSubpixelScale + sample.y);
-  for (int k = 0; k < 3; ++k) {
-    step_x[k] = edges.a[k] * T(kSubpixelScale), step_y[k] = edges.b[k] * T(kSubpixelScale);
-    block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
-    row_start[k] = edges.a[k] * sx + edges.b[k] * sy + edges.c[k];
-    const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
-    low_extent[k] = std::min(ex, T(0)) + std::min(ey, T(0));
-    high_extent[k] = std::max(ex, T(0)) + std::max(ey, T(0));
-  }
-  Block block;
-  block.area = to_double(edges.area);
-  for (int k = 0; k < 3; ++k) block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
-  if constexpr (std::is_same_v<T, std::int64_t>) {
-    // The whole clip inside every edge (its corner samples are): accepted at once, and the shading covers
-    // it as a rectangle. The first block's values are exact doubles; the shader steps them exactly.
-    if (clip_inside(row_start, step_x, step_y, clip, bx0, by0)) {
-      block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
-      for (int k = 0; k < 3; ++k) block.e[k] = to_double(row_start[k]);
-      shade.rect(clip, block);
-      meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
-      return;
-    }
-  }
-  for (int y0 = by0; y0 < clip.y1; y0 += kBlock) {
-    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);  // rows inside the clip
-    const std::uint64_t rows = row_mask(r0, r1);
-    T e[3] = {row_start[0], row_start[1], row_start[2]};
-    for (int x0 = bx0; x0 < clip.x1; x0 += kBlock) {
-      bool reject = false, accept = true;
-      for (int k = 0; k < 3; ++k) {
-        reject = reject || e[k] + high_extent[k] < T(0);
-        accept = accept && !(e[k] + low_extent[k] < T(0));
-      }
-      if (!reject) {
-        std::uint64_t mask = rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
-        if (!accept) {
-          if constexpr (std::is_same_v<T, std::int64_t>) {
-            if (lanes == Lanes::simd) {
-              unsigned crossing = 0;  // edges whose sign changes inside the block; the others cover it all
-              for (int k = 0; k < 3; ++k) crossing |= (e[k] + low_extent[k] < T(0) ? 1u : 0u) << k;
-              mask &= partial_mask_lanes(e, step_x, step_y, crossing, r0, r1);
-            } else {
-              mask &= partial_mask_scalar(e, step_x, step_y, r0, r1);
-            }
-          } else {
-            mask &= partial_mask_scalar(e, step_x, step_y, r0, r1);
-          }
-        }
-        if (mask) {
-          block.x0 = x0, block.y0 = y0, block.mask = mask;
-          for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k]);
-          shade(block);
-        }
-        if (meter.add(kBlock * kBlock)) return;
-      }
-      for (int k = 0; k < 3; ++k) e[k] += block_x[k];
-    }
-    for (int k = 0; k < 3; ++k) row_start[k] += block_y[k];
-  }
-}
-
-}  // namespace raster::detail
-
-namespace raster::detail {
-
 /// Area coverage: the share of a pixel's square inside a triangle, in (0, 1], for the pixels an edge cuts.
 /// Entry 8 r + i is pixel (x0 + i, y0 + r) of the block; only the entries of `partial`'s set bits are
 /// meaningful.
@@ -280,214 +204,236 @@ bool biased(const C& a, const C& b) {
 
 }  // namespace coverage_detail
 
-/// Area coverage of `edges` over the pixels of `clip`: the same blocks as cover(), tested against the
-/// pixel squares instead of one sample point. Edge k's value at a pixel centre is t_k and it changes by
-/// h_k = 128 (|a_k| + |b_k|) toward the square's farthest corner, so a pixel lies wholly inside when
-/// t_k - h_k >= 0 for every k and touches the triangle's interior only when t_k + h_k > 0 for every k:
-/// two sets of edges offset by constants, whose masks come from the same block tests and lanes as the
-/// aliased ones. Whole pixels go to shade(block) exactly as aliased coverage would send them (and a clip
-/// wholly inside to shade.rect); cut pixels to shade.area(block, cover) with their exact share: one edge
-/// by a closed form, several by clipping the square.
-template <typename T, typename Shade>
-void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
-  using namespace coverage_detail;
-  if (clip.empty()) return;
-  const int bx0 = clip.x0 - clip.x0 % kBlock, by0 = clip.y0 - clip.y0 % kBlock;
-  const T half_px(kSubpixelScale / 2);
-  T step_x[3], step_y[3], block_x[3], block_y[3], centre[3], inner[3], outer[3], low_extent[3], high_extent[3];
-  const T sx(std::int64_t{bx0} * kSubpixelScale + kSubpixelScale / 2),
-      sy(std::int64_t{by0} * kSubpixelScale + kSubpixelScale / 2);
-  for (int k = 0; k < 3; ++k) {
-    const T a(edges.a[k]), b(edges.b[k]);
-    step_x[k] = a * T(kSubpixelScale), step_y[k] = b * T(kSubpixelScale);
-    block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
-    const T biased_c = a * sx + b * sy + edges.c[k];  // what aliased coverage tests, for shading
-    centre[k] = biased_c + (biased(a, b) ? T(1) : T(0));
-    const T a_abs = a < T(0) ? -a : a, b_abs = b < T(0) ? -b : b;
-    const T h = (a_abs + b_abs) * half_px;
-    inner[k] = centre[k] - h;
-    outer[k] = centre[k] + h - T(1);  // >= 0 exactly when centre + h > 0
-    const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
-    low_extent[k] = std::min(ex, T(0)) + std::min(ey, T(0));
-    high_extent[k] = std::max(ex, T(0)) + std::max(ey, T(0));
-    centre[k] = biased_c;  // from here on: the biased values, stepped with the others
+namespace coverage_detail {
+
+/// A clip's blocks and how the edge values step over them: E_k at a point `at` of each pixel (1/256 px from
+/// its corner), exact in T.
+template <typename T>
+struct BlockGrid {
+  int bx0 = 0, by0 = 0;      ///< the clip's first block, image pixels (multiples of kBlock)
+  T origin[3];               ///< E_k at `at` of pixel (bx0, by0)
+  T step_x[3], step_y[3];    ///< E_k's change a pixel right, a pixel down
+  T block_x[3], block_y[3];  ///< ... a block right, a block down
+  T low[3], high[3];         ///< the least and the most E_k changes across a block's 8x8 pixels
+
+  BlockGrid(const Edges<T>& edges, Rect clip, SamplePoint at)
+      : bx0(clip.x0 - clip.x0 % kBlock), by0(clip.y0 - clip.y0 % kBlock) {  // clip >= 0
+    const T sx(std::int64_t{bx0} * kSubpixelScale + at.x), sy(std::int64_t{by0} * kSubpixelScale + at.y);
+    for (int k = 0; k < 3; ++k) {
+      step_x[k] = edges.a[k] * T(kSubpixelScale), step_y[k] = edges.b[k] * T(kSubpixelScale);
+      block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
+      origin[k] = edges.a[k] * sx + edges.b[k] * sy + edges.c[k];
+      const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
+      low[k] = std::min(ex, T(0)) + std::min(ey, T(0));
+      high[k] = std::max(ex, T(0)) + std::max(ey, T(0));
+    }
   }
+};
+
+/// The pixels of rows [r0, r1) of a block where every E_k >= 0, from its values `e` at the block's first
+/// pixel: edges that stay >= 0 over the block are skipped, the others tested in lanes (or, `Lanes::scalar`
+/// and wide edges, one pixel at a time).
+template <typename T>
+std::uint64_t inside_mask(const T (&e)[3], const BlockGrid<T>& g, Lanes lanes, int r0, int r1) {
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    if (lanes == Lanes::simd) {
+      unsigned crossing = 0;
+      for (int k = 0; k < 3; ++k) crossing |= (e[k] + g.low[k] < T(0) ? 1u : 0u) << k;
+      return partial_mask_lanes(e, g.step_x, g.step_y, crossing, r0, r1);
+    }
+  }
+  return partial_mask_scalar(e, g.step_x, g.step_y, r0, r1);
+}
+
+/// The one block walker. `g.origin` holds the values shading reads (E_k at the shading point); a block is
+/// accepted whole when every E_k + accept[k] stays >= 0 over it, and skipped when some E_k + reject[k] stays
+/// < 0 over it (accept <= reject: the policies' offsets for sample positions or pixel squares). Accepted
+/// blocks side by side go to shade.rect(run, first block) as one rectangle, and a clip accepted whole goes
+/// there at once; each other block to partial(block, e, clipped, r0, r1), with the block's values as doubles
+/// and `e` exact. Rectangles need exact doubles, so only int64 edges make them; wide edges' accepted blocks
+/// go one by one to shade(block). Returns early once `meter` says the render must stop (a block is kBlock^2
+/// units of work).
+template <typename T, typename Shade, typename Partial>
+void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&accept)[3], const T (&reject)[3],
+                 StopMeter& meter, Shade& shade, Partial&& partial) {
+  constexpr bool kExact = std::is_same_v<T, std::int64_t>;
+  T accept_low[3], reject_high[3], row_start[3];
   Block block;
-  block.area = to_double(edges.area);
-  double bias[3];
+  block.area = to_double(area);
   for (int k = 0; k < 3; ++k) {
-    block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
-    bias[k] = biased(edges.a[k], edges.b[k]) ? 1 : 0;
+    accept_low[k] = accept[k] + g.low[k], reject_high[k] = reject[k] + g.high[k];
+    row_start[k] = g.origin[k];
+    block.dx[k] = to_double(g.step_x[k]), block.dy[k] = to_double(g.step_y[k]);
   }
-  {  // The whole clip wholly inside: a rectangle, as aliased coverage would draw it.
-    if (clip_inside(inner, step_x, step_y, clip, bx0, by0)) {
-      block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
-      for (int k = 0; k < 3; ++k) block.e[k] = to_double(centre[k]);
+  if constexpr (kExact) {
+    const T lowest[3] = {g.origin[0] + accept[0], g.origin[1] + accept[1], g.origin[2] + accept[2]};
+    if (clip_inside(lowest, g.step_x, g.step_y, clip, g.bx0, g.by0)) {
+      block.x0 = g.bx0, block.y0 = g.by0, block.mask = ~0ull;
+      for (int k = 0; k < 3; ++k) block.e[k] = to_double(g.origin[k]);
       shade.rect(clip, block);
       meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
       return;
     }
   }
-  AreaCover cut;
-  for (int y0 = by0; y0 < clip.y1; y0 += kBlock) {
-    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
+  Block run;  // accepted blocks of this block row not yet shaded: from run.x0, `run_blocks` of them
+  int run_blocks = 0;
+  for (int y0 = g.by0; y0 < clip.y1; y0 += kBlock) {
+    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);  // rows inside the clip
     const std::uint64_t rows = row_mask(r0, r1);
-    T in[3] = {inner[0], inner[1], inner[2]}, out[3] = {outer[0], outer[1], outer[2]};
-    T e[3] = {centre[0], centre[1], centre[2]};
-    for (int x0 = bx0; x0 < clip.x1; x0 += kBlock) {
-      bool reject = false, accept = true;
-      unsigned crossing_in = 0, crossing_out = 0;
+    auto flush = [&] {
+      const Rect rect{std::max(clip.x0, run.x0), y0 + r0, std::min(clip.x1, run.x0 + run_blocks * kBlock),
+                      y0 + r1};
+      shade.rect(rect, run);
+      run_blocks = 0;
+    };
+    T e[3] = {row_start[0], row_start[1], row_start[2]};
+    for (int x0 = g.bx0; x0 < clip.x1; x0 += kBlock) {
+      bool skip = false, whole = true;
       for (int k = 0; k < 3; ++k) {
-        reject = reject || out[k] + high_extent[k] < T(0);
-        accept = accept && !(in[k] + low_extent[k] < T(0));
-        crossing_in |= (in[k] + low_extent[k] < T(0) ? 1u : 0u) << k;
-        crossing_out |= (out[k] + low_extent[k] < T(0) ? 1u : 0u) << k;
+        skip = skip || e[k] + reject_high[k] < T(0);
+        whole = whole && !(e[k] + accept_low[k] < T(0));
       }
-      if (!reject) {
-        const std::uint64_t clipped =
-            rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
-        std::uint64_t whole = clipped, touched = clipped;
-        if (!accept) {
-          if constexpr (std::is_same_v<T, std::int64_t>) {
-            if (lanes == Lanes::simd) {
-              whole &= partial_mask_lanes(in, step_x, step_y, crossing_in, r0, r1);
-              touched &= partial_mask_lanes(out, step_x, step_y, crossing_out, r0, r1);
-            } else {
-              whole &= partial_mask_scalar(in, step_x, step_y, r0, r1);
-              touched &= partial_mask_scalar(out, step_x, step_y, r0, r1);
-            }
-          } else {
-            whole &= partial_mask_scalar(in, step_x, step_y, r0, r1);
-            touched &= partial_mask_scalar(out, step_x, step_y, r0, r1);
-          }
-        }
-        block.x0 = x0, block.y0 = y0;
-        for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k]);
-        if (whole) {
-          block.mask = whole;
-          shade(block);
-        }
-        cut.partial = 0;
-        for (std::uint64_t m = touched & ~whole; m; m &= m - 1) {
-          const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
-          double t[3], A[3], B[3];
-          int n = 0;
-          for (int k = 0; k < 3; ++k) {
-            const double value = block.e[k] + bias[k] + i * block.dx[k] + r * block.dy[k];
-            if (value >= 0.5 * (std::fabs(block.dx[k]) + std::fabs(block.dy[k]))) continue;  // wholly inside
-            t[n] = value, A[n] = block.dx[k], B[n] = block.dy[k], ++n;
-          }
-          const double share = n == 1 ? half_plane_share(t[0], A[0], B[0]) : clipped_share(n, t, A, B);
-          if (!(share > 0)) continue;  // touches only where two edges meet outside the square
-          cut.share[bit] = static_cast<float>(std::min(share, 1.0));
-          cut.partial |= std::uint64_t{1} << bit;
-        }
-        if (cut.partial) {
-          block.mask = cut.partial;
-          shade.area(block, cut);
+      if (kExact && whole) {
+        if (run_blocks++ == 0) {
+          run.x0 = x0, run.y0 = y0, run.mask = ~0ull;
+          for (int k = 0; k < 3; ++k) run.e[k] = to_double(e[k]);
+          run.area = block.area;
+          for (int k = 0; k < 3; ++k) run.dx[k] = block.dx[k], run.dy[k] = block.dy[k];
         }
         if (meter.add(kBlock * kBlock)) return;
+      } else {
+        if (run_blocks) flush();
+        if (!skip) {
+          const std::uint64_t clipped =
+              rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+          block.x0 = x0, block.y0 = y0;
+          for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k]);
+          if (whole) {
+            block.mask = clipped;
+            shade(block);
+          } else {
+            partial(block, e, clipped, r0, r1);
+          }
+          if (meter.add(kBlock * kBlock)) return;
+        }
       }
-      for (int k = 0; k < 3; ++k) in[k] += block_x[k], out[k] += block_x[k], e[k] += block_x[k];
+      for (int k = 0; k < 3; ++k) e[k] += g.block_x[k];
     }
-    for (int k = 0; k < 3; ++k) inner[k] += block_y[k], outer[k] += block_y[k], centre[k] += block_y[k];
+    if (run_blocks) flush();
+    for (int k = 0; k < 3; ++k) row_start[k] += g.block_y[k];
   }
 }
 
-}  // namespace raster::detail
+}  // namespace coverage_detail
 
-namespace raster::detail {
+/// Aliased coverage of `edges` over the pixels of `clip` (inside one tile, the record's box already
+/// intersected): a pixel is covered when every E_k >= 0 at its `sample` point. Calls shade(block) for each
+/// block with a covered pixel (the mask), shade.rect for rectangles wholly inside (see walk_blocks).
+template <typename T, typename Shade>
+void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter,
+           Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const BlockGrid<T> g(edges, clip, sample);
+  const T zero[3] = {T(0), T(0), T(0)};
+  walk_blocks(g, edges.area, clip, zero, zero, meter, shade,
+              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+                block.mask = clipped & inside_mask(e, g, lanes, r0, r1);
+                if (block.mask) shade(block);
+              });
+}
 
-/// Multisampled coverage of `edges` over the pixels of `clip`: per block, a mask for each of the
-/// `count` sample positions of `pattern`, from the same corner tests and lanes as cover(). Blocks whose
-/// every sample is inside go to shade(block) (all samples covered), a clip wholly inside to shade.rect;
-/// others to shade.samples(block, masks), block.mask being the pixels with any sample covered. The edge
-/// values in a Block are at the pixel centres (where shading is evaluated), whatever the pattern.
+/// Area coverage of `edges` over the pixels of `clip`: the same blocks as cover(), tested against the
+/// pixel squares instead of one sample point. Edge k's value at a pixel centre is t_k and it changes by
+/// h_k = 128 (|a_k| + |b_k|) toward the square's farthest corner, so a pixel lies wholly inside when
+/// t_k - h_k >= 0 for every k and touches the triangle's interior only when t_k + h_k > 0 for every k:
+/// the walker's accept and reject offsets, and two masks from the same lanes as the aliased one. Whole
+/// pixels go to shade(block) exactly as aliased coverage would send them (and rectangles to shade.rect);
+/// cut pixels to shade.area(block, cover) with their exact share: one edge by a closed form, several by
+/// clipping the square. The values shading reads are the aliased ones (top-left bias included).
+template <typename T, typename Shade>
+void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const BlockGrid<T> g(edges, clip, SamplePoint{});
+  T inner[3], outer[3];  // offsets from the biased centre value: wholly inside, touching the interior
+  double bias[3];
+  for (int k = 0; k < 3; ++k) {
+    const T a(edges.a[k]), b(edges.b[k]);
+    const T bias_k = biased(a, b) ? T(1) : T(0);  // the top-left rule's 1, given back: area is the triangle's
+    const T h = ((a < T(0) ? -a : a) + (b < T(0) ? -b : b)) * T(kSubpixelScale / 2);
+    inner[k] = bias_k - h;
+    outer[k] = bias_k + h - T(1);  // >= 0 exactly when centre + h > 0
+    bias[k] = biased(edges.a[k], edges.b[k]) ? 1 : 0;
+  }
+  AreaCover cut;
+  walk_blocks(g, edges.area, clip, inner, outer, meter, shade,
+              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+                const T in[3] = {e[0] + inner[0], e[1] + inner[1], e[2] + inner[2]};
+                const T out[3] = {e[0] + outer[0], e[1] + outer[1], e[2] + outer[2]};
+                const std::uint64_t whole = clipped & inside_mask(in, g, lanes, r0, r1);
+                const std::uint64_t touched = clipped & inside_mask(out, g, lanes, r0, r1);
+                if (whole) {
+                  block.mask = whole;
+                  shade(block);
+                }
+                cut.partial = 0;
+                for (std::uint64_t m = touched & ~whole; m; m &= m - 1) {
+                  const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+                  double t[3], A[3], B[3];
+                  int n = 0;
+                  for (int k = 0; k < 3; ++k) {
+                    const double value = block.e[k] + bias[k] + i * block.dx[k] + r * block.dy[k];
+                    if (value >= 0.5 * (std::fabs(block.dx[k]) + std::fabs(block.dy[k]))) continue;  // inside
+                    t[n] = value, A[n] = block.dx[k], B[n] = block.dy[k], ++n;
+                  }
+                  const double share =
+                      n == 1 ? half_plane_share(t[0], A[0], B[0]) : clipped_share(n, t, A, B);
+                  if (!(share > 0)) continue;  // touches only where two edges meet outside the square
+                  cut.share[bit] = static_cast<float>(std::min(share, 1.0));
+                  cut.partial |= std::uint64_t{1} << bit;
+                }
+                if (cut.partial) {
+                  block.mask = cut.partial;
+                  shade.area(block, cut);
+                }
+              });
+}
+
+/// Multisampled coverage of `edges` over the pixels of `clip`: per block, a mask for each of the `count`
+/// sample positions of `pattern`. Blocks whose every sample is inside go to shade(block) (all samples
+/// covered) and rectangles to shade.rect; others to shade.samples(block, masks), block.mask being the pixels
+/// with any sample covered. The values in a Block are at the pixel centres (where shading is evaluated),
+/// whatever the pattern.
 template <typename T, typename Shade>
 void cover_samples(const Edges<T>& edges, Rect clip, const SamplePoint* pattern, int count, Lanes lanes,
                    StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;
-  const int bx0 = clip.x0 - clip.x0 % kBlock, by0 = clip.y0 - clip.y0 % kBlock;
-  T step_x[3], step_y[3], block_x[3], block_y[3], corner[3], low_extent[3], high_extent[3];
-  T offset[16][3], least[3], most[3], centre[3];  // E's change from a pixel's corner to each sample
-  const T sx(std::int64_t{bx0} * kSubpixelScale), sy(std::int64_t{by0} * kSubpixelScale);
+  const BlockGrid<T> g(edges, clip, SamplePoint{});
+  T offset[16][3], least[3], most[3];  // E's change from the pixel centre to each sample, and its extremes
   for (int k = 0; k < 3; ++k) {
     const T a(edges.a[k]), b(edges.b[k]);
-    step_x[k] = a * T(kSubpixelScale), step_y[k] = b * T(kSubpixelScale);
-    block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
-    corner[k] = a * sx + b * sy + edges.c[k];
     for (int s = 0; s < count; ++s) {
-      offset[s][k] = a * T(pattern[s].x) + b * T(pattern[s].y);
+      offset[s][k] = a * T(pattern[s].x - kSubpixelScale / 2) + b * T(pattern[s].y - kSubpixelScale / 2);
       least[k] = s == 0 ? offset[s][k] : std::min(least[k], offset[s][k]);
       most[k] = s == 0 ? offset[s][k] : std::max(most[k], offset[s][k]);
     }
-    centre[k] = (a + b) * T(kSubpixelScale / 2);
-    const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
-    low_extent[k] = std::min(ex, T(0)) + std::min(ey, T(0)) + least[k];
-    high_extent[k] = std::max(ex, T(0)) + std::max(ey, T(0)) + most[k];
-  }
-  Block block;
-  block.area = to_double(edges.area);
-  for (int k = 0; k < 3; ++k) block.dx[k] = to_double(step_x[k]), block.dy[k] = to_double(step_y[k]);
-  {  // every sample of the clip inside: a rectangle
-    const T lowest[3] = {corner[0] + least[0], corner[1] + least[1], corner[2] + least[2]};
-    if (clip_inside(lowest, step_x, step_y, clip, bx0, by0)) {
-      block.x0 = bx0, block.y0 = by0, block.mask = ~0ull;
-      for (int k = 0; k < 3; ++k) block.e[k] = to_double(corner[k] + centre[k]);
-      shade.rect(clip, block);
-      meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
-      return;
-    }
   }
   std::uint64_t masks[16];
-  for (int y0 = by0; y0 < clip.y1; y0 += kBlock) {
-    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
-    const std::uint64_t rows = row_mask(r0, r1);
-    T e[3] = {corner[0], corner[1], corner[2]};
-    for (int x0 = bx0; x0 < clip.x1; x0 += kBlock) {
-      bool reject = false, accept = true;
-      for (int k = 0; k < 3; ++k) {
-        reject = reject || e[k] + high_extent[k] < T(0);
-        accept = accept && !(e[k] + low_extent[k] < T(0));
-      }
-      if (!reject) {
-        const std::uint64_t clipped = rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
-        block.x0 = x0, block.y0 = y0;
-        for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k] + centre[k]);
-        if (accept) {
-          block.mask = clipped;
-          shade(block);
-        } else {
-          std::uint64_t any = 0;
-          for (int s = 0; s < count; ++s) {
-            T es[3], sample_low[3];
-            unsigned crossing = 0;
-            for (int k = 0; k < 3; ++k) {
-              es[k] = e[k] + offset[s][k];
-              sample_low[k] = low_extent[k] - least[k];
-              crossing |= (es[k] + sample_low[k] < T(0) ? 1u : 0u) << k;
-            }
-            std::uint64_t m = clipped;
-            if constexpr (std::is_same_v<T, std::int64_t>) {
-              m &= lanes == Lanes::simd ? partial_mask_lanes(es, step_x, step_y, crossing, r0, r1)
-                                        : partial_mask_scalar(es, step_x, step_y, r0, r1);
-            } else {
-              m &= partial_mask_scalar(es, step_x, step_y, r0, r1);
-            }
-            masks[s] = m, any |= m;
-          }
-          if (any) {
-            block.mask = any;
-            shade.samples(block, masks);
-          }
-        }
-        if (meter.add(kBlock * kBlock)) return;
-      }
-      for (int k = 0; k < 3; ++k) e[k] += block_x[k];
-    }
-    for (int k = 0; k < 3; ++k) corner[k] += block_y[k];
-  }
+  walk_blocks(g, edges.area, clip, least, most, meter, shade,
+              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+                std::uint64_t any = 0;
+                for (int s = 0; s < count; ++s) {
+                  const T es[3] = {e[0] + offset[s][0], e[1] + offset[s][1], e[2] + offset[s][2]};
+                  masks[s] = clipped & inside_mask(es, g, lanes, r0, r1);
+                  any |= masks[s];
+                }
+                if (any) {
+                  block.mask = any;
+                  shade.samples(block, masks);
+                }
+              });
 }
 
 }  // namespace raster::detail
