@@ -103,6 +103,47 @@ TEST(Core, SameBytesForEveryTileSizeAndThreadCount) {
     }
 }
 
+// Large smooth (per-vertex colour) triangles over an opaque or a transparent background (RGB or RGBA
+// output): most of their pixels are whole blocks and rectangles, where the AVX2 kernels work.
+raster::Scene large_smooth_scene(unsigned seed, bool transparent) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> at(-60, 360);
+  SceneBuilder s(301, 203, transparent ? Rgba8{0, 0, 0, 0} : Rgba8{20, 30, 40, 255});
+  for (int i = 0; i < 40; ++i)
+    s.triangle({at(rng), at(rng)}, {at(rng), at(rng)}, {at(rng), at(rng)}, random_color(rng),
+               random_color(rng), random_color(rng));
+  return s.scene;
+}
+
+// Each instruction set the machine has gives the bytes of the SSE2 kernels, aliased, multisampled and with
+// area coverage.
+TEST(Core, EverySimdTargetGivesTheBytesOfSse2) {
+  if (raster::best_simd() == raster::Simd::sse2) GTEST_SKIP() << "no AVX2 on this machine";
+  auto render_at = [](const raster::Scene& scene, raster::Simd simd, int tile) {
+    raster::PlanOptions options;
+    options.max_simd = simd;
+    options.tile = tile;
+    const raster::RenderPlan plan = raster::plan(scene, {}, options);
+    EXPECT_EQ(plan.simd, simd);
+    return raster::render(scene, plan);
+  };
+  for (unsigned seed = 1; seed <= 4; ++seed)
+    for (int aa : {1, 4, 0}) {  // 0: area
+      std::vector<raster::Scene> scenes = {mixed_scene(seed, 200), large_smooth_scene(seed, false),
+                                           large_smooth_scene(seed, true)};
+      for (raster::Scene& scene : scenes) {
+        scene.samples = aa ? aa : 1;
+        scene.area = aa == 0;
+        for (int tile : {16, 64}) {
+          const raster::Image sse2 = render_at(scene, raster::Simd::sse2, tile);
+          ASSERT_EQ(render_at(scene, raster::Simd::avx2, tile).pixels, sse2.pixels)
+              << "seed " << seed << ", antialias " << aa << ", tile " << tile << ", " << sse2.channels()
+              << " channels";
+        }
+      }
+    }
+}
+
 // A UV sphere of 2 n^2 triangles (a large mesh is set up in parts on every render thread from 32,768
 // triangles on), per-vertex colours and texture coordinates, every other band of faces textured.
 raster::Scene sphere_scene(int n, int side) {

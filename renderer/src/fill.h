@@ -14,6 +14,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "coverage.h"
 #include "pixel.h"
@@ -177,6 +180,13 @@ class ColorPlanes {
       slope_x_[ch] = steep_ ? 0 : floor_to_int(sx + 0.5);
       slope_y_[ch] = steep_ ? 0 : floor_to_int(sy + 0.5);
     }
+#if defined(__x86_64__)
+    wide_ = surface.simd == Simd::avx2 && (C == 3 || C == 4) && !blend && !steep_;
+    for (int k = 0; k < 3; ++k)
+      for (int ch = 0; ch < 4; ++ch) vertex_[k][ch] = attr_[4 * k + ch];
+    for (int ch = 0; ch < 4; ++ch)
+      reach_[ch] = static_cast<double>(8 * (std::abs(slope_x_[ch]) + std::abs(slope_y_[ch])));
+#endif
   }
 
   /// The colour at barycentrics `l`, each channel clamped to the vertices' range (a cut pixel's centre may
@@ -196,6 +206,33 @@ class ColorPlanes {
   // pixel, whose exact value lies in the vertices' range, rounds into it). The block grid does not depend on
   // the tile, so neither does any pixel's value.
   void block(const Block& b) const {
+#if defined(__x86_64__)
+    if (wide_) return block_avx2(b);
+#endif
+    block_sse2(b);
+  }
+
+  /// Every pixel of `clip` covered; `first` is the block at the clip's block-grid origin (exact values):
+  /// block by block, each with exactly the values it would have had.
+  void rect(Rect clip, const Block& first) const {
+    Block b = first;
+    for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
+      const std::uint64_t rows =
+          coverage_detail::row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0));
+      for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock) {
+        b.x0 = x0, b.y0 = y0;
+        b.mask =
+            rows & coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+        const double bx = (x0 - first.x0) / kBlock, by = (y0 - first.y0) / kBlock;  // exact steps
+        for (int k = 0; k < 3; ++k)
+          b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
+        block(b);
+      }
+    }
+  }
+
+ private:
+  void block_sse2(const Block& b) const {
     if (steep_) return shade_smooth_exact(b);
     const double scale = 65536.0 / b.area;
     std::int64_t start[4];
@@ -236,6 +273,67 @@ class ColorPlanes {
     else
       store<C>(p, c);
   }
+
+#if defined(__x86_64__)
+  // block_sse2's opaque RGB(A) path in AVX2: the four channels' starting values side by side in doubles
+  // (the same operations in the same order, so the same bits), then a block row in one register per
+  // channel; a pixel's word is its channels' bytes side by side, and RGB drops each word's spare byte with
+  // one shuffle per half. Anything else (steep, blending, grey, values beyond int32) goes to block_sse2.
+  __attribute__((target("avx2"))) void block_avx2(const Block& b) const {
+    const __m256d scale = _mm256_set1_pd(65536.0 / b.area);
+    __m256d n = _mm256_mul_pd(_mm256_set1_pd(b.e[0]), _mm256_loadu_pd(vertex_[0]));
+    n = _mm256_add_pd(n, _mm256_mul_pd(_mm256_set1_pd(b.e[1]), _mm256_loadu_pd(vertex_[1])));
+    n = _mm256_add_pd(n, _mm256_mul_pd(_mm256_set1_pd(b.e[2]), _mm256_loadu_pd(vertex_[2])));
+    n = _mm256_floor_pd(_mm256_add_pd(_mm256_mul_pd(n, scale), _mm256_set1_pd(0.5)));
+    n = _mm256_add_pd(n, _mm256_set1_pd(0x8000));
+    // fits_int32: |start| + reach < 2^31 in every channel (all exact in doubles)
+    const __m256d magnitude = _mm256_andnot_pd(_mm256_set1_pd(-0.0), n);
+    const __m256d far = _mm256_add_pd(magnitude, _mm256_loadu_pd(reach_));
+    if (_mm256_movemask_pd(_mm256_cmp_pd(far, _mm256_set1_pd(0x1p31), _CMP_LT_OQ)) != 0xf)
+      return block_sse2(b);
+    const __m128i start = _mm256_cvtpd_epi32(n);
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    __m256i v[C], down[C];
+    const std::int32_t starts[4] = {_mm_extract_epi32(start, 0), _mm_extract_epi32(start, 1),
+                                    _mm_extract_epi32(start, 2), _mm_extract_epi32(start, 3)};
+    for (int ch = 0; ch < C; ++ch) {
+      v[ch] = _mm256_add_epi32(
+          _mm256_set1_epi32(starts[ch]),
+          _mm256_mullo_epi32(lane, _mm256_set1_epi32(static_cast<std::int32_t>(slope_x_[ch]))));
+      down[ch] = _mm256_set1_epi32(static_cast<std::int32_t>(slope_y_[ch]));
+    }
+    const __m256i pack = _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1, 0, 1, 2, 4,
+                                          5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
+    const std::size_t stride = static_cast<std::size_t>(surface_->width) * C;
+    std::uint8_t* p = pixel(b.x0, b.y0);
+    for (int r = 0; r < kBlock; ++r, p += stride) {
+      const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (bits) {
+        __m256i w = _mm256_srli_epi32(v[0], 16);
+        for (int ch = 1; ch < C; ++ch)
+          w = _mm256_or_si256(w, _mm256_slli_epi32(_mm256_srli_epi32(v[ch], 16), 8 * ch));
+        if (bits == 0xff && C == 4) {
+          _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), w);
+        } else if (bits == 0xff) {
+          const __m256i packed = _mm256_shuffle_epi8(w, pack);
+          const __m128i lo = _mm256_castsi256_si128(packed), hi = _mm256_extracti128_si256(packed, 1);
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(p), lo);  // its last 4 bytes are rewritten next
+          _mm_storel_epi64(reinterpret_cast<__m128i*>(p + 12), hi);
+          const auto last = static_cast<std::uint32_t>(_mm_extract_epi32(hi, 2));
+          std::memcpy(p + 20, &last, 4);
+        } else {
+          alignas(32) std::uint32_t words[8];
+          _mm256_store_si256(reinterpret_cast<__m256i*>(words), w);
+          for (unsigned m = bits; m; m &= m - 1) {
+            const int i = std::countr_zero(m);
+            std::memcpy(p + C * i, &words[i], C);
+          }
+        }
+      }
+      for (int ch = 0; ch < C; ++ch) v[ch] = _mm256_add_epi32(v[ch], down[ch]);
+    }
+  }
+#endif
 
   // Every value the block can reach fits an int32 lane.
   bool fits_int32(const std::int64_t (&start)[4]) const {
@@ -393,6 +491,11 @@ class ColorPlanes {
   double lo_[4] = {}, hi_[4] = {};                  // each channel's range over the vertices
   std::int64_t slope_x_[4] = {}, slope_y_[4] = {};  // 16.16 per pixel right and down
   bool steep_ = false;  // some slope beyond 2^24 levels a pixel: no fixed-point stepping
+#if defined(__x86_64__)
+  bool wide_ = false;         // the plan chose AVX2 and this is opaque RGB(A) with fixed-point slopes
+  double vertex_[3][4] = {};  // the vertices' channels, as doubles, for four lanes at once
+  double reach_[4] = {};      // 8 (|slope_x| + |slope_y|): a block's farthest step from its start
+#endif
 };
 
 }  // namespace raster::detail

@@ -186,6 +186,13 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
 
 }  // namespace
 
+Simd best_simd() {
+#if defined(__x86_64__)
+  if (__builtin_cpu_supports("avx2")) return Simd::avx2;
+#endif
+  return Simd::sse2;
+}
+
 RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& options) {
   validate(scene);
   check_size(scene, limits);
@@ -338,6 +345,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   const int tiles = ((scene.width + out.tile - 1) / out.tile) * ((scene.height + out.tile - 1) / out.tile);
   out.threads = small || work < kParallelWorkThreshold ? 1 : std::clamp(tiles, 1, cores);
   out.scalar_coverage = options.scalar_coverage;
+  out.simd = std::min(best_simd(), options.max_simd);
   // Each thread draws a tile at a time into storage of its own: the tile's colour and, for 3D, its depth
   // (the only depth buffer there is). Counted against the limit like the rest; small next to the image.
   const std::int64_t tile_pixels = std::int64_t{out.tile_width()} * out.tile_height();
@@ -391,6 +399,7 @@ std::string explain_json(const RenderPlan& p) {
   j["channels"] = channel_count(p.format);
   j["depth_buffer"] = p.depth_buffer;
   j["samples"] = p.samples;
+  j["simd"] = p.simd == Simd::avx2 ? "avx2" : "sse2";
   j["antialias"] = p.coverage == Coverage::area      ? "area"
                    : p.coverage == Coverage::samples ? "multisample"
                                                      : "none";

@@ -170,6 +170,7 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
                           scratch.coverage.empty() ? nullptr : scratch.coverage.data(),
                           stride, rect.x0, rect.y0, C};
   surface.shaded = &scratch.shaded;
+  surface.simd = f.plan.simd;
   surface.plane = static_cast<std::size_t>(stride) * block_rows;
   if (f.plan.samples > 1) {
     surface.sample_count = f.plan.samples;

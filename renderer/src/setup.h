@@ -62,6 +62,7 @@ struct Surface {
   /// differ; area coverage, the pixels a union primitive has accumulated coverage in.
   std::uint64_t* expanded = nullptr;
   std::int64_t* shaded = nullptr;        ///< counts pixels shaded (once per pixel per triangle)
+  Simd simd = Simd::sse2;                ///< the plan's choice of kernels
   std::uint64_t& expanded_bits(int bx, int by) const {  // the word of the block at image pixel (bx, by)
     return expanded[static_cast<std::size_t>((by - y0) / 8) * static_cast<std::size_t>(width / 8) +
                     static_cast<std::size_t>((bx - x0) / 8)];

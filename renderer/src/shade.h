@@ -70,6 +70,7 @@ class TriangleShader {
       }
       return;
     }
+    if (kind_ == Kind::smooth && !union_ && !msaa_) return planes_.rect(clip, first);
     Block b = first;
     for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
       const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);

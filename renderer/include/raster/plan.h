@@ -99,6 +99,13 @@ enum class Coverage : std::uint8_t {
   area,     ///< exact area: the share of the pixel's square (2D scenes with "antialias": "area")
 };
 
+/// Which instruction set the pixel kernels use. SSE2 is the x86-64 floor (and what other machines' generic
+/// vector code stands for); AVX2 kernels exist for the hottest loops and give the same bytes.
+enum class Simd : std::uint8_t { sse2, avx2 };
+
+/// The widest Simd this machine runs.
+Simd best_simd();
+
 struct RenderPlan {
   int width = 0;                           ///< pixels
   int height = 0;                          ///< pixels
@@ -125,6 +132,7 @@ struct RenderPlan {
   /// get one tile as large as the image (binning them costs more than it saves).
   int tile = 64;
   bool scalar_coverage = false;  ///< test hook: partial blocks tested one pixel at a time, not in SIMD lanes
+  Simd simd = Simd::sse2;        ///< the kernels' instruction set: the machine's best unless limited
   MemoryPlan memory;
   PngPlan png;
 
@@ -142,6 +150,7 @@ struct PlanOptions {
   int max_threads = 0;  ///< 0: the machine's core count; 1: never leave the calling thread
   int tile = 0;         ///< 0: the plan's choice; else the tile side (rounded up to a multiple of 8)
   bool scalar_coverage = false;  ///< test hook, see RenderPlan::scalar_coverage
+  Simd max_simd = Simd::avx2;    ///< the widest kernels to use (tests force each one the machine has)
 };
 
 
