@@ -144,6 +144,36 @@ TEST(Core, EverySimdTargetGivesTheBytesOfSse2) {
     }
 }
 
+// Tiles drawn in place (2D, aliased, the image whole blocks wide) give the bytes of tiles drawn in their
+// own storage: the same 2D scene 200 px wide (in place) and 201 px wide (tile storage) agree on every pixel
+// they share, at every tile size and thread count.
+TEST(Core, InPlaceTilesGiveTheBytesOfTileStorage) {
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    raster::Scene scene = mixed_scene(seed, 200);
+    std::erase_if(scene.primitives,
+                  [](const raster::Primitive& p) { return p.kind == raster::PrimitiveKind::mesh; });
+    raster::Scene wider = scene;
+    wider.width = 201;
+    for (int tile : {16, 64, 128})
+      for (int threads : {1, 3}) {
+        raster::PlanOptions options;
+        options.tile = tile;
+        options.max_threads = threads;
+        raster::RenderPlan in_place = raster::plan(scene, {}, options),
+                           stored = raster::plan(wider, {}, options);
+        ASSERT_TRUE(in_place.tiles_in_place);
+        ASSERT_FALSE(stored.tiles_in_place);
+        in_place.threads = stored.threads = threads;
+        const raster::Image a = raster::render(scene, in_place), b = raster::render(wider, stored);
+        for (int y = 0; y < 200; ++y)
+          for (int x = 0; x < 200; ++x)
+            ASSERT_EQ(test::pixel(a, x, y), test::pixel(b, x, y))
+                << "seed " << seed << ", tile " << tile << ", " << threads << " threads, pixel " << x << ", "
+                << y;
+      }
+  }
+}
+
 // A UV sphere of 2 n^2 triangles (a large mesh is set up in parts on every render thread from 32,768
 // triangles on), per-vertex colours and texture coordinates, every other band of faces textured.
 raster::Scene sphere_scene(int n, int side) {

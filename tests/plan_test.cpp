@@ -123,12 +123,15 @@ TEST(Plan, MemoryIsCheckedBeforeAllocation) {
   limits.max_buffer_bytes = 1ll << 40;
   const raster::MemoryPlan need = raster::plan(s.scene, limits, one_thread).memory;
   EXPECT_EQ(need.color_bytes, 4000ll * 4000 * 4);
-  EXPECT_EQ(need.tile_bytes, 64 * 64 * 4) << "one thread's tile";
-  EXPECT_EQ(need.total(), need.color_bytes + need.tile_bytes);
+  EXPECT_EQ(need.tile_bytes, 0) << "2D, aliased, whole blocks wide: tiles draw in place";
+  EXPECT_EQ(need.total(), need.color_bytes);
+  SceneBuilder odd(4001, 4000, raster::Rgba8{255, 0, 0, 0});  // a block at the right edge is partly outside
+  EXPECT_EQ(raster::plan(odd.scene, limits, one_thread).memory.tile_bytes, 64 * 64 * 4)
+      << "one thread's tile";
   limits.max_buffer_bytes = need.total() - 1;
   try {
     raster::plan(s.scene, limits, one_thread);
-    FAIL() << "a 64 MB RGBA buffer and its tile are over a limit one byte short of them";
+    FAIL() << "a 64 MB RGBA buffer is over a limit one byte short of it";
   } catch (const raster::SceneError& e) {
     EXPECT_EQ(e.kind(), raster::ErrorKind::limit);
   }

@@ -56,8 +56,21 @@ Image make_color_buffer(const RenderPlan& plan, Rgba8 background, StopMeter& met
     grow_filled(image.pixels, bytes, texel[0], meter);  // one pass: every byte is the same
     return image;
   }
-  if (!grow_filled(image.pixels, bytes, std::uint8_t{0}, meter)) return image;
-  for (std::size_t i = 0; i < image.pixels.size(); i += c) std::memcpy(&image.pixels[i], texel, c);
+  // A chunk of whole pixels made once and appended over and over: each byte is written once, with no zero
+  // fill before it (a pixel at a time, the clear was most of a thumbnail's render).
+  constexpr std::size_t kChunk = 3 * 4 * 1024;  // a multiple of every pixel size
+  std::uint8_t chunk[kChunk];
+  for (std::size_t i = 0; i < kChunk; i += static_cast<std::size_t>(c)) std::memcpy(chunk + i, texel, c);
+  std::size_t unchecked = 0;
+  while (image.pixels.size() < bytes) {
+    if (unchecked >= kClearChunkBytes) {
+      if (meter.check()) return image;
+      unchecked = 0;
+    }
+    const std::size_t n = std::min(kChunk, bytes - image.pixels.size());
+    image.pixels.insert(image.pixels.end(), chunk, chunk + n);
+    unchecked += n;
+  }
   return image;
 }
 

@@ -349,7 +349,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   // Each thread draws a tile at a time into storage of its own: the tile's colour and, for 3D, its depth
   // (the only depth buffer there is). Counted against the limit like the rest; small next to the image.
   const std::int64_t tile_pixels = std::int64_t{out.tile_width()} * out.tile_height();
-  out.memory.tile_bytes = out.threads * tile_pixels * channel_count(out.format);
+  out.tiles_in_place = !any_3d && out.coverage == Coverage::centre && scene.width % 8 == 0;
+  out.memory.tile_bytes = out.tiles_in_place ? 0 : out.threads * tile_pixels * channel_count(out.format);
   out.memory.depth_bytes =
       any_3d ? out.threads * tile_pixels * out.samples * static_cast<std::int64_t>(sizeof(float)) : 0;
   // Multisampling: a colour per sample, used only where a pixel's samples differ (one bit a pixel says so).
@@ -400,6 +401,7 @@ std::string explain_json(const RenderPlan& p) {
   j["depth_buffer"] = p.depth_buffer;
   j["samples"] = p.samples;
   j["simd"] = p.simd == Simd::avx2 ? "avx2" : "sse2";
+  j["tiles_in_place"] = p.tiles_in_place;
   j["antialias"] = p.coverage == Coverage::area      ? "area"
                    : p.coverage == Coverage::samples ? "multisample"
                                                      : "none";

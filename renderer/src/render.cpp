@@ -155,10 +155,17 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
   close();
 }
 
-// Draws one tile: its bin into the thread's tile storage (filled from the image, which holds the background
-// there, with depth and the multisampling state cleared), resolved when multisampled, copied back.
+// Draws one tile: straight into the image when the plan says so; else its bin into the thread's tile storage
+// (filled from the image, which holds the background there, with depth and the multisampling state
+// cleared), resolved when multisampled, copied back.
 template <int C>
 void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
+  if (f.plan.tiles_in_place) {  // the image is the storage: its rows are whole blocks wide
+    detail::Surface surface{f.image.pixels.data(), nullptr, nullptr, f.image.width, 0, 0, C};
+    surface.shaded = &scratch.shaded;
+    surface.simd = f.plan.simd;
+    return draw_bin<C>(f, tile, surface, meter);
+  }
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const int w = rect.x1 - rect.x0, rows = rect.y1 - rect.y0;
   const std::size_t row_bytes = static_cast<std::size_t>(w) * C;
@@ -245,7 +252,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const std::size_t tile_pixels = static_cast<std::size_t>(plan.tile_width()) * plan.tile_height();
   const auto samples = static_cast<std::size_t>(plan.samples);
   for (Scratch& t : scratch) {
-    t.color.resize(tile_pixels * image.channels());
+    if (!plan.tiles_in_place) t.color.resize(tile_pixels * image.channels());
     if (plan.depth_buffer) t.depth.resize(tile_pixels * samples);
     if (plan.memory.coverage_bytes) t.coverage.resize(tile_pixels * detail::kUnionFloats);
     if (samples > 1) {

@@ -70,7 +70,8 @@ struct MemoryPlan {
   std::int64_t depth_bytes = 0;   ///< depth: one tile's per thread (4 bytes a sample); 0 for 2D scenes
   std::int64_t sample_bytes = 0;  ///< multisampling: each thread's tile of colour per sample, plus a bit per
                                   ///< pixel saying whether its samples differ; 0 unless antialias > 1
-  std::int64_t tile_bytes = 0;    ///< each thread's tile of colour, where a tile is drawn before it is copied out
+  std::int64_t tile_bytes = 0;    ///< each thread's tile of colour, where a tile is drawn before it is copied
+                                  ///< out; 0 when tiles draw in place (RenderPlan::tiles_in_place)
   std::int64_t coverage_bytes = 0;  ///< area coverage: each thread's tile of summed coverage and colour (5
                                     ///< floats and a bit a pixel), when some primitive has union_coverage
   std::int64_t texture_bytes = 0;   ///< textures of textured meshes: their decoded texels (held by the scene)
@@ -131,6 +132,11 @@ struct RenderPlan {
   /// Tile side in pixels, a multiple of 8: records are binned to tiles and threads take tiles. Small scenes
   /// get one tile as large as the image (binning them costs more than it saves).
   int tile = 64;
+  /// Tiles draw straight into the image, with no storage of their own and no copies: 2D, aliased, and the
+  /// image whole blocks wide (kernels may rewrite a block row's other pixels unchanged, which must be the
+  /// same tile's). Otherwise each thread draws a tile in its own storage, filled from the image and copied
+  /// back.
+  bool tiles_in_place = false;
   bool scalar_coverage = false;  ///< test hook: partial blocks tested one pixel at a time, not in SIMD lanes
   Simd simd = Simd::sse2;        ///< the kernels' instruction set: the machine's best unless limited
   MemoryPlan memory;
