@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -172,6 +173,25 @@ TEST(Core, InPlaceTilesGiveTheBytesOfTileStorage) {
                 << y;
       }
   }
+}
+
+// Renders running at once share the process's helper threads: each still gets its own bytes, whether a
+// helper joined it or not.
+TEST(Core, RendersAtOnceShareTheHelperThreads) {
+  std::vector<raster::Scene> scenes;
+  std::vector<raster::Image> alone;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    scenes.push_back(seed % 2 ? mixed_scene(seed, 200) : large_smooth_scene(seed, seed == 2));
+    alone.push_back(render_with(scenes.back(), 16, 1));
+  }
+  std::vector<std::vector<std::uint8_t>> got(scenes.size() * 3);
+  {
+    std::vector<std::jthread> callers;
+    for (std::size_t i = 0; i < got.size(); ++i)
+      callers.emplace_back([&, i] { got[i] = render_with(scenes[i % scenes.size()], 16, 3).pixels; });
+  }
+  for (std::size_t i = 0; i < got.size(); ++i)
+    EXPECT_EQ(got[i], alone[i % scenes.size()].pixels) << "render " << i;
 }
 
 // A UV sphere of 2 n^2 triangles (a large mesh is set up in parts on every render thread from 32,768
