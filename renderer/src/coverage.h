@@ -13,6 +13,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "setup.h"
 #include "stop.h"
@@ -33,10 +36,14 @@ struct Block {
   double area = 1;  ///< the triangle's doubled area in 1/256 px units: weights are E_k / area
 };
 
-/// How the partial blocks' masks are computed: eight lanes of a row at a time (SSE2, int32 lanes relative
-/// to the block, only for the edges that cross it) or one pixel at a time in the edges' own integer type.
-/// Both give the same mask; tests hold them to it.
-enum class Lanes : std::uint8_t { simd, scalar };
+/// How the partial blocks' masks are computed: eight lanes of a row at a time (SSE2 or AVX2, int32 lanes
+/// relative to the block, only for the edges that cross it) or one pixel at a time in the edges' own integer
+/// type. All give the same mask; tests hold them to it.
+enum class Lanes : std::uint8_t {
+  simd,    ///< SSE2: a row in two registers of four
+  avx2,    ///< a row in one register of eight (RenderPlan::simd)
+  scalar,  ///< one pixel at a time (test hook)
+};
 
 namespace coverage_detail {
 
@@ -120,18 +127,43 @@ inline std::uint64_t edge_mask_lanes(std::int32_t e, std::int32_t dx, std::int32
 #endif
 }
 
+#if defined(__x86_64__)
+/// edge_mask_lanes with a row in one AVX2 register: the row's eight sign bits in one movemask.
+__attribute__((target("avx2"))) inline std::uint64_t edge_mask_avx2(std::int32_t e, std::int32_t dx,
+                                                                    std::int32_t dy, int r0, int r1) {
+  __m256i row =
+      _mm256_add_epi32(_mm256_set1_epi32(e + r0 * dy),
+                       _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(dx)));
+  const __m256i down = _mm256_set1_epi32(dy);
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r, row = _mm256_add_epi32(row, down)) {
+    const auto negative = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(row)));
+    mask |= static_cast<std::uint64_t>(~negative & 0xffu) << (8 * r);
+  }
+  return mask;
+}
+#endif
+
 /// A partial block's mask from its crossing edges (bit k of `crossing`), in int32 lanes where the values
 /// fit (an edge crossing a block has |e| <= 7 (|dx| + |dy|) there), else one pixel at a time in int64.
 inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::int64_t (&step_x)[3],
-                                        const std::int64_t (&step_y)[3], unsigned crossing, int r0, int r1) {
+                                        const std::int64_t (&step_y)[3], unsigned crossing, int r0, int r1,
+                                        Lanes lanes = Lanes::simd) {
   constexpr std::int64_t kLimit = std::int64_t{1} << 30;
   std::uint64_t mask = ~0ull;
   for (int k = 0; k < 3; ++k) {
     if (!(crossing & (1u << k))) continue;
     const std::int64_t reach = 8 * (std::abs(step_x[k]) + std::abs(step_y[k]));
     if (std::abs(e[k]) + reach < kLimit) {
-      mask &= edge_mask_lanes(static_cast<std::int32_t>(e[k]), static_cast<std::int32_t>(step_x[k]),
-                              static_cast<std::int32_t>(step_y[k]), r0, r1);
+      const auto e32 = static_cast<std::int32_t>(e[k]), dx = static_cast<std::int32_t>(step_x[k]),
+                 dy = static_cast<std::int32_t>(step_y[k]);
+#if defined(__x86_64__)
+      if (lanes == Lanes::avx2) {
+        mask &= edge_mask_avx2(e32, dx, dy, r0, r1);
+        continue;
+      }
+#endif
+      mask &= edge_mask_lanes(e32, dx, dy, r0, r1);
     } else {
       const std::int64_t one[3] = {e[k], 0, 0}, sx[3] = {step_x[k], 0, 0}, sy[3] = {step_y[k], 0, 0};
       mask &= partial_mask_scalar(one, sx, sy, r0, r1);
@@ -236,13 +268,13 @@ struct BlockGrid {
 template <typename T>
 std::uint64_t inside_mask(const T (&e)[3], const BlockGrid<T>& g, Lanes lanes, int r0, int r1) {
   if constexpr (std::is_same_v<T, std::int64_t>) {
-    if (lanes == Lanes::simd) {
+    if (lanes != Lanes::scalar) {
       unsigned crossing = 0;
       // Not `crossing |= (cond ? 1u : 0u) << k`: GCC 12 with -fsanitize=bounds,shift miscompiles that
       // form (a wrong index at -O0, a wrong mask at -O2), which made make test-asan fail.
       for (int k = 0; k < 3; ++k)
         if (e[k] + g.low[k] < T(0)) crossing |= 1u << k;
-      return partial_mask_lanes(e, g.step_x, g.step_y, crossing, r0, r1);
+      return partial_mask_lanes(e, g.step_x, g.step_y, crossing, r0, r1, lanes);
     }
   }
   return partial_mask_scalar(e, g.step_x, g.step_y, r0, r1);
