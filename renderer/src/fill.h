@@ -277,8 +277,9 @@ class ColorPlanes {
 #if defined(__x86_64__)
   // block_sse2's opaque RGB(A) path in AVX2: the four channels' starting values side by side in doubles
   // (the same operations in the same order, so the same bits), then a block row in one register per
-  // channel; a pixel's word is its channels' bytes side by side, and RGB drops each word's spare byte with
-  // one shuffle per half. Anything else (steep, blending, grey, values beyond int32) goes to block_sse2.
+  // channel; a pixel's word is its channels' bytes side by side, RGB drops each word's spare byte with one
+  // shuffle per half, and a row is stored whole (the tile storage is whole blocks wide). Anything else
+  // (steep, blending, grey, values beyond int32) goes to block_sse2.
   __attribute__((target("avx2"))) void block_avx2(const Block& b) const {
     const __m256d scale = _mm256_set1_pd(65536.0 / b.area);
     __m256d n = _mm256_mul_pd(_mm256_set1_pd(b.e[0]), _mm256_loadu_pd(vertex_[0]));
@@ -312,21 +313,29 @@ class ColorPlanes {
         __m256i w = _mm256_srli_epi32(v[0], 16);
         for (int ch = 1; ch < C; ++ch)
           w = _mm256_or_si256(w, _mm256_slli_epi32(_mm256_srli_epi32(v[ch], 16), 8 * ch));
-        if (bits == 0xff && C == 4) {
-          _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), w);
-        } else if (bits == 0xff) {
-          const __m256i packed = _mm256_shuffle_epi8(w, pack);
-          const __m128i lo = _mm256_castsi256_si128(packed), hi = _mm256_extracti128_si256(packed, 1);
-          _mm_storeu_si128(reinterpret_cast<__m128i*>(p), lo);  // its last 4 bytes are rewritten next
-          _mm_storel_epi64(reinterpret_cast<__m128i*>(p + 12), hi);
-          const auto last = static_cast<std::uint32_t>(_mm_extract_epi32(hi, 2));
-          std::memcpy(p + 20, &last, 4);
+        // Partial rows keep the other pixels' bytes with a byte blend: they are this block's, so this tile's.
+        const std::uint8_t* keep = kByteMasks<C>[bits];
+        if constexpr (C == 4) {
+          if (bits == 0xff) {
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), w);
+          } else {
+            __m256i* out = reinterpret_cast<__m256i*>(p);
+            const __m256i m = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(keep));
+            _mm256_storeu_si256(out, _mm256_blendv_epi8(_mm256_loadu_si256(out), w, m));
+          }
         } else {
-          alignas(32) std::uint32_t words[8];
-          _mm256_store_si256(reinterpret_cast<__m256i*>(words), w);
-          for (unsigned m = bits; m; m &= m - 1) {
-            const int i = std::countr_zero(m);
-            std::memcpy(p + C * i, &words[i], C);
+          const __m256i packed = _mm256_shuffle_epi8(w, pack);  // 12 bytes at the start of each half
+          const __m128i a = _mm256_castsi256_si128(packed), b = _mm256_extracti128_si256(packed, 1);
+          const __m128i lo = _mm_or_si128(a, _mm_slli_si128(b, 12)), hi = _mm_srli_si128(b, 4);
+          __m128i* out = reinterpret_cast<__m128i*>(p);
+          if (bits == 0xff) {
+            _mm_storeu_si128(out, lo);
+            _mm_storel_epi64(out + 1, hi);
+          } else {
+            const __m128i m_lo = _mm_load_si128(reinterpret_cast<const __m128i*>(keep));
+            const __m128i m_hi = _mm_load_si128(reinterpret_cast<const __m128i*>(keep + 16));
+            _mm_storeu_si128(out, _mm_blendv_epi8(_mm_loadu_si128(out), lo, m_lo));
+            _mm_storel_epi64(out + 1, _mm_blendv_epi8(_mm_loadl_epi64(out + 1), hi, m_hi));
           }
         }
       }
