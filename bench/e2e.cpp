@@ -199,6 +199,47 @@ int main(int argc, char** argv) {
         "the in-process stages above, plus moving the request and the PNG over loopback");
   }
 
+  // 2D through the service (issue 30's targets): a warm server's Server-Timing raster, which includes what a
+  // request really pays (buffers, the clear), against llvmpipe's draw of the same triangles; and what a
+  // fresh server's first requests cost for a thumbnail.
+  if (!rasterd.empty()) {
+    const int counted = std::max(5, runs);
+    std::printf(
+        "\n## 2D through the service (issue 30)\n\n"
+        "A warm `rasterd serve` (render threads: every core) answering POST /render with each scene's JSON, "
+        "medians of %d requests of its Server-Timing *raster* (after four not counted), against llvmpipe "
+        "drawing the same triangles at %d threads (the core table's run). Targets: large ≥ 3×, small ≥ 2.5×, "
+        "grid ≥ 2×.\n\n"
+        "| scene | raster ms | llvmpipe ms | vs llvmpipe | target | verdict "
+        "|\n|---|---:|---:|---:|---:|---|\n",
+        counted, cores);
+    const std::pair<const char*, double> targets[] = {{"small", 2.5}, {"large", 3}, {"grid", 2}, {"flat", 0}};
+    for (const auto& [kind, target] : targets) {
+      const std::string json = bench::scene_json(bench::make_scene(kind, 1));
+      const bench::ServerTimes ours = bench::server_times(rasterd, json, "", counted, "application/json");
+      const double peer = llvmpipe.count(cores) && llvmpipe[cores].count(kind) ? llvmpipe[cores][kind] : 0;
+      const double ratio = peer > 0 ? peer / ours.raster_ms : 0;
+      std::printf("| %s | %.2f | %.2f | %.2fx | %s | %s |\n", kind, ours.raster_ms, peer, ratio,
+                  target > 0 ? fmt("%.1fx", target).c_str() : "",
+                  target > 0 ? (ratio >= target ? "met" : "**gap**") : "");
+    }
+    // One smooth triangle at 256x256 (ab-bench's thumb-256), on a server started for it: the first request,
+    // and the median of the first five.
+    const std::string thumb =
+        R"({"width":256,"height":256,"background":"#101418","primitives":[{"type":"triangle",)"
+        R"("points":[[12.5,10],[240,52.25],[88,244]],"colors":["#ff4000","#20c0ff","#f0f0f0"]}]})";
+    const bench::ServerTimes fresh = bench::server_times(rasterd, thumb, "", 5, "application/json", 0);
+    const bench::ServerTimes warm = bench::server_times(rasterd, thumb, "", counted, "application/json");
+    std::printf(
+        "\nOne smooth triangle at 256×256 (ab-bench's *thumb-256*), Server-Timing in µs (targets on a fresh "
+        "server: raster ≤ 50, encode ≤ 200):\n\n"
+        "| server | raster µs | encode µs |\n|---|---:|---:|\n"
+        "| fresh: first request | %.0f | %.0f |\n| fresh: median of the first 5 | %.0f | %.0f |\n"
+        "| warm: median of %d | %.0f | %.0f |\n",
+        fresh.first_raster_ms * 1e3, fresh.first_encode_ms * 1e3, fresh.raster_ms * 1e3,
+        fresh.encode_ms * 1e3, counted, warm.raster_ms * 1e3, warm.encode_ms * 1e3);
+  }
+
   // Models through the service (issue 29's targets): a warm server's Server-Timing for an OBJ body, against
   // tinyobjloader reading the same text in this process and llvmpipe drawing the same mesh, at 2 threads.
   if (!rasterd.empty()) {

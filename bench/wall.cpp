@@ -82,7 +82,7 @@ WallTimes wall_times(const std::string& rasterd, const std::string& scene_json, 
 }
 
 ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query,
-                         int runs) {
+                         int runs, const std::string& content_type, int warm_up) {
   const int port = 20000 + static_cast<int>((getpid() + 1) % 20000);
   const pid_t server = spawn({rasterd, "serve", "--host", "127.0.0.1", "--port", std::to_string(port),
                               "--max-body-bytes", "268435456", "--render-deadline-ms", "120000"});
@@ -91,23 +91,24 @@ ServerTimes server_times(const std::string& rasterd, const std::string& body, co
   for (int tries = 0; !client.Get("/healthz") && tries < 200; ++tries)
     std::this_thread::sleep_for(std::chrono::milliseconds(25));
   std::vector<double> stage[3];
-  constexpr int kWarmUp = 4;  // not counted: a fresh server settles (kept blocks, malloc thresholds) in ~4
-  for (int r = 0; r < kWarmUp + runs; ++r) {
-    const auto res = client.Post("/render?" + query, body, "text/plain");
+  // Warm-up requests are not counted: a fresh server settles (kept blocks, malloc thresholds) in ~4.
+  for (int r = 0; r < warm_up + runs; ++r) {
+    const auto res = client.Post("/render?" + query, body, content_type);
     if (!res || res->status != 200) {
       kill(server, SIGKILL);
       waitpid(server, nullptr, 0);
-      throw std::runtime_error("POST /render of a model failed");
+      throw std::runtime_error("POST /render failed");
     }
     const std::string timing = res->get_header_value("Server-Timing");
     const char* names[3] = {"parse;dur=", "raster;dur=", "encode;dur="};
-    for (int k = 0; k < 3 && r >= kWarmUp; ++k)
+    for (int k = 0; k < 3 && r >= warm_up; ++k)
       if (const auto at = timing.find(names[k]); at != std::string::npos)
         stage[k].push_back(std::stod(timing.substr(at + std::char_traits<char>::length(names[k]))));
   }
   kill(server, SIGTERM);
   waitpid(server, nullptr, 0);
-  return {median(stage[0]), median(stage[1]), median(stage[2])};
+  return {median(stage[0]), median(stage[1]), median(stage[2]), stage[1].empty() ? 0 : stage[1][0],
+          stage[2].empty() ? 0 : stage[2][0]};
 }
 
 }  // namespace bench

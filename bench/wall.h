@@ -15,13 +15,16 @@ struct WallTimes {
 /// Runs `rasterd` (a path) both ways on `scene_json`, `runs` times each.
 WallTimes wall_times(const std::string& rasterd, const std::string& scene_json, int runs);
 
-/// A warm server's own account of a request (its Server-Timing header), medians, milliseconds.
+/// A server's own account of its requests (their Server-Timing headers), milliseconds: medians of the
+/// counted requests, and the first counted request alone.
 struct ServerTimes {
   double parse_ms = 0, raster_ms = 0, encode_ms = 0;
+  double first_raster_ms = 0, first_encode_ms = 0;
 };
 
-/// POSTs `body` (a model) to `rasterd serve` at /render?`query`, `runs` times after four warm-up requests.
+/// POSTs `body` (a model, or with `content_type` "application/json" a scene) to a new `rasterd serve` at
+/// /render?`query`, `runs` times after `warm_up` requests that are not counted.
 ServerTimes server_times(const std::string& rasterd, const std::string& body, const std::string& query,
-                         int runs);
+                         int runs, const std::string& content_type = "text/plain", int warm_up = 4);
 
 }  // namespace bench
