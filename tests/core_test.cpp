@@ -104,15 +104,20 @@ TEST(Core, SameBytesForEveryTileSizeAndThreadCount) {
     }
 }
 
-// Large smooth (per-vertex colour) triangles over an opaque or a transparent background (RGB or RGBA
-// output): most of their pixels are whole blocks and rectangles, where the AVX2 kernels work.
+// Large triangles, two in three smooth (per-vertex colour) and the rest flat, over an opaque or a transparent
+// background (RGB or RGBA output): most of their pixels are whole blocks and rectangles, where the AVX2
+// kernels work.
 raster::Scene large_smooth_scene(unsigned seed, bool transparent) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> at(-60, 360);
   SceneBuilder s(301, 203, transparent ? Rgba8{0, 0, 0, 0} : Rgba8{20, 30, 40, 255});
-  for (int i = 0; i < 40; ++i)
-    s.triangle({at(rng), at(rng)}, {at(rng), at(rng)}, {at(rng), at(rng)}, random_color(rng),
-               random_color(rng), random_color(rng));
+  for (int i = 0; i < 40; ++i) {
+    const Point2 a{at(rng), at(rng)}, b{at(rng), at(rng)}, c{at(rng), at(rng)};
+    if (i % 3 == 0)
+      s.triangle(a, b, c, random_color(rng));  // flat
+    else
+      s.triangle(a, b, c, random_color(rng), random_color(rng), random_color(rng));
+  }
   return s.scene;
 }
 

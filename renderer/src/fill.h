@@ -30,7 +30,10 @@ class FlatFill {
  public:
   FlatFill() = default;
   FlatFill(const Surface& surface, Rgba8 color, bool blend)
-      : surface_(&surface), flat_(color), blend_(blend) {
+      : surface_(&surface),
+        flat_(color),
+        blend_(blend),
+        wide_(surface.simd == Simd::avx2 && (C == 3 || C == 4) && !blend) {
     for (int i = 0; i < kBlock; ++i) store<C>(row_bytes_ + i * C, flat_);
 #if defined(__SSE2__)
     pattern_[0] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row_bytes_));
@@ -40,6 +43,9 @@ class FlatFill {
 
   // One colour: a whole row of a block is one copy of eight pixels' bytes.
   void block(const Block& b) const {
+#if defined(__x86_64__)
+    if (wide_) return block_avx2(b);
+#endif
     const std::uint8_t* row_bytes = row_bytes_;
     const Rgba8 flat = flat_;  // locals: pixel stores (through uint8_t*) could alias the members
 #if defined(__SSE2__)
@@ -85,6 +91,36 @@ class FlatFill {
       for (; bits; bits &= bits - 1) put(row + std::countr_zero(bits) * C, flat);
     }
   }
+
+#if defined(__x86_64__)
+  // block()'s opaque RGB(A) rows with AVX2 byte blends: a row is the pattern where its mask's bytes are set
+  // and what was there elsewhere (this block's other pixels, so this tile's).
+  __attribute__((target("avx2"))) void block_avx2(const Block& b) const {
+    const std::size_t stride = static_cast<std::size_t>(surface_->width) * C;
+    std::uint8_t* row = pixel(b.x0, b.y0);
+    if constexpr (C == 4) {
+      const __m256i pattern = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(row_bytes_));
+      for (int r = 0; r < kBlock; ++r, row += stride) {
+        const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+        if (!bits) continue;
+        __m256i* out = reinterpret_cast<__m256i*>(row);
+        const __m256i m = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kByteMasks<C>[bits]));
+        _mm256_storeu_si256(out, _mm256_blendv_epi8(_mm256_loadu_si256(out), pattern, m));
+      }
+    } else {
+      const __m128i lo = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row_bytes_));
+      const __m128i hi = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row_bytes_ + 16));
+      for (int r = 0; r < kBlock; ++r, row += stride) {
+        const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+        if (!bits) continue;
+        const __m128i* m = reinterpret_cast<const __m128i*>(kByteMasks<C>[bits]);
+        __m128i* out = reinterpret_cast<__m128i*>(row);
+        _mm_storeu_si128(out, _mm_blendv_epi8(_mm_loadu_si128(out), lo, _mm_load_si128(m)));
+        _mm_storel_epi64(out + 1, _mm_blendv_epi8(_mm_loadl_epi64(out + 1), hi, _mm_load_si128(m + 1)));
+      }
+    }
+  }
+#endif
 
   // `n` pixels of the flat colour from `p` on: whole block rows from registers, the rest as a run.
   void run(std::uint8_t* p, int n) const {
@@ -149,6 +185,7 @@ class FlatFill {
   const Surface* surface_ = nullptr;
   Rgba8 flat_;
   bool blend_ = false;
+  bool wide_ = false;                // the plan chose AVX2 and this is opaque RGB(A)
   std::uint8_t row_bytes_[32] = {};  // a block row of the colour, stored (kBlock * C bytes used)
 #if defined(__SSE2__)
   __m128i pattern_[2] = {};  // the same 32 bytes in registers' form
