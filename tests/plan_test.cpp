@@ -126,7 +126,7 @@ TEST(Plan, MemoryIsCheckedBeforeAllocation) {
   EXPECT_EQ(need.tile_bytes, 0) << "2D, aliased, whole blocks wide: tiles draw in place";
   EXPECT_EQ(need.total(), need.color_bytes);
   SceneBuilder odd(4001, 4000, raster::Rgba8{255, 0, 0, 0});  // a block at the right edge is partly outside
-  EXPECT_EQ(raster::plan(odd.scene, limits, one_thread).memory.tile_bytes, 64 * 64 * 4)
+  EXPECT_EQ(raster::plan(odd.scene, limits, one_thread).memory.tile_bytes, 128 * 128 * 4)
       << "one thread's tile";
   limits.max_buffer_bytes = need.total() - 1;
   try {

@@ -42,7 +42,9 @@ TEST(Robustness, LargestImageRendersWithPlannedMemory) {
   const auto plan = raster::plan(scene);
   EXPECT_EQ(plan.memory.color_bytes, 6324ll * 6324);
   EXPECT_EQ(plan.memory.total(), plan.memory.color_bytes + plan.memory.tile_bytes) << "no other buffer";
-  EXPECT_EQ(plan.memory.tile_bytes, plan.threads * 64 * 64);
+  EXPECT_EQ(plan.tile, 128);
+  EXPECT_EQ(plan.memory.tile_bytes, plan.threads * 128 * 128)
+      << "6324 is not whole blocks wide: tile storage";
   const auto img = raster::render(scene, plan);
   EXPECT_EQ(static_cast<std::int64_t>(img.pixels.size()), plan.memory.color_bytes);
   EXPECT_EQ(test::pixel(img, 0, 0).r, 128);
