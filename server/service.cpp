@@ -485,6 +485,8 @@ struct Service::State {
 Service::Service(ServiceConfig config) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (config.workers <= 0) config.workers = cores;
+  // Each worker's PNG encoder set up now, not on the first requests.
+  raster::prepare_png_encoders(config.workers);
   state_ = std::make_unique<State>(config);
 }
 

@@ -101,6 +101,23 @@ TEST(Render, PngContainerIsWellFormed) {
   }
 }
 
+// A service prepares an encoder per worker at start: they are kept, and encoding afterwards takes one and
+// gives it back (the count does not drop), with the same bytes as before.
+TEST(Render, PreparedPngEncodersAreKeptForTheEncodesToCome) {
+  raster::Image image;
+  image.width = 40, image.height = 30, image.format = raster::PixelFormat::rgb8;
+  image.pixels.resize(40 * 30 * 3);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = static_cast<std::uint8_t>(i * 7);
+  const auto before = raster::encode_png(image);
+  const std::size_t kept = raster::kept_png_encoders(1);
+  raster::prepare_png_encoders(static_cast<int>(kept) + 3);
+  EXPECT_EQ(raster::kept_png_encoders(1), kept + 3);
+  EXPECT_EQ(raster::encode_png(image), before);
+  EXPECT_EQ(raster::kept_png_encoders(1), kept + 3) << "taken and given back";
+  raster::prepare_png_encoders(2);
+  EXPECT_EQ(raster::kept_png_encoders(1), kept + 3) << "enough kept already: none made";
+}
+
 TEST(Render, PngFilteredInPlaceEqualsTheCopyingEncoder) {
   std::mt19937 rng(3);
   for (auto format : {raster::PixelFormat::grey8, raster::PixelFormat::grey_alpha8, raster::PixelFormat::rgb8,

@@ -69,6 +69,10 @@ class DeflaterPool {
     if (d->level_buffer_size) d->level_buffer = std::make_unique<std::uint8_t[]>(d->level_buffer_size);
     return d;
   }
+  std::size_t kept(int level) {
+    std::lock_guard lock(mutex_);
+    return spare_[level].size();
+  }
   void give(std::unique_ptr<Deflater> d) {
     std::lock_guard lock(mutex_);
     auto& spare = spare_[d->level];
@@ -174,6 +178,18 @@ void check_plan(const Image& image, const PngPlan& png) {
 }
 
 }  // namespace
+
+void prepare_png_encoders(int encodes_at_once, const PngPlan& png) {
+  const int level = std::clamp(png.deflate_level, 0, 3);
+  const int wanted = std::clamp(encodes_at_once, 0, 64);
+  std::vector<std::unique_ptr<Deflater>> taken;  // held at once, so each take makes a new one if need be
+  for (int i = 0; i < wanted; ++i) taken.push_back(deflaters().take(level));
+  for (auto& d : taken) deflaters().give(std::move(d));
+}
+
+std::size_t kept_png_encoders(int deflate_level) {
+  return deflaters().kept(std::clamp(deflate_level, 0, 3));
+}
 
 std::vector<std::uint8_t> encode_png(const Image& image) {
   return encode_png(image, png_plan_for(image.format));
