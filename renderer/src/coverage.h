@@ -1,6 +1,8 @@
 // Coverage: one triangle record x one tile -> blocks of 8x8 pixels with a mask of the covered ones and the
-// exact edge values shading needs. One routine for every triangle (flat, smooth, depth-tested, lit; 2D and
-// 3D), templated on the edge functions' integer type: int64 in the fast range, the 384-bit Wide beyond it.
+// exact edge values shading needs. One block walker for every triangle (flat, smooth, depth-tested, lit; 2D
+// and 3D) and every anti-aliasing mode, which are its policies (what a partial block yields: a centre mask,
+// a mask per sample, area shares); templated on the edge functions' integer type: int64 in the fast range,
+// the 384-bit Wide beyond it.
 #pragma once
 
 #include <algorithm>

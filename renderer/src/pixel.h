@@ -192,7 +192,7 @@ inline constexpr ByteMasks<C> kByteMasks{};
 
 /// Lambert under the view's lights (scene.h: Light): `out` = the sum over lights of colour x intensity x
 /// (ambient: 1; directional, point: max(0, n . toward the light)), for the unit normal n of the side seen at
-/// world point p. Used per face by geometry (flat lighting) and per pixel below.
+/// world point p. Used per face by geometry (flat lighting) and per pixel by the triangle shader (shade.h).
 inline void light_at(std::span<const LightPlan> lights, const double (&n)[3], const double (&p)[3],
                      double (&out)[3]) {
   out[0] = out[1] = out[2] = 0;

@@ -281,8 +281,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const Frame frame{setup, bins, plan, image};
   // Tiles are taken column by column; which thread takes one does not change its bytes. Threads drawing at
   // once are then above and below each other: side by side, drawing in place, they would share the cache
-  // line at their common edge in every row (64 px of RGB is 192 bytes; the image is not 64-byte aligned).
-  // One thread: no hand-off.
+  // line at their common edge in every row (the image is only 16-byte aligned). One thread: no hand-off.
   detail::parallel_for(threads, static_cast<std::size_t>(tiles), stop,
                        [&](std::size_t piece, detail::StopMeter& own, int thread) {
                          const int t =
