@@ -200,7 +200,9 @@ TEST(ObjTexture, GivenMtlTextWinsAndAnUnsentLibraryIsNoError) {
   // A bare model that names a library nobody sent keeps the default grey and no texture.
   const Mesh bare = raster::parse_obj(quad, {}, {}, images());
   EXPECT_TRUE(bare.textures.empty());
-  for (const raster::Rgba8& c : bare.face_colors) EXPECT_EQ(c, (raster::Rgba8{204, 204, 204, 255}));
+  // No colour of its own (the scene's default grey is what it is drawn in).
+  EXPECT_TRUE(bare.face_colors.empty());
+  EXPECT_TRUE(bare.colors.empty());
   // And a library is looked up among the uploads only: never on this disk.
   std::string outside = quad;
   outside.replace(outside.find("mtllib quad.mtl"), 15, "mtllib /etc/passwd");
@@ -232,23 +234,41 @@ TEST(ObjTexture, CaseOnlyDifferencesInTheFileNameAreForgiven) {
 }
 
 TEST(ObjTexture, FacesWithoutTextureCoordinatesAreDrawnUntextured) {
-  const std::string obj = "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
-                          "usemtl skin\nf 1/1 2/2 3/3\nf 1 3 4\n";
+  // The quad's upper-left half has no texture coordinates; its lower-right half samples the checker.
+  const std::string obj =
+      "mtllib a.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+      "usemtl skin\nf 1/1 2/2 3/3\nf 1 3 4\n";
   const Mesh m = raster::parse_obj(obj, test::read_file(kDir + "basic.mtl"), {}, images());
   ASSERT_EQ(m.face_textures.size(), 2u);
   EXPECT_EQ(m.face_textures[0], 0);
   EXPECT_EQ(m.face_textures[1], -1);
-  EXPECT_NO_THROW(render(m));
+  const raster::Image image = render(m);
+  EXPECT_EQ(test::pixel(image, 0, 0), test::kWhite) << "untextured: the material's Kd 1 1 1 alone";
+  const raster::Rgba8 textured = test::pixel(image, 3, 3);
+  const raster::Rgba8 cells[4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {255, 255, 0, 255}};
+  EXPECT_TRUE(std::find(std::begin(cells), std::end(cells), textured) != std::end(cells))
+      << "textured: a checker texel, got " << int{textured.r} << "," << int{textured.g} << ","
+      << int{textured.b};
 }
 
+// Two textures that each fit the scene's texel limit but together do not: the limit is for all of them.
 TEST(ObjTexture, TexturesShareTheScenesTexelLimit) {
+  const std::string obj =
+      "mtllib ab.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+      "vt 0 1\nusemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 3/3 4/4\n";
+  const std::string mtl = "newmtl a\nmap_Kd checker.png\nnewmtl b\nmap_Kd white.png\n";
   raster::Limits limits;
-  limits.max_texture_pixels = 15;  // the 4x4 texture is 16
+  limits.max_texture_pixels = 32;  // two 4x4 textures: 16 + 16
+  EXPECT_EQ(raster::parse_obj(obj, mtl, limits, images()).textures.size(), 2u);
+  limits.max_texture_pixels = 31;  // each alone fits
   try {
-    raster::parse_obj(test::read_file(kDir + "quad.obj"), test::read_file(kDir + "basic.mtl"), limits, images());
-    FAIL() << "expected a limit error";
+    raster::parse_obj(obj, mtl, limits, images());
+    FAIL() << "expected a limit error for the second texture";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.kind(), ErrorKind::limit);
+    EXPECT_NE(std::string(e.what()).find("what is left of the scene's texture limit (15 pixels)"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -278,8 +298,18 @@ TEST(ObjTexture, BadTextureCoordinatesAreModelErrorsWithTheirLine) {
 // Found by docs/lighting.md's run over Debian's assimp-testmodels: empty_mat.obj says `usemtl ` with no
 // MTL, for which tinyobjloader makes a black material; number_formats.obj writes "+1".
 TEST(ObjTexture, AMaterialTheMtlDoesNotDefineKeepsTheDefaultGrey) {
-  const Mesh m = raster::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \nf 1 2 3\nusemtl nowhere\nf 1 3 2\n");
-  for (const raster::Rgba8& c : m.face_colors) EXPECT_EQ(c, (raster::Rgba8{204, 204, 204, 255}));
+  // Beside a material with a colour, faces under an empty `usemtl` or an undefined material get the grey.
+  const Mesh m = raster::parse_obj(
+      "mtllib r.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \nf 1 2 3\nusemtl nowhere\nf 1 3 2\nusemtl r\nf 2 3 "
+      "1\n",
+      "newmtl r\nKd 1 0 0\n");
+  ASSERT_EQ(m.face_colors.size(), 3u);
+  EXPECT_EQ(m.face_colors[0], (raster::Rgba8{204, 204, 204, 255}));
+  EXPECT_EQ(m.face_colors[1], (raster::Rgba8{204, 204, 204, 255}));
+  EXPECT_EQ(m.face_colors[2], (raster::Rgba8{255, 0, 0, 255}));
+  // With no colour anywhere the mesh carries none: the scene's default grey applies.
+  EXPECT_TRUE(raster::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \nf 1 2 3\nusemtl nowhere\nf 1 3 2\n")
+                  .face_colors.empty());
   const Mesh red = raster::parse_obj("mtllib r.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl r\nf 1 2 3\n", "newmtl r\nKd 1 0 0\n");
   ASSERT_EQ(red.face_colors.size(), 1u);
   EXPECT_EQ(red.face_colors[0], (raster::Rgba8{255, 0, 0, 255}));

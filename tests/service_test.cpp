@@ -112,9 +112,15 @@ TEST(Service, EachSceneLimitHasItsStatus) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422);
   EXPECT_EQ(nlohmann::json::parse(r->body)["line"], 5);
-  r = post(R"({"width": 4, "height": 4, "x": [[[[[[[[[[1]]]]]]]]]]})");
+  // Nested past the limit inside a known field, so the depth limit is the only thing wrong: without it the
+  // document would be an invalid scene (primitives that are not objects), a different problem type.
+  r = post(R"({"width": 4, "height": 4, "primitives": [[[[[[[[[[1]]]]]]]]]]})");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 400);
+  const auto depth = nlohmann::json::parse(r->body);
+  EXPECT_EQ(depth["type"], "urn:rasterd:problem:malformed-scene");
+  EXPECT_NE(depth["detail"].get<std::string>().find("nested deeper than 8 levels"), std::string::npos)
+      << depth;
   r = post(R"({"width": 8193, "height": 4})");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422);
