@@ -236,10 +236,6 @@ bool biased(const C& a, const C& b) {
   return !(a > C(0) || (a == C(0) && b > C(0)));
 }
 
-}  // namespace coverage_detail
-
-namespace coverage_detail {
-
 /// A clip's blocks and how the edge values step over them: E_k at a point `at` of each pixel (1/256 px from
 /// its corner), exact in T.
 template <typename T>
