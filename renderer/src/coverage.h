@@ -42,7 +42,7 @@ struct Block {
 /// relative to the block, only for the edges that cross it) or one pixel at a time in the edges' own integer
 /// type. All give the same mask; tests hold them to it.
 enum class Lanes : std::uint8_t {
-  simd,    ///< SSE2: a row in two registers of four
+  sse2,    ///< a row in two registers of four
   avx2,    ///< a row in one register of eight (RenderPlan::simd)
   scalar,  ///< one pixel at a time (test hook)
 };
@@ -150,7 +150,7 @@ __attribute__((target("avx2"))) inline std::uint64_t edge_mask_avx2(std::int32_t
 /// fit (an edge crossing a block has |e| <= 7 (|dx| + |dy|) there), else one pixel at a time in int64.
 inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::int64_t (&step_x)[3],
                                         const std::int64_t (&step_y)[3], unsigned crossing, int r0, int r1,
-                                        Lanes lanes = Lanes::simd) {
+                                        Lanes lanes = Lanes::sse2) {
   constexpr std::int64_t kLimit = std::int64_t{1} << 30;
   std::uint64_t mask = ~0ull;
   for (int k = 0; k < 3; ++k) {

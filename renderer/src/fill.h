@@ -56,7 +56,7 @@ class FlatFill {
     for (int r = 0; r < kBlock; ++r) {
       unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
       if (!bits) continue;
-      std::uint8_t* row = pixel(b.x0, b.y0 + r);
+      std::uint8_t* row = surface_->pixel<C>(b.x0, b.y0 + r);
       if (!blend_) {
 #if defined(__SSE2__)
         if constexpr (C == 3 || C == 4) {
@@ -88,7 +88,7 @@ class FlatFill {
           continue;
         }
       }
-      for (; bits; bits &= bits - 1) put(row + std::countr_zero(bits) * C, flat);
+      for (; bits; bits &= bits - 1) put<C>(row + std::countr_zero(bits) * C, flat, blend_);
     }
   }
 
@@ -97,7 +97,7 @@ class FlatFill {
   // and what was there elsewhere (this block's other pixels, so this tile's).
   __attribute__((target("avx2"))) void block_avx2(const Block& b) const {
     const std::size_t stride = static_cast<std::size_t>(surface_->width) * C;
-    std::uint8_t* row = pixel(b.x0, b.y0);
+    std::uint8_t* row = surface_->pixel<C>(b.x0, b.y0);
     if constexpr (C == 4) {
       const __m256i pattern = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(row_bytes_));
       for (int r = 0; r < kBlock; ++r, row += stride) {
@@ -134,15 +134,6 @@ class FlatFill {
   }
 
  private:
-  std::uint8_t* pixel(int x, int y) const {
-    return surface_->color + surface_->index(x, y) * C;
-  }
-  void put(std::uint8_t* p, Rgba8 c) const {
-    if (blend_)
-      blend<C>(p, c);
-    else
-      store<C>(p, c);
-  }
 
   // A full block row of the flat colour. From registers: loading the pattern after each store would make
   // the load wait on the store whenever their addresses agree modulo 4 KiB.
@@ -287,7 +278,7 @@ class ColorPlanes {
     for (int r = 0; r < kBlock; ++r) {
       unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
       if (!bits) continue;
-      std::uint8_t* row = pixel(b.x0, b.y0 + r);
+      std::uint8_t* row = surface_->pixel<C>(b.x0, b.y0 + r);
       for (; bits; bits &= bits - 1) {
         const int i = std::countr_zero(bits);
         std::uint8_t out[4];
@@ -295,21 +286,12 @@ class ColorPlanes {
           const std::int64_t v = (start[ch] + i * slope_x_[ch] + r * slope_y_[ch]) >> 16;
           out[ch] = static_cast<std::uint8_t>(std::clamp<std::int64_t>(v, 0, 255));
         }
-        put(row + i * C, Rgba8{out[0], out[1], out[2], out[3]});
+        put<C>(row + i * C, Rgba8{out[0], out[1], out[2], out[3]}, blend_);
       }
     }
   }
 
  private:
-  std::uint8_t* pixel(int x, int y) const {
-    return surface_->color + surface_->index(x, y) * C;
-  }
-  void put(std::uint8_t* p, Rgba8 c) const {
-    if (blend_)
-      blend<C>(p, c);
-    else
-      store<C>(p, c);
-  }
 
 #if defined(__x86_64__)
   // block_sse2's opaque RGB(A) path in AVX2: the four channels' starting values side by side in doubles
@@ -343,7 +325,7 @@ class ColorPlanes {
     const __m256i pack = _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1, 0, 1, 2, 4,
                                           5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
     const std::size_t stride = static_cast<std::size_t>(surface_->width) * C;
-    std::uint8_t* p = pixel(b.x0, b.y0);
+    std::uint8_t* p = surface_->pixel<C>(b.x0, b.y0);
     for (int r = 0; r < kBlock; ++r, p += stride) {
       const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
       if (bits) {
@@ -415,7 +397,7 @@ class ColorPlanes {
           lo = _mm_or_si128(lo, _mm_slli_epi32(_mm_srli_epi32(left[ch], 16), 8 * ch));
           hi = _mm_or_si128(hi, _mm_slli_epi32(_mm_srli_epi32(right, 16), 8 * ch));
         }
-        std::uint8_t* p = pixel(b.x0, b.y0 + r);
+        std::uint8_t* p = surface_->pixel<C>(b.x0, b.y0 + r);
         if (bits == 0xff) {
           store_full_row(p, lo, hi);
         } else {
@@ -475,7 +457,7 @@ class ColorPlanes {
       const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
       if (!bits) continue;
       const int lo = std::countr_zero(bits), hi = 31 - std::countl_zero(bits);
-      std::uint8_t* p = pixel(b.x0 + lo, b.y0 + r);
+      std::uint8_t* p = surface_->pixel<C>(b.x0 + lo, b.y0 + r);
       __m128i v = row_value;
       for (int i = 0; i < lo; ++i) v = _mm_add_epi32(v, step_x);
       const bool run = (bits >> lo) + 1 == 1u << (hi - lo + 1);
@@ -488,7 +470,7 @@ class ColorPlanes {
         continue;
       }
       for (int i = lo; i <= hi; ++i, p += C, v = _mm_add_epi32(v, step_x))
-        if (bits & (1u << i)) put(p, color(bytes(v)));
+        if (bits & (1u << i)) put<C>(p, color(bytes(v)), blend_);
     }
   }
 #endif
@@ -515,10 +497,10 @@ class ColorPlanes {
         value = value > hi_[ch] + 0.5 ? hi_[ch] + 0.5 : value;  // stays below hi + 1 after flooring
         for (int i = 0; i < 8; ++i) out[ch][i] = static_cast<std::uint8_t>(static_cast<int>(value[i]));
       }
-      std::uint8_t* row = pixel(b.x0, b.y0 + r);
+      std::uint8_t* row = surface_->pixel<C>(b.x0, b.y0 + r);
       for (; bits; bits &= bits - 1) {
         const int i = std::countr_zero(bits);
-        put(row + i * C, Rgba8{out[0][i], out[1][i], out[2][i], out[3][i]});
+        put<C>(row + i * C, Rgba8{out[0][i], out[1][i], out[2][i], out[3][i]}, blend_);
       }
     }
   }

@@ -62,10 +62,7 @@ void draw_line(const LineRecord& line, PrimitivePlan mode, const Surface& surfac
     }
     std::uint8_t* p = surface.color + index * C;
     const Rgba8 c = mode.smooth ? color() : c0;
-    if (mode.blend)
-      blend<C>(p, c);
-    else
-      store<C>(p, c);
+    put<C>(p, c, mode.blend);
   };
 
   if (du == T(0)) {  // both endpoints in one pixel

@@ -75,6 +75,15 @@ inline void blend(std::uint8_t* px, Rgba8 c) {
   }
 }
 
+/// How a primitive writes a colour: source-over when its plan says it blends, else a plain store.
+template <int C>
+inline void put(std::uint8_t* px, Rgba8 c, bool blending) {
+  if (blending)
+    blend<C>(px, c);
+  else
+    store<C>(px, c);
+}
+
 /// Source-over of `c` at opacity `w` in [0, 1] (a covered share times the colour's own alpha / 255), rounded
 /// to nearest: how area coverage composites a cut pixel.
 template <int C>

@@ -116,7 +116,7 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::Lanes lanes = f.plan.scalar_coverage      ? detail::Lanes::scalar
                               : f.plan.simd == Simd::avx2 ? detail::Lanes::avx2
-                                                          : detail::Lanes::simd;
+                                                          : detail::Lanes::sse2;
   const Coverage coverage = f.plan.coverage;
   // A union-coverage primitive (its own draw call) accumulates over its consecutive records, and is
   // composited over the pixels they reached when the next record belongs to another call.

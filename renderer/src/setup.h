@@ -71,6 +71,10 @@ struct Surface {
     return static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x - x0);
   }
   std::uint8_t* pixel(int x, int y) const { return color + index(x, y) * static_cast<std::size_t>(channels); }
+  template <int C>  ///< the same, for kernels compiled for C channels (== channels)
+  std::uint8_t* pixel(int x, int y) const {
+    return color + index(x, y) * C;
+  }
 };
 
 /// Attribute floats of a record, in this order, only those its call needs:

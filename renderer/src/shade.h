@@ -59,7 +59,7 @@ class TriangleShader {
   /// block by block with exactly the values the blocks would have had.
   void rect(Rect clip, const Block& first) {
     if (kind_ == Kind::flat && !mode_.blend && !union_) {
-      for (int y = clip.y0; y < clip.y1; ++y) fill_.run(pixel(clip.x0, y), clip.x1 - clip.x0);
+      for (int y = clip.y0; y < clip.y1; ++y) fill_.run(surface_.pixel<C>(clip.x0, y), clip.x1 - clip.x0);
       if (msaa_) {  // every sample of these pixels now holds the colour: one value each again
         for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock)
           for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock)
@@ -112,7 +112,7 @@ class TriangleShader {
       const Rgba8 c = color_at(b, i, r, covered);
       const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
       if (!((expanded >> bit) & 1)) expand(index), expanded |= std::uint64_t{1} << bit;
-      for (unsigned k = covered; k; k &= k - 1) write(sample_pixel(std::countr_zero(k), index), c);
+      for (unsigned k = covered; k; k &= k - 1) put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
     }
     *surface_.shaded += std::popcount(b.mask & ~all);
   }
@@ -135,12 +135,11 @@ class TriangleShader {
     for (std::uint64_t m = b.mask; m; m &= m - 1) {
       const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
       const Rgba8 c = color_at(b, i, r);
-      blend_weighted<C>(pixel(b.x0 + i, b.y0 + r), c, cut.share[bit] * (c.a / 255.0f));
+      blend_weighted<C>(surface_.pixel<C>(b.x0 + i, b.y0 + r), c, cut.share[bit] * (c.a / 255.0f));
     }
   }
 
  private:
-  std::uint8_t* pixel(int x, int y) const { return surface_.color + surface_.index(x, y) * C; }
   std::uint8_t* sample_pixel(int s, std::size_t index) const {
     return surface_.samples + (static_cast<std::size_t>(s) * surface_.plane + index) * C;
   }
@@ -218,7 +217,7 @@ class TriangleShader {
         }
         expand(index), expanded |= std::uint64_t{1} << bit;
       }
-      for (unsigned k = pass; k; k &= k - 1) write(sample_pixel(std::countr_zero(k), index), c);
+      for (unsigned k = pass; k; k &= k - 1) put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
     }
   }
 
@@ -262,13 +261,6 @@ class TriangleShader {
     }
   }
 
-  void write(std::uint8_t* p, Rgba8 c) const {
-    if (mode_.blend)
-      blend<C>(p, c);
-    else
-      store<C>(p, c);
-  }
-
   // 3D: depth test (reversed: larger is nearer; ties keep what was drawn first), then perspective-correct
   // colour and, when lit per pixel, the interpolated normal's Lambert term.
   void shade_depth(const Block& b) const {
@@ -290,10 +282,10 @@ class TriangleShader {
         stored = depth;
         std::uint8_t* p = surface_.color + (row + i) * C;
         if (!mode_.smooth) {
-          write(p, flat_);
+          put<C>(p, flat_, mode_.blend);
           continue;
         }
-        write(p, smooth_color(l));
+        put<C>(p, smooth_color(l), mode_.blend);
       }
     }
   }
