@@ -1,25 +1,35 @@
 // libFuzzer target: scene text -> parse -> plan -> render -> PNG, with small caps so each input is fast.
-// Any crash, sanitizer report, or exception other than SceneError is a finding; so is the streaming
-// scene reader accepting a document the DOM reader rejects, or reading one differently (scene_json.h).
+// Any crash, sanitizer report, or exception other than SceneError is a finding; so is the scene reader
+// disagreeing with the oracle (tests/oracle, the DOM reader): accepting what it rejects or the reverse,
+// reading a document into a different scene, or not calling a document malformed that the oracle does.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <string_view>
 
+#include "oracle/scene_dom.h"
 #include "raster/raster.h"
-#include "scene_json.h"
 
 namespace {
 
 void check_readers_agree(std::string_view text, const raster::Limits& limits) {
-  const std::optional<raster::Scene> fast = raster::scene_json::parse_scene_fast(text, limits, {});
-  if (!fast) return;
+  std::optional<raster::Scene> ours, theirs;
+  raster::ErrorKind our_kind{}, their_kind{};
   try {
-    if (!(raster::scene_json::parse_scene_dom(text, limits, {}) == *fast)) std::abort();  // read differently
-  } catch (const raster::SceneError&) {
-    std::abort();  // accepted what the DOM reader rejects
+    ours = raster::parse_scene(text, limits);
+  } catch (const raster::SceneError& e) {
+    our_kind = e.kind();
   }
+  try {
+    theirs = raster::scene_json::parse_scene_oracle(text, limits);
+  } catch (const raster::SceneError& e) {
+    their_kind = e.kind();
+  }
+  if (ours.has_value() != theirs.has_value()) std::abort();  // one accepts what the other rejects
+  if (ours && !(*ours == *theirs)) std::abort();             // read differently
+  if (!ours && (our_kind == raster::ErrorKind::syntax) != (their_kind == raster::ErrorKind::syntax))
+    std::abort();  // malformed to one of them only
 }
 
 }  // namespace

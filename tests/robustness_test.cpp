@@ -121,8 +121,9 @@ namespace {
 
 // Fuzzer findings, kept as regression tests (the sanitizer build runs them with UBSan).
 // Found by the scene fuzzer once it checked that error messages are UTF-8: in valid UTF-8 text, nlohmann's
-// parse error quotes the bytes it read up to the error ("last read: '\"type\"\xF0'"), cutting a 4-byte
-// character after its first byte. Every SceneError message is now valid UTF-8 (error.h).
+// parse error quoted the bytes it read up to the error ("last read: '\"type\"\xF0'"), cutting a 4-byte
+// character after its first byte. Every SceneError message is valid UTF-8 (error.h), and the reader names
+// a byte that is not printable ASCII by its code.
 TEST(Robustness, FuzzFindingParseErrorCutsAUtf8Sequence) {
   const std::string text =
       test::read_file(RASTERD_TESTS_DIR "/data/fuzz-parse-error-cuts-a-utf8-sequence.json");
@@ -133,7 +134,8 @@ TEST(Robustness, FuzzFindingParseErrorCutsAUtf8Sequence) {
   } catch (const raster::SceneError& e) {
     EXPECT_EQ(e.kind(), raster::ErrorKind::syntax);
     EXPECT_EQ(raster::first_invalid_utf8(e.what()), std::string_view::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("\\xF0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("byte 0xF0"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where().byte, text.find('\xF0') + 1) << e.what();
   }
 }
 

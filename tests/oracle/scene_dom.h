@@ -1,11 +1,7 @@
-// Scene parsing, internal: the two readers of a scene document and what they share.
-//
-// The DOM reader (scene_json.cpp) parses the whole document with nlohmann and walks it; it is the
-// definition of the format and owns every error message. The streaming reader (scene_json_fast.cpp)
-// reads the common bulk shapes (primitives with "points", "colors", meshes' flat arrays) straight from
-// the text into the Scene, hands every other value to the DOM reader's functions, and gives up (nullopt)
-// on anything it is not sure of, so the DOM reader runs and reports. It never accepts a document the DOM
-// reader rejects, and never reads one differently (tests/scene_fast_test.cpp, fuzz/scene_fuzzer.cpp).
+// The test oracle: rasterd 0.2's scene reader, which builds nlohmann's document tree and walks it. It is
+// kept, unchanged in what it accepts, only to check the library's streaming reader against: both must
+// accept the same documents and read them into equal scenes (tests/scene_reader_test.cpp and
+// fuzz/scene_fuzzer.cpp). It is not linked into the library or the server.
 #pragma once
 
 #include <cstddef>
@@ -79,15 +75,8 @@ void add_drawn_primitive(Scene& scene, Primitive p, std::size_t dims, std::span<
 /// The DOM reader: every document, every error.
 Scene parse_scene_dom(std::string_view text, const Limits& limits, const Uploads& uploads);
 
-/// What the streaming reader did with the primitives of a document it read.
-struct FastStats {
-  std::size_t streamed = 0;  ///< primitives read straight from the text
-  std::size_t handed = 0;    ///< primitives parsed by nlohmann and read by the DOM reader
-};
-
-/// The streaming reader: the scene, or nullopt when the DOM reader must decide (an error, or a shape the
-/// streaming reader does not take).
-std::optional<Scene> parse_scene_fast(std::string_view text, const Limits& limits, const Uploads& uploads,
-                                      FastStats* stats = nullptr);
+/// The oracle's parse_scene: UTF-8 first, then the DOM reader, then validate(), as the library's
+/// parse_scene did before the one streaming reader (renderer/src/scene_reader.cpp) replaced it.
+Scene parse_scene_oracle(std::string_view text, const Limits& limits = {}, const Uploads& uploads = {});
 
 }  // namespace raster::scene_json

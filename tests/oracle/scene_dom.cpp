@@ -11,7 +11,7 @@
 
 #include "raster/scene.h"
 #include "raster/utf8.h"
-#include "scene_json.h"
+#include "scene_dom.h"
 #include "vecmath.h"
 
 namespace raster::scene_json {
@@ -332,7 +332,8 @@ Edges read_edges(const json& v, const Path& pointer) {
   if (auto it = v.find("color"); it != v.end()) e.color = read_color(*it, Path(pointer, "color"));
   if (auto it = v.find("width"); it != v.end()) {
     const double w = read_number(*it, Path(pointer, "width"));
-    if (!(w > 0 && w <= 64)) invalid(Path(pointer, "width"), "edge width is in (0, 64] pixels; got " + it->dump());
+    if (!(w > 0 && w <= 64))
+      invalid(Path(pointer, "width"), "edge width is in (0, 64] pixels; got " + it->dump());
     e.width = static_cast<float>(w);
   }
   if (auto it = v.find("angle"); it != v.end()) {
@@ -451,12 +452,18 @@ bool decode_base64(std::string_view text, std::string& out) {
   int bits = 0;
   for (const char c : text) {
     int v;
-    if (c >= 'A' && c <= 'Z') v = c - 'A';
-    else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9') v = c - '0' + 52;
-    else if (c == '+') v = 62;
-    else if (c == '/') v = 63;
-    else return false;
+    if (c >= 'A' && c <= 'Z')
+      v = c - 'A';
+    else if (c >= 'a' && c <= 'z')
+      v = c - 'a' + 26;
+    else if (c >= '0' && c <= '9')
+      v = c - '0' + 52;
+    else if (c == '+')
+      v = 62;
+    else if (c == '/')
+      v = 63;
+    else
+      return false;
     acc = (acc << 6) | static_cast<std::uint32_t>(v), bits += 6;
     if (bits >= 8) bits -= 8, out.push_back(static_cast<char>((acc >> bits) & 0xff));
   }
@@ -489,12 +496,14 @@ std::string read_base64_image(const json& v, const Path& pointer) {
 // A mesh's "texture": {"data": base64} or {"source": part name}, and "wrap": "repeat" | "clamp".
 Texture read_texture(const json& v, const Path& pointer, const Uploads& uploads, std::int64_t budget) {
   if (!v.is_object())
-    invalid(pointer, std::string("expected {\"data\": base64} or {\"source\": part name}, got ") + type_name(v));
+    invalid(pointer,
+            std::string("expected {\"data\": base64} or {\"source\": part name}, got ") + type_name(v));
   check_keys(v, pointer, {"data", "source", "wrap"});
   auto data = v.find("data");
   auto source = v.find("source");
   if ((data == v.end()) == (source == v.end()))
-    invalid(pointer, "a texture needs \"data\" (the PNG or JPEG file as base64) or \"source\" (an uploaded part)");
+    invalid(pointer,
+            "a texture needs \"data\" (the PNG or JPEG file as base64) or \"source\" (an uploaded part)");
   Texture t;
   try {
     if (data != v.end()) {
@@ -506,7 +515,8 @@ Texture read_texture(const json& v, const Path& pointer, const Uploads& uploads,
       const std::string& name = source->get_ref<const std::string&>();
       auto part = uploads.find(name);
       if (part == uploads.end())
-        invalid(sp, "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
+        invalid(sp,
+                "no uploaded part named " + source->dump() + " (send it as a multipart part of that name)");
       t = decode_texture(part->second, name, budget);
     }
   } catch (const SceneError& e) {
@@ -577,7 +587,8 @@ Mesh read_mesh(const json& v, const Path& pointer, const Scene& scene, const Lim
   if (uvs != v.end()) {
     mesh.uvs = read_uvs(*uvs, Path(pointer, "uvs"), mesh.positions.size());
     mesh.uv_triangles = mesh.triangles;
-    mesh.textures.push_back(read_texture(*texture, Path(pointer, "texture"), uploads, texels_left(scene, limits)));
+    mesh.textures.push_back(
+        read_texture(*texture, Path(pointer, "texture"), uploads, texels_left(scene, limits)));
   }
   read_mesh_options(v, pointer, mesh);
   return mesh;
@@ -590,8 +601,8 @@ std::string located(const SceneError& e) {
 Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limits& limits,
               const Uploads& uploads) {
   check_keys(v, pointer,
-             {"type", "data", "source", "mtl", "mtl_source", "textures", "color", "shading", "wireframe", "edges", "cull",
-              "transform"});
+             {"type", "data", "source", "mtl", "mtl_source", "textures", "color", "shading", "wireframe",
+              "edges", "cull", "transform"});
   auto text_of = [&](const char* inline_key, const char* source_key, bool required) -> std::string_view {
     auto data = v.find(inline_key);
     auto source = v.find(source_key);
@@ -628,7 +639,8 @@ Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limi
     const Path tp(pointer, "textures");
     if (!it->is_object())
       invalid(tp, std::string("expected an object of file name: base64 image, got ") + type_name(*it));
-    for (const auto& [name, value] : it->items()) inline_images[name] = read_base64_image(value, Path(tp, name));
+    for (const auto& [name, value] : it->items())
+      inline_images[name] = read_base64_image(value, Path(tp, name));
   }
   Limits model_limits = limits;
   model_limits.max_texture_pixels = texels_left(scene, limits);
@@ -780,7 +792,8 @@ Camera read_camera(const json& v) {
                                        : std::end(kViews);
     if (named == std::end(kViews))
       invalid(Path(pointer, "view"),
-              "expected \"front\", \"back\", \"left\", \"right\", \"top\", \"bottom\" or \"iso\", got " + it->dump());
+              "expected \"front\", \"back\", \"left\", \"right\", \"top\", \"bottom\" or \"iso\", got " +
+                  it->dump());
     if (v.contains("eye"))
       invalid(Path(pointer, "view"), "\"view\" and \"eye\" both place the camera: give one of them");
     c.view = named->second, c.has_view = true;
@@ -896,8 +909,9 @@ std::vector<Light> read_lights(const json& v) {
     if (auto it = o.find("intensity"); it != o.end()) {
       l.intensity = read_number(*it, Path(at, "intensity"));
       if (!(l.intensity >= 0 && l.intensity <= kMaxLightIntensity))
-        invalid(Path(at, "intensity"),
-                "\"intensity\" is in 0.." + std::to_string(static_cast<int>(kMaxLightIntensity)) + "; got " + it->dump());
+        invalid(Path(at, "intensity"), "\"intensity\" is in 0.." +
+                                           std::to_string(static_cast<int>(kMaxLightIntensity)) + "; got " +
+                                           it->dump());
     }
     lights.push_back(l);
   }
@@ -1099,15 +1113,13 @@ Scene parse_scene_dom(std::string_view text, const Limits& limits, const Uploads
 
 }  // namespace raster::scene_json
 
-namespace raster {
+namespace raster::scene_json {
 
-Scene parse_scene(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
-  // JSON text is UTF-8 (RFC 8259 8.1): checked first, so no reader and no message ever holds a bad byte.
+Scene parse_scene_oracle(std::string_view json_text, const Limits& limits, const Uploads& uploads) {
   require_utf8(json_text, "the scene");
-  std::optional<Scene> fast = scene_json::parse_scene_fast(json_text, limits, uploads);
-  Scene scene = fast ? std::move(*fast) : scene_json::parse_scene_dom(json_text, limits, uploads);
-  validate(scene);  // the checks across fields, shared with scenes built in code
+  Scene scene = parse_scene_dom(json_text, limits, uploads);
+  validate(scene);
   return scene;
 }
 
-}  // namespace raster
+}  // namespace raster::scene_json

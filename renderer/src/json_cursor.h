@@ -1,0 +1,170 @@
+// A validating pull tokenizer over JSON text (RFC 8259): the scene reader asks for the value it expects
+// next and the cursor either gives it or throws SceneError(syntax) with the 1-based byte offset of the
+// first byte that cannot belong to a well-formed document.
+//
+// Why our own and not RapidJSON's SAX Reader: pulled values let a descriptor's reader read its field
+// where it stands (a point straight into the scene's array) instead of a state machine driven by events,
+// and it measured faster on the bench scenes (docs/performance.md, "JSON tokenizer"). The text must already
+// be well-formed UTF-8 (parse_scene checks it first); escapes are checked here, lone surrogates included.
+#pragma once
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "raster/error.h"
+
+namespace raster {
+
+class JsonCursor {
+ public:
+  /// What the next value is, from its first byte.
+  enum class Kind : std::uint8_t { null, boolean, number, string, array, object };
+
+  JsonCursor(std::string_view text, int max_depth)
+      : begin_(text.data()), p_(text.data()), end_(text.data() + text.size()), max_depth_(max_depth) {}
+
+  /// The next value's kind; whitespace before it is skipped. Malformed when there is none.
+  Kind peek() {
+    space();
+    if (p_ == end_) fail("expected a value, got the end of the text");
+    switch (*p_) {
+      case '{':
+        return Kind::object;
+      case '[':
+        return Kind::array;
+      case '"':
+        return Kind::string;
+      case 't':
+      case 'f':
+        return Kind::boolean;
+      case 'n':
+        return Kind::null;
+      default:
+        if (*p_ == '-' || (*p_ >= '0' && *p_ <= '9')) return Kind::number;
+        fail("expected a value");
+    }
+  }
+  /// 1-based byte offset of the next byte (after the whitespace peek() skipped).
+  std::size_t offset() const { return static_cast<std::size_t>(p_ - begin_) + 1; }
+
+  /// '{': true when a member follows (read it with key()), false for "{}".
+  bool object_begin() { return open('{', '}'); }
+  /// After a member's value: true when ',' and another member follow, false at '}'.
+  bool object_next() { return next('}', "expected ',' or '}' after an object member"); }
+  /// A member's key and its ':'.
+  std::string_view key() {
+    space();
+    if (p_ == end_ || *p_ != '"') fail("expected a quoted key");
+    const std::string_view k = string_body();
+    space();
+    if (p_ == end_ || *p_ != ':') fail("expected ':' after a key");
+    ++p_;
+    return k;
+  }
+  bool array_begin() { return open('[', ']'); }
+  bool array_next() { return next(']', "expected ',' or ']' after an array element"); }
+
+  /// A string's content with escapes decoded; valid until the next call that reads a string.
+  std::string_view string() {
+    if (peek() != Kind::string) fail("expected a string");
+    return string_body();
+  }
+  /// A number as the nearest double (std::from_chars, correctly rounded); integer syntax gives +0 for
+  /// "-0", as an integer parse would. Out of double's range is malformed, as nlohmann's overflow is.
+  double number() {
+    if (peek() != Kind::number) fail("expected a number");
+    const char* start = p_;
+    const bool integral = scan_number();
+    number_text_ = {start, static_cast<std::size_t>(p_ - start)};
+    double v = 0;
+    const auto [end, error] = std::from_chars(start + (*start == '-'), p_, v);
+    if (error != std::errc() || end != p_) {
+      if (error != std::errc::result_out_of_range || overflows(start)) fail_at(start, "number out of range");
+      v = 0;  // underflow: the nearest double is zero, as strtod gives
+    }
+    if (integral && v == 0) return 0.0;
+    return *start == '-' ? -v : v;
+  }
+  /// The text of the last number read, for messages.
+  std::string_view number_text() const { return number_text_; }
+  bool boolean() {
+    if (peek() == Kind::boolean) {
+      if (literal("true")) return true;
+      if (literal("false")) return false;
+    }
+    fail("expected true or false");
+  }
+  /// A place in the text to read again from, for a second look on an error path.
+  struct Mark {
+    const char* p;
+    int depth;
+  };
+  Mark mark() const { return {p_, depth_}; }
+  JsonCursor at(Mark m) const {
+    JsonCursor c(std::string_view(begin_, static_cast<std::size_t>(end_ - begin_)), max_depth_);
+    c.p_ = m.p, c.depth_ = m.depth;
+    return c;
+  }
+  /// True when `s` is a view of the text (not of the buffer of a string whose escapes were decoded).
+  bool in_text(std::string_view s) const { return s.data() >= begin_ && s.data() <= end_; }
+  /// The element count of the array that starts here when it holds only numbers; else 0. For reserving.
+  std::size_t flat_array_size();
+  /// How many bytes of `text` equal `c`, 16 at a time.
+  static std::size_t count(std::string_view text, char c);
+  /// Any value, checked and passed over; its text.
+  std::string_view skip();
+  /// Only whitespace may remain.
+  void finish() {
+    space();
+    if (p_ != end_) fail("expected the end of the document after the top-level value");
+  }
+
+  [[noreturn]] void fail(std::string_view what) const { fail_at(p_, what); }
+  [[noreturn]] void fail_at(const char* at, std::string_view what) const;
+
+ private:
+  void space() {
+    while (p_ < end_ && static_cast<unsigned char>(*p_) <= ' ' &&
+           (*p_ == ' ' || *p_ == '\n' || *p_ == '\r' || *p_ == '\t'))
+      ++p_;
+  }
+  bool open(char c, char close) {
+    space();
+    if (p_ == end_ || *p_ != c) fail(c == '{' ? "expected '{'" : "expected '['");
+    if (++depth_ > max_depth_)  // the tree is never built, but a deep document is refused all the same
+      throw SceneError(ErrorKind::syntax, "JSON nested deeper than " + std::to_string(max_depth_) + " levels",
+                       ErrorLocation{"", offset(), 0});
+    ++p_;
+    space();
+    if (p_ < end_ && *p_ == close) return ++p_, --depth_, false;
+    return true;
+  }
+  bool next(char close, const char* what) {
+    space();
+    if (p_ < end_ && *p_ == ',') return ++p_, true;
+    if (p_ < end_ && *p_ == close) return ++p_, --depth_, false;
+    fail(what);
+  }
+  bool literal(std::string_view word) {
+    if (static_cast<std::size_t>(end_ - p_) < word.size() || std::string_view(p_, word.size()) != word)
+      return false;
+    p_ += word.size();
+    return true;
+  }
+  std::string_view string_body();            // at '"'
+  bool scan_number();                        // at '-' or a digit; true when integer syntax
+  bool overflows(const char* number) const;  // out of double's range: too large (true) or too small
+
+  const char* begin_;
+  const char* p_;
+  const char* end_;
+  int max_depth_;
+  int depth_ = 0;
+  std::string scratch_;  // a string with escapes, decoded
+  std::string_view number_text_;
+};
+
+}  // namespace raster

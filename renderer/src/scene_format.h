@@ -1,0 +1,72 @@
+// Scene format v1, the parts that more than the reader needs: the ranges of its numbers, which validate()
+// applies to scenes built in code with the same words, and the shape of a field descriptor. The tables
+// of fields themselves are in scene_reader.cpp, next to the functions that read them.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <string>
+#include <string_view>
+
+namespace raster::format {
+
+/// Where a number may lie; `rule` is the sentence a rejection starts with.
+struct Range {
+  double lo, hi;
+  bool lo_open, hi_open;  ///< the bound itself is excluded
+  const char* rule;
+  bool contains(double v) const {  // false for NaN
+    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+};
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+inline constexpr Range kLineWidth{0, 4096, true, false,
+                                  "line \"width\" is in pixels, more than 0 and at most 4096"};
+inline constexpr Range kEdgeWidth{0, 64, true, false, "edge width is in (0, 64] pixels"};
+inline constexpr Range kCreaseAngle{0, 180, false, false, "the crease angle is in 0..180 degrees"};
+inline constexpr Range kFov{0, 180, true, true,
+                            "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180"};
+inline constexpr Range kNear{0, kInf, true, true,
+                             "\"near\" is a distance in front of the eye and must be > 0"};
+inline constexpr Range kFar{0, kInf, true, true, "\"far\" must be > 0"};
+inline constexpr Range kViewHeight{0, kInf, true, true, "\"height\" (orthographic view height) must be > 0"};
+inline constexpr Range kAmbient{0, 1, false, false, "\"ambient\" is in 0..1"};
+inline constexpr Range kIntensity{0, 1000, false, false, "\"intensity\" is in 0..1000"};
+inline constexpr Range kTexCoord{-1e30, 1e30, false, false,
+                                 "a texture coordinate must be a number within +-1e30"};
+
+/// JSON value kinds as bits, for a descriptor's accepted kinds (JsonCursor::Kind order).
+enum KindBits : std::uint8_t {
+  kNull = 1,
+  kBool = 2,
+  kNumber = 4,
+  kString = 8,
+  kArray = 16,
+  kObject = 32,
+};
+
+/// One key of one object kind: the kinds of value it takes and the function that reads it (into the state
+/// of the object being read). "expected <expected>, got <kind>" is the error for a value of another kind.
+template <class Read>
+struct Field {
+  std::string_view key;
+  std::uint8_t kinds;
+  const char* expected;
+  Read read;
+};
+
+/// The bit of each key of `keys` in a table of fields (a key not in the table is a build error).
+template <class F, std::size_t N>
+constexpr std::uint32_t mask_of(const F (&fields)[N], std::initializer_list<std::string_view> keys) {
+  std::uint32_t mask = 0;
+  for (std::string_view k : keys) {
+    std::size_t i = 0;
+    while (fields[i].key != k) ++i;  // runs off the table (not a constant expression) for a wrong key
+    mask |= 1u << i;
+  }
+  return mask;
+}
+
+}  // namespace raster::format
