@@ -8,10 +8,6 @@
 namespace raster {
 namespace {
 
-bool is_digit(char c) {
-  return c >= '0' && c <= '9';
-}
-
 int hex_value(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -123,29 +119,6 @@ std::string_view JsonCursor::string_body() {
         fail_at(p_ - 1, "unknown escape");
     }
   }
-}
-
-bool JsonCursor::scan_number() {
-  if (*p_ == '-') ++p_;
-  if (p_ < end_ && *p_ == '0') {
-    ++p_;
-  } else {
-    if (p_ == end_ || !is_digit(*p_)) fail("expected a digit");
-    while (p_ < end_ && is_digit(*p_)) ++p_;
-  }
-  bool integral = true;
-  if (p_ < end_ && *p_ == '.') {
-    ++p_, integral = false;
-    if (p_ == end_ || !is_digit(*p_)) fail("expected a digit after '.'");
-    while (p_ < end_ && is_digit(*p_)) ++p_;
-  }
-  if (p_ < end_ && (*p_ == 'e' || *p_ == 'E')) {
-    ++p_, integral = false;
-    if (p_ < end_ && (*p_ == '+' || *p_ == '-')) ++p_;
-    if (p_ == end_ || !is_digit(*p_)) fail("expected a digit in the exponent");
-    while (p_ < end_ && is_digit(*p_)) ++p_;
-  }
-  return integral;
 }
 
 std::size_t JsonCursor::count(std::string_view text, char c) {

@@ -49,6 +49,11 @@ class JsonCursor {
   }
   /// 1-based byte offset of the next byte (after the whitespace peek() skipped).
   std::size_t offset() const { return static_cast<std::size_t>(p_ - begin_) + 1; }
+  /// offset() after the whitespace that is next.
+  std::size_t next_offset() {
+    space();
+    return offset();
+  }
 
   /// '{': true when a member follows (read it with key()), false for "{}".
   bool object_begin() { return open('{', '}'); }
@@ -72,21 +77,59 @@ class JsonCursor {
     if (peek() != Kind::string) fail("expected a string");
     return string_body();
   }
-  /// A number as the nearest double (std::from_chars, correctly rounded); integer syntax gives +0 for
-  /// "-0", as an integer parse would. Out of double's range is malformed, as nlohmann's overflow is.
+  /// True when the next byte after whitespace is `c`.
+  bool at(char c) {
+    space();
+    return p_ < end_ && *p_ == c;
+  }
+  /// True when a number starts here (after whitespace).
+  bool at_number() {
+    space();
+    return p_ < end_ && (*p_ == '-' || is_digit(*p_));
+  }
+  /// A number as the nearest double; integer syntax gives +0 for "-0", as an integer parse would. Out of
+  /// double's range is malformed, as nlohmann's overflow is; below it is 0, as strtod gives.
   double number() {
-    if (peek() != Kind::number) fail("expected a number");
+    if (!at_number()) fail("expected a number");
     const char* start = p_;
-    const bool integral = scan_number();
+    const bool negative = *p_ == '-';
+    p_ += negative;
+    // The digits go into `mantissa` while the grammar is checked (19 of them fit in 64 bits).
+    std::uint64_t mantissa = 0;
+    const char* digits = p_;
+    if (p_ < end_ && *p_ == '0') {
+      ++p_;
+    } else {
+      if (p_ == end_ || !is_digit(*p_)) fail("expected a digit");
+      for (; p_ < end_ && is_digit(*p_); ++p_) mantissa = mantissa * 10 + static_cast<unsigned>(*p_ - '0');
+    }
+    std::ptrdiff_t fraction = 0;
+    if (p_ < end_ && *p_ == '.') {
+      const char* first = ++p_;
+      for (; p_ < end_ && is_digit(*p_); ++p_) mantissa = mantissa * 10 + static_cast<unsigned>(*p_ - '0');
+      if ((fraction = p_ - first) == 0) fail("expected a digit after '.'");
+    }
+    const std::ptrdiff_t digit_count = p_ - digits - (fraction ? 1 : 0);
+    const bool exponent = p_ < end_ && (*p_ == 'e' || *p_ == 'E');
+    if (exponent) {
+      ++p_;
+      if (p_ < end_ && (*p_ == '+' || *p_ == '-')) ++p_;
+      if (p_ == end_ || !is_digit(*p_)) fail("expected a digit in the exponent");
+      while (p_ < end_ && is_digit(*p_)) ++p_;
+    }
     number_text_ = {start, static_cast<std::size_t>(p_ - start)};
+    const bool integral = !fraction && !exponent;
     double v = 0;
-    const auto [end, error] = std::from_chars(start + (*start == '-'), p_, v);
-    if (error != std::errc() || end != p_) {
+    if (!exponent && digit_count <= 19 && mantissa <= (std::uint64_t{1} << 53) && fraction <= 22) {
+      // Clinger's fast path: the mantissa and the power of ten are exact doubles, so the one IEEE
+      // division is correctly rounded; std::from_chars (also correctly rounded) takes everything else.
+      v = static_cast<double>(mantissa) / kExactPow10[fraction];
+    } else if (const auto [end, error] = std::from_chars(digits, p_, v); error != std::errc() || end != p_) {
       if (error != std::errc::result_out_of_range || overflows(start)) fail_at(start, "number out of range");
-      v = 0;  // underflow: the nearest double is zero, as strtod gives
+      v = 0;
     }
     if (integral && v == 0) return 0.0;
-    return *start == '-' ? -v : v;
+    return negative ? -v : v;
   }
   /// The text of the last number read, for messages.
   std::string_view number_text() const { return number_text_; }
@@ -103,6 +146,7 @@ class JsonCursor {
     int depth;
   };
   Mark mark() const { return {p_, depth_}; }
+  void seek(Mark m) { p_ = m.p, depth_ = m.depth; }
   JsonCursor at(Mark m) const {
     JsonCursor c(std::string_view(begin_, static_cast<std::size_t>(end_ - begin_)), max_depth_);
     c.p_ = m.p, c.depth_ = m.depth;
@@ -154,8 +198,11 @@ class JsonCursor {
     p_ += word.size();
     return true;
   }
-  std::string_view string_body();            // at '"'
-  bool scan_number();                        // at '-' or a digit; true when integer syntax
+  static bool is_digit(char c) { return c >= '0' && c <= '9'; }
+  static constexpr double kExactPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                           1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                           1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};  // all exact doubles
+  std::string_view string_body();                                                      // at '"'
   bool overflows(const char* number) const;  // out of double's range: too large (true) or too small
 
   const char* begin_;

@@ -197,7 +197,7 @@ struct PrimitiveState : Keys {
   // Ready for the next primitive, keeping the flat buffers' capacity.
   void reset() {
     static_cast<Keys&>(*this) = Keys{};
-    type = -1, dims = 0, indices_nested = false, primitive = Primitive{}, mesh = Mesh{};
+    type = -1, dims = 0, indices_nested = false, primitive = Primitive{};  // `mesh` is reset when moved out
     coords.clear(), colors.clear(), indices.clear(), obj.clear(), mtl.clear(), textures.clear(),
         bad_index.clear();
     source = mtl_source = {};
@@ -230,12 +230,9 @@ struct Reader {
     return k;
   }
   // The next array element's pointer, its byte where its value starts.
-  Path element(const Path& at, std::size_t k) {
-    in.peek();
-    return Path(at, k, in.offset());
-  }
+  Path element(const Path& at, std::size_t k) { return Path(at, k, in.next_offset()); }
   double number(const Path& at) {
-    expect(at, format::kNumber, "a number");
+    if (!in.at_number()) expect(at, format::kNumber, "a number");
     return in.number();
   }
   std::string number_text() const { return std::string(in.number_text()); }
@@ -410,21 +407,32 @@ Vec3 Reader::vec3(const Path& at) {
 // [[x, y], ...] or [[x, y, z], ...]: the first point decides, and every other must agree.
 void Reader::points(PrimitiveState& s, const Path& at) {
   s.points_byte = at.byte();
+  const char* shape = s.dims == 3 ? "[x, y, z]" : "[x, y]";
   std::size_t k = 0;
+  // The hot loop of big 2D scenes: pointers are made only for an error.
   for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    const Path point = element(at, k);
-    expect(point, format::kArray, s.dims == 3 ? "a point [x, y, z]" : "a point [x, y]");
+    if (!in.at('['))
+      expect(element(at, k), format::kArray, s.dims == 3 ? "a point [x, y, z]" : "a point [x, y]");
+    const std::size_t byte = in.offset();
     double v[3];
     std::size_t n = 0;
     for (bool inner = in.array_begin(); inner; inner = in.array_next(), ++n) {
-      const Path c = element(point, n);
-      const double d = coordinate(c);
-      if (n < 3) v[n] = d;
+      if (!in.at_number() || n >= 3) {
+        const Path point(at, k, byte);
+        const double d = coordinate(element(point, n));
+        if (n < 3) v[n] = d;
+        continue;
+      }
+      const std::size_t number_byte = in.offset();
+      v[n] = in.number();
+      if (std::fabs(v[n]) > kMaxCoordinate)
+        invalid(Path(Path(at, k, byte), n, number_byte),
+                "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
     }
-    if (k == 0) s.dims = n == 3 ? 3 : 2;
+    if (k == 0) s.dims = n == 3 ? 3 : 2, shape = s.dims == 3 ? "[x, y, z]" : "[x, y]";
     if (n != s.dims)
-      invalid(point, std::string("expected a point ") + (s.dims == 3 ? "[x, y, z]" : "[x, y]") +
-                         " like the first point, got " + std::to_string(n) + " numbers");
+      invalid(Path(at, k, byte), std::string("expected a point ") + shape + " like the first point, got " +
+                                     std::to_string(n) + " numbers");
     s.coords.insert(s.coords.end(), v, v + n);
   }
 }
@@ -602,8 +610,16 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
      [](Reader& r, PrimitiveState& s, const Path& at) {
        s.colors_byte = at.byte();
        std::size_t k = 0;
-       for (bool more = r.in.array_begin(); more; more = r.in.array_next(), ++k)
+       for (bool more = r.in.array_begin(); more; more = r.in.array_next(), ++k) {
+         Rgba8 c;
+         const JsonCursor::Mark start = r.in.mark();
+         if (r.in.at('"') && parse_hex_color(r.in.string(), c)) {  // the usual colour: no pointer made
+           s.colors.push_back(c);
+           continue;
+         }
+         r.in.seek(start);  // anything else is read again by color(), which has the words for its errors
          s.colors.push_back(r.color(r.element(at, k)));
+       }
      }},
     {"fill", format::kBool, "true or false",
      [](Reader& r, PrimitiveState& s, const Path& at) { s.primitive.fill = r.boolean(at); }},
@@ -919,6 +935,7 @@ void Reader::primitive(const Path& at) {
   p.kind = PrimitiveKind::mesh;
   p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
   scene.meshes.push_back(std::move(s.mesh));
+  s.mesh = Mesh{};
   scene.primitives.push_back(p);
 }
 
