@@ -18,6 +18,31 @@
 
 namespace raster {
 
+// A JSON pointer kept as parent links on the stack and spelled out only for an error, with the byte where
+// the value it names starts. Keys must outlive the pointer (views of the text, or held by the caller).
+class JsonPointer {
+ public:
+  JsonPointer() = default;  // the document root
+  JsonPointer(const JsonPointer& parent, std::string_view key, std::size_t byte)
+      : parent_(&parent), key_(key), byte_(byte) {}
+  JsonPointer(const JsonPointer& parent, std::size_t index, std::size_t byte)
+      : parent_(&parent), index_(index), byte_(byte), is_index_(true) {}
+  std::size_t byte() const { return byte_; }
+  std::string str() const {
+    if (!parent_) return "";
+    std::string out = parent_->str() + "/";
+    if (is_index_) return out + std::to_string(index_);
+    for (char c : key_) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);  // RFC 6901
+    return out;
+  }
+
+ private:
+  const JsonPointer* parent_ = nullptr;
+  std::string_view key_;
+  std::size_t index_ = 0, byte_ = 1;
+  bool is_index_ = false;
+};
+
 class JsonCursor {
  public:
   /// What the next value is, from its first byte.

@@ -22,41 +22,18 @@
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_format.h"
+#include "texture.h"
 #include "vecmath.h"
 
 namespace raster {
 namespace {
 
 using Kind = JsonCursor::Kind;
+using Path = JsonPointer;
 using format::Range;
 
 constexpr Rgba8 kMeshGrey{204, 204, 204, 255};  // meshes and models without colours
 constexpr Rgba8 kWhite{255, 255, 255, 255};     // 2D primitives without colours
-
-// A JSON pointer kept as parent links on the stack and spelled out only for an error, with the byte where
-// the value it names starts. Keys must outlive the Path (views of the text, or held by the caller).
-class Path {
- public:
-  Path() = default;  // the document root
-  Path(const Path& parent, std::string_view key, std::size_t byte)
-      : parent_(&parent), key_(key), byte_(byte) {}
-  Path(const Path& parent, std::size_t index, std::size_t byte)
-      : parent_(&parent), index_(index), byte_(byte), is_index_(true) {}
-  std::size_t byte() const { return byte_; }
-  std::string str() const {
-    if (!parent_) return "";
-    std::string out = parent_->str() + "/";
-    if (is_index_) return out + std::to_string(index_);
-    for (char c : key_) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);  // RFC 6901
-    return out;
-  }
-
- private:
-  const Path* parent_ = nullptr;
-  std::string_view key_;
-  std::size_t index_ = 0, byte_ = 1;
-  bool is_index_ = false;
-};
 
 const char* phrase(Kind k) {
   static constexpr const char* kPhrases[] = {"null",     "a boolean", "a number",
@@ -104,41 +81,6 @@ bool parse_hex_color(std::string_view s, Rgba8& out) {
   return true;
 }
 
-// Standard base64 (RFC 4648 section 4, '=' padding optional), or a data URI holding it. False on any
-// other character.
-bool decode_base64(std::string_view text, std::string& out) {
-  if (text.starts_with("data:")) {
-    const std::size_t comma = text.find(',');
-    if (comma == std::string_view::npos || text.substr(0, comma).find(";base64") == std::string_view::npos)
-      return false;
-    text.remove_prefix(comma + 1);
-  }
-  while (!text.empty() && text.back() == '=') text.remove_suffix(1);
-  if (text.size() % 4 == 1) return false;
-  out.clear();
-  out.reserve(text.size() / 4 * 3 + 2);
-  std::uint32_t acc = 0;
-  int bits = 0;
-  for (const char c : text) {
-    int v;
-    if (c >= 'A' && c <= 'Z')
-      v = c - 'A';
-    else if (c >= 'a' && c <= 'z')
-      v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9')
-      v = c - '0' + 52;
-    else if (c == '+')
-      v = 62;
-    else if (c == '/')
-      v = 63;
-    else
-      return false;
-    acc = (acc << 6) | static_cast<std::uint32_t>(v), bits += 6;
-    if (bits >= 8) bits -= 8, out.push_back(static_cast<char>((acc >> bits) & 0xff));
-  }
-  return true;
-}
-
 // Texels the scene's textures hold so far: what is left of the limit is what the next one may take.
 std::int64_t texels_left(const Scene& scene, const Limits& limits) {
   std::int64_t used = 0;
@@ -150,9 +92,6 @@ std::int64_t texels_left(const Scene& scene, const Limits& limits) {
 // The state of each object kind while it is read. `allowed` and `seen` are bits of its table's fields.
 struct Keys {
   std::uint32_t allowed = ~0u, seen = 0;
-};
-struct RootState : Keys {
-  std::size_t width_byte = 0, height_byte = 0;
 };
 struct CameraState : Keys {
   Camera camera;
@@ -192,7 +131,7 @@ struct PrimitiveState : Keys {
   bool indices_nested = false;
   std::string bad_index;  // the text of the first index below 0 or above 2^32 - 2
   std::string obj, mtl;   // an "obj"'s text: "data" / "mtl" or the uploads "source" / "mtl_source" name
-  std::string_view source, mtl_source;
+  std::string source, mtl_source;
   Uploads textures;  // an "obj"'s "textures"
   // Ready for the next primitive, keeping the flat buffers' capacity.
   void reset() {
@@ -200,7 +139,7 @@ struct PrimitiveState : Keys {
     type = -1, dims = 0, indices_nested = false, primitive = Primitive{};  // `mesh` is reset when moved out
     coords.clear(), colors.clear(), indices.clear(), obj.clear(), mtl.clear(), textures.clear(),
         bad_index.clear();
-    source = mtl_source = {};
+    source.clear(), mtl_source.clear();
   }
 };
 
@@ -270,14 +209,6 @@ struct Reader {
       if (s == names[i]) return i;
     invalid(at, expected + ", got \"" + std::string(s) + "\"");
   }
-  // A string that stays valid: a view of the text, or a copy when escapes were decoded.
-  std::string_view stable_string(std::string& own) {
-    const std::string_view s = in.string();
-    if (in.in_text(s)) return s;
-    own.assign(s);
-    return own;
-  }
-
   // Growing the flat arrays by doubling would copy them and fault their pages in twice. Every 2D point is
   // an array and a primitive holds at least two, so counting '[' bounds the points and the primitives; the
   // shortest point, "[0,0],", caps the count by the text's length.
@@ -298,6 +229,8 @@ struct Reader {
   Rgba8 color(const Path& at);
   Vec3 vec3(const Path& at);
   void points(PrimitiveState& s, const Path& at);
+  template <std::size_t N, class Number, class Add>
+  bool tuples(const Path& at, const char* shape, const char* names, Number number, Add add);
   void vec3_list(std::vector<Vec3>& out, const Path& at);
   void indices(PrimitiveState& s, const Path& at);
   void uvs(PrimitiveState& s, const Path& at);
@@ -437,90 +370,72 @@ void Reader::points(PrimitiveState& s, const Path& at) {
   }
 }
 
-// [[x, y, z], ...] or [x, y, z, x, y, z, ...]: the first entry decides.
-void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
-  out.reserve(in.flat_array_size() / 3);
+// Entries of N numbers, nested ([[a, b, c], ...]) or flat ([a, b, c, a, b, c, ...]): the first element
+// decides. `number(pointer)` reads one number, `add(entry)` takes each entry. True when flat.
+template <std::size_t N, class Number, class Add>
+bool Reader::tuples(const Path& at, const char* shape, const char* names, Number number, Add add) {
+  std::array<double, N> v;
   std::size_t k = 0;
   bool flat = false;
-  double v[3];
   for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
     if (k == 0) flat = in.peek() == Kind::number;
     const Path e = element(at, k);
-    if (!flat) {
-      out.push_back(vec3(e));
-    } else if (v[k % 3] = coordinate(e); k % 3 == 2) {
-      out.push_back({v[0], v[1], v[2]});
+    if (flat) {
+      if (v[k % N] = number(e); k % N == N - 1) add(v);
+      continue;
     }
+    expect(e, format::kArray, shape);
+    std::size_t n = 0;
+    for (bool inner = in.array_begin(); inner; inner = in.array_next(), ++n) {
+      const double d = number(element(e, n));
+      if (n < N) v[n] = d;
+    }
+    if (n != N) invalid(e, std::string("expected ") + shape + ", got " + std::to_string(n) + " numbers");
+    add(v);
   }
-  if (flat && k % 3 != 0)
-    invalid(at,
-            "a flat list holds x, y, z triples; its length " + std::to_string(k) + " is not a multiple of 3");
+  if (flat && k % N != 0)
+    invalid(at, std::string("a flat list holds ") + names + "; its length " + std::to_string(k) +
+                    " is not a multiple of " + std::to_string(N));
+  return flat;
 }
 
-// [[a, b, c], ...] or [a, b, c, ...], 0-based into the positions (checked when the mesh ends).
+void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
+  out.reserve(in.flat_array_size() / 3);
+  tuples<3>(
+      at, "a point [x, y, z]", "x, y, z triples", [&](const Path& e) { return coordinate(e); },
+      [&](const std::array<double, 3>& v) {
+        out.push_back({v[0], v[1], v[2]});
+      });
+}
+
+// 0-based into the positions, checked when the mesh ends: one outside every range is kept as UINT32_MAX.
 void Reader::indices(PrimitiveState& s, const Path& at) {
   s.indices_byte = at.byte();
   s.indices.reserve(in.flat_array_size());
   auto index = [&](const Path& e) {
     const std::int64_t i = integer(e);
-    const bool outside = i < 0 || i >= UINT32_MAX;  // outside any positions: kept as UINT32_MAX with its text
+    const bool outside = i < 0 || i >= UINT32_MAX;
     if (outside && s.bad_index.empty()) s.bad_index = number_text();
-    s.indices.push_back(outside ? UINT32_MAX : static_cast<std::uint32_t>(i));
-    if (static_cast<std::int64_t>(s.indices.size()) > 3 * limits.max_primitives)
-      fail(ErrorKind::limit, at, "more triangles than the limit of " + std::to_string(limits.max_primitives));
+    return outside ? double{UINT32_MAX} : static_cast<double>(i);
   };
-  std::size_t k = 0;
-  for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    if (k == 0) s.indices_nested = in.peek() != Kind::number;
-    const Path e = element(at, k);
-    if (!s.indices_nested) {
-      index(e);
-      continue;
-    }
-    if (in.peek() != Kind::array) invalid(e, "expected a triangle [a, b, c]");
-    std::size_t n = 0;
-    for (bool inner = in.array_begin(); inner; inner = in.array_next(), ++n) {
-      if (n == 3) invalid(e, "expected a triangle [a, b, c]");
-      index(element(e, n));
-    }
-    if (n != 3) invalid(e, "expected a triangle [a, b, c]");
-  }
-  if (!s.indices_nested && k % 3 != 0)
-    invalid(at,
-            "a flat list holds a, b, c triples; its length " + std::to_string(k) + " is not a multiple of 3");
+  s.indices_nested =
+      !tuples<3>(at, "a triangle [a, b, c]", "a, b, c triples", index, [&](const std::array<double, 3>& v) {
+        for (double i : v) s.indices.push_back(static_cast<std::uint32_t>(i));
+        if (static_cast<std::int64_t>(s.indices.size()) > 3 * limits.max_primitives)
+          fail(ErrorKind::limit, at,
+               "more triangles than the limit of " + std::to_string(limits.max_primitives));
+      });
 }
 
-// [[u, v], ...] or [u, v, u, v, ...].
 void Reader::uvs(PrimitiveState& s, const Path& at) {
   s.uvs_byte = at.byte();
-  auto& out = s.mesh.uvs;
-  out.reserve(in.flat_array_size() / 2);
-  std::size_t k = 0;
-  bool flat = false;
-  float u = 0;
-  for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    if (k == 0) flat = in.peek() == Kind::number;
-    const Path e = element(at, k);
-    if (flat) {
-      const float f = static_cast<float>(ranged(e, format::kTexCoord));
-      if (k % 2 == 0)
-        u = f;
-      else
-        out.push_back({u, f});
-      continue;
-    }
-    if (in.peek() != Kind::array) invalid(e, "expected a texture coordinate [u, v]");
-    float uv[2];
-    std::size_t n = 0;
-    for (bool inner = in.array_begin(); inner; inner = in.array_next(), ++n) {
-      if (n == 2) invalid(e, "expected a texture coordinate [u, v]");
-      uv[n] = static_cast<float>(ranged(element(e, n), format::kTexCoord));
-    }
-    if (n != 2) invalid(e, "expected a texture coordinate [u, v]");
-    out.push_back({uv[0], uv[1]});
-  }
-  if (flat && k % 2 != 0)
-    invalid(at, "a flat list holds u, v pairs; its length " + std::to_string(k) + " is odd");
+  s.mesh.uvs.reserve(in.flat_array_size() / 2);
+  tuples<2>(
+      at, "a texture coordinate [u, v]", "u, v pairs",
+      [&](const Path& e) { return ranged(e, format::kTexCoord); },
+      [&](const std::array<double, 2>& v) {
+        s.mesh.uvs.push_back({static_cast<float>(v[0]), static_cast<float>(v[1])});
+      });
 }
 
 // The bytes of an image given as base64 text.

@@ -7,10 +7,20 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "raster/scene.h"
 #include "stop.h"
+
+namespace raster {
+
+/// Standard base64 (RFC 4648 section 4, '=' padding optional), or a data URI holding it: the image files a
+/// scene carries inline. False on any other character.
+bool decode_base64(std::string_view text, std::string& out);
+
+}  // namespace raster
 
 namespace raster::detail {
 
