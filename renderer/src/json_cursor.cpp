@@ -49,11 +49,12 @@ void JsonCursor::fail_at(const char* at, std::string_view what) const {
                    ErrorLocation{"", static_cast<std::size_t>(at - begin_) + 1, 0});
 }
 
-std::string_view JsonCursor::string_body() {
-  const char* start = ++p_;
-  // The usual string has no escape: a view of the text.
-  while (p_ < end_ && *p_ != '"' && *p_ != '\\' && static_cast<unsigned char>(*p_) >= 0x20) ++p_;
-  if (p_ < end_ && *p_ == '"') return {start, static_cast<std::size_t>(p_++ - start)};
+void JsonCursor::too_deep() const {
+  throw SceneError(ErrorKind::syntax, "JSON nested deeper than " + std::to_string(max_depth_) + " levels",
+                   ErrorLocation{"", offset(), 0});
+}
+
+std::string_view JsonCursor::escaped_string(const char* start) {
   scratch_.assign(start, p_);
   auto hex4 = [&](const char* at) {
     std::uint32_t v = 0;

@@ -8,6 +8,7 @@
 // be well-formed UTF-8 (parse_scene checks it first); escapes are checked here, lone surrogates included.
 #pragma once
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -28,6 +29,8 @@ class JsonPointer {
   JsonPointer(const JsonPointer& parent, std::size_t index, std::size_t byte)
       : parent_(&parent), index_(index), byte_(byte), is_index_(true) {}
   std::size_t byte() const { return byte_; }
+  /// Itself, whatever byte is asked for: a pointer made already serves where a maker of one is taken.
+  const JsonPointer& operator()(std::size_t) const { return *this; }
   std::string str() const {
     if (!parent_) return "";
     std::string out = parent_->str() + "/";
@@ -52,7 +55,7 @@ class JsonCursor {
       : begin_(text.data()), p_(text.data()), end_(text.data() + text.size()), max_depth_(max_depth) {}
 
   /// The next value's kind; whitespace before it is skipped. Malformed when there is none.
-  Kind peek() {
+  [[gnu::always_inline]] Kind peek() {
     space();
     if (p_ == end_) fail("expected a value, got the end of the text");
     switch (*p_) {
@@ -75,17 +78,19 @@ class JsonCursor {
   /// 1-based byte offset of the next byte (after the whitespace peek() skipped).
   std::size_t offset() const { return static_cast<std::size_t>(p_ - begin_) + 1; }
   /// offset() after the whitespace that is next.
-  std::size_t next_offset() {
+  [[gnu::always_inline]] std::size_t next_offset() {
     space();
     return offset();
   }
 
   /// '{': true when a member follows (read it with key()), false for "{}".
-  bool object_begin() { return open('{', '}'); }
+  [[gnu::always_inline]] bool object_begin() { return open('{', '}'); }
   /// After a member's value: true when ',' and another member follow, false at '}'.
-  bool object_next() { return next('}', "expected ',' or '}' after an object member"); }
+  [[gnu::always_inline]] bool object_next() {
+    return next('}', "expected ',' or '}' after an object member");
+  }
   /// A member's key and its ':'.
-  std::string_view key() {
+  [[gnu::always_inline]] std::string_view key() {
     space();
     if (p_ == end_ || *p_ != '"') fail("expected a quoted key");
     const std::string_view k = string_body();
@@ -94,62 +99,86 @@ class JsonCursor {
     ++p_;
     return k;
   }
-  bool array_begin() { return open('[', ']'); }
-  bool array_next() { return next(']', "expected ',' or ']' after an array element"); }
+  [[gnu::always_inline]] bool array_begin() { return open('[', ']'); }
+  [[gnu::always_inline]] bool array_next() { return next(']', "expected ',' or ']' after an array element"); }
 
   /// A string's content with escapes decoded; valid until the next call that reads a string.
-  std::string_view string() {
+  [[gnu::always_inline]] std::string_view string() {
     if (peek() != Kind::string) fail("expected a string");
     return string_body();
   }
   /// True when the next byte after whitespace is `c`.
-  bool at(char c) {
+  [[gnu::always_inline]] bool at(char c) {
     space();
     return p_ < end_ && *p_ == c;
   }
+  /// "[x, y]" of two numbers, the shape of nearly every 2D point, read in one go; false with nothing
+  /// consumed for anything else (the caller's general path then reads it, and words its errors).
+  [[gnu::always_inline]] bool pair(double& x, double& y) {
+    const Mark start = mark();
+    if (!at('[') || depth_ + 1 > max_depth_) return false;
+    ++p_;
+    if (at_number()) {
+      x = number();
+      if (at(',') && (++p_, at_number())) {
+        y = number();
+        if (at(']')) return ++p_, true;
+      }
+    }
+    seek(start);
+    return false;
+  }
   /// True when a number starts here (after whitespace).
-  bool at_number() {
+  [[gnu::always_inline]] bool at_number() {
     space();
     return p_ < end_ && (*p_ == '-' || is_digit(*p_));
   }
   /// A number as the nearest double; integer syntax gives +0 for "-0", as an integer parse would. Out of
   /// double's range is malformed, as nlohmann's overflow is; below it is 0, as strtod gives.
-  double number() {
+  [[gnu::always_inline]] double number() {
     if (!at_number()) fail("expected a number");
-    const char* start = p_;
-    const bool negative = *p_ == '-';
-    p_ += negative;
+    // A local cursor: through the member, every byte read (a char may alias anything) would reload it.
+    const char* p = p_;
+    const char* const end = end_;
+    const char* start = p;
+    const bool negative = *p == '-';
+    p += negative;
     // The digits go into `mantissa` while the grammar is checked (19 of them fit in 64 bits).
     std::uint64_t mantissa = 0;
-    const char* digits = p_;
-    if (p_ < end_ && *p_ == '0') {
-      ++p_;
+    const char* digits = p;
+    if (p < end && *p == '0') {
+      ++p;
     } else {
-      if (p_ == end_ || !is_digit(*p_)) fail("expected a digit");
-      for (; p_ < end_ && is_digit(*p_); ++p_) mantissa = mantissa * 10 + static_cast<unsigned>(*p_ - '0');
+      if (p == end || !is_digit(*p)) fail_at(p, "expected a digit");
+      for (; p < end && is_digit(*p); ++p) mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
     }
     std::ptrdiff_t fraction = 0;
-    if (p_ < end_ && *p_ == '.') {
-      const char* first = ++p_;
-      for (; p_ < end_ && is_digit(*p_); ++p_) mantissa = mantissa * 10 + static_cast<unsigned>(*p_ - '0');
-      if ((fraction = p_ - first) == 0) fail("expected a digit after '.'");
+    if (p < end && *p == '.') {
+      const char* first = ++p;
+      for (; p < end && is_digit(*p); ++p) mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+      if ((fraction = p - first) == 0) fail_at(p, "expected a digit after '.'");
     }
-    const std::ptrdiff_t digit_count = p_ - digits - (fraction ? 1 : 0);
-    const bool exponent = p_ < end_ && (*p_ == 'e' || *p_ == 'E');
+    const std::ptrdiff_t digit_count = p - digits - (fraction ? 1 : 0);
+    const bool exponent = p < end && (*p == 'e' || *p == 'E');
     if (exponent) {
-      ++p_;
-      if (p_ < end_ && (*p_ == '+' || *p_ == '-')) ++p_;
-      if (p_ == end_ || !is_digit(*p_)) fail("expected a digit in the exponent");
-      while (p_ < end_ && is_digit(*p_)) ++p_;
+      ++p;
+      if (p < end && (*p == '+' || *p == '-')) ++p;
+      if (p == end || !is_digit(*p)) fail_at(p, "expected a digit in the exponent");
+      while (p < end && is_digit(*p)) ++p;
     }
-    number_text_ = {start, static_cast<std::size_t>(p_ - start)};
-    const bool integral = !fraction && !exponent;
+    p_ = p;
+    number_text_ = {start, static_cast<std::size_t>(p - start)};
+    const bool integral = integral_ = !fraction && !exponent;
     double v = 0;
     if (!exponent && digit_count <= 19 && mantissa <= (std::uint64_t{1} << 53) && fraction <= 22) {
       // Clinger's fast path: the mantissa and the power of ten are exact doubles, so the one IEEE
       // division is correctly rounded; std::from_chars (also correctly rounded) takes everything else.
+      // Nothing here waits for the division: its sign is the text's, and zero is decided by the digits.
+      if (fraction == 0)
+        return negative ? -static_cast<double>(mantissa) + 0.0 : static_cast<double>(mantissa);
       v = static_cast<double>(mantissa) / kExactPow10[fraction];
-    } else if (const auto [end, error] = std::from_chars(digits, p_, v); error != std::errc() || end != p_) {
+      return negative ? -v : v;
+    } else if (const auto [last, error] = std::from_chars(digits, p, v); error != std::errc() || last != p) {
       if (error != std::errc::result_out_of_range || overflows(start)) fail_at(start, "number out of range");
       v = 0;
     }
@@ -158,6 +187,8 @@ class JsonCursor {
   }
   /// The text of the last number read, for messages.
   std::string_view number_text() const { return number_text_; }
+  /// Whether the last number read was written as an integer (no fraction, no exponent).
+  bool integral() const { return integral_; }
   bool boolean() {
     if (peek() == Kind::boolean) {
       if (literal("true")) return true;
@@ -191,16 +222,18 @@ class JsonCursor {
     if (p_ != end_) fail("expected the end of the document after the top-level value");
   }
 
-  [[noreturn]] void fail(std::string_view what) const { fail_at(p_, what); }
-  [[noreturn]] void fail_at(const char* at, std::string_view what) const;
+  [[noreturn, gnu::cold]] void fail(std::string_view what) const { fail_at(p_, what); }
+  [[noreturn, gnu::cold, gnu::noinline]] void fail_at(const char* at, std::string_view what) const;
 
  private:
-  void space() {
-    while (p_ < end_ && static_cast<unsigned char>(*p_) <= ' ' &&
-           (*p_ == ' ' || *p_ == '\n' || *p_ == '\r' || *p_ == '\t'))
-      ++p_;
+  // Machine-written JSON has little whitespace: one compare decides most calls.
+  [[gnu::always_inline]] void space() {
+    if (p_<end_&& static_cast<unsigned char>(*p_)> ' ') return;
+    const char* p = p_;
+    while (p < end_ && (*p == ' ' || *p == '\n' || *p == '\r' || *p == '\t')) ++p;
+    p_ = p;
   }
-  bool open(char c, char close) {
+  [[gnu::always_inline]] bool open(char c, char close) {
     space();
     if (p_ == end_ || *p_ != c) fail(c == '{' ? "expected '{'" : "expected '['");
     if (++depth_ > max_depth_)  // the tree is never built, but a deep document is refused all the same
@@ -211,7 +244,8 @@ class JsonCursor {
     if (p_ < end_ && *p_ == close) return ++p_, --depth_, false;
     return true;
   }
-  bool next(char close, const char* what) {
+  [[gnu::always_inline]] bool next(char close, const char* what) {
+    if (p_ < end_ && *p_ == ',') return ++p_, true;  // the usual case, without whitespace
     space();
     if (p_ < end_ && *p_ == ',') return ++p_, true;
     if (p_ < end_ && *p_ == close) return ++p_, --depth_, false;
@@ -227,7 +261,24 @@ class JsonCursor {
   static constexpr double kExactPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                            1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                            1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};  // all exact doubles
-  std::string_view string_body();                                                      // at '"'
+  // At '"': the usual string, without escapes, is a view of the text; escapes are decoded out of line.
+  [[gnu::always_inline]] std::string_view string_body() {
+    const char* start = p_ + 1;
+    const char* p = start;
+    while (p < end_ && kPlainByte[static_cast<unsigned char>(*p)]) ++p;
+    p_ = p;
+    if (p < end_ && *p == '"') return ++p_, std::string_view(start, static_cast<std::size_t>(p - start));
+    return escaped_string(start);
+  }
+  std::string_view escaped_string(const char* start);
+  [[noreturn, gnu::cold, gnu::noinline]] void too_deep() const;
+  // Bytes that stand for themselves in a string: all but '"', '\\' and control characters (UTF-8 is checked
+  // before the tokenizer runs).
+  static constexpr auto kPlainByte = [] {
+    std::array<bool, 256> t{};
+    for (int c = 0x20; c < 256; ++c) t[c] = c != '"' && c != '\\';
+    return t;
+  }();
   bool overflows(const char* number) const;  // out of double's range: too large (true) or too small
 
   const char* begin_;
@@ -237,6 +288,7 @@ class JsonCursor {
   int depth_ = 0;
   std::string scratch_;  // a string with escapes, decoded
   std::string_view number_text_;
+  bool integral_ = false;
 };
 
 }  // namespace raster

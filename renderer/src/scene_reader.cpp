@@ -41,6 +41,14 @@ const char* phrase(Kind k) {
   return kPhrases[static_cast<int>(k)];
 }
 
+// Keys are a few bytes: compared inline, not through a call to memcmp.
+bool same_key(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i] != b[i]) return false;
+  return true;
+}
+
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> row(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
@@ -123,7 +131,8 @@ struct PrimitiveState : Keys {
   std::size_t byte = 0, points_byte = 0, colors_byte = 0, indices_byte = 0, normals_byte = 0, uvs_byte = 0;
   Primitive primitive;
   std::size_t dims = 0;                // numbers per point: 2 (image space) or 3 (world space)
-  std::vector<double> coords;          // "points", dims numbers each
+  std::size_t first_point = 0;         // image-space "points" are scene.points from here
+  std::vector<double> coords;          // world-space "points", three numbers each
   std::vector<Rgba8> colors;           // "colors"
   Rgba8 color;                         // "color"
   Mesh mesh;                           // "mesh" and "obj": positions, normals, uvs, texture, options
@@ -170,26 +179,37 @@ struct Reader {
   }
   // The next array element's pointer, its byte where its value starts.
   Path element(const Path& at, std::size_t k) { return Path(at, k, in.next_offset()); }
-  double number(const Path& at) {
-    if (!in.at_number()) expect(at, format::kNumber, "a number");
+
+  // The readers of numbers take `where(byte)`, which makes the pointer of the value starting at `byte`:
+  // it is called only for an error, so a million numbers build no pointers. (A Path converts to one.)
+  template <class Where>
+  double number(const Where& where) {
+    if (!in.at_number()) expect(where(in.offset()), format::kNumber, "a number");
     return in.number();
   }
   std::string number_text() const { return std::string(in.number_text()); }
-  double ranged(const Path& at, const Range& r) {
-    const double d = number(at);
-    if (!r.contains(d)) invalid(at, std::string(r.rule) + "; got " + number_text());
+  template <class Where>
+  double ranged(const Where& where, const Range& r) {
+    const std::size_t byte = in.next_offset();
+    const double d = number(where);
+    if (!r.contains(d)) invalid(where(byte), std::string(r.rule) + "; got " + number_text());
     return d;
   }
-  double coordinate(const Path& at) {
-    const double d = number(at);
+  template <class Where>
+  double coordinate(const Where& where) {
+    const std::size_t byte = in.next_offset();
+    const double d = number(where);
     if (std::fabs(d) > kMaxCoordinate)
-      invalid(at, "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
+      invalid(where(byte), "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
     return d;
   }
   // 256 and 256.0, not 256.5; clamped to int64 (the range check is the caller's).
-  std::int64_t integer(const Path& at) {
-    const double d = number(at);
-    if (d != std::floor(d)) invalid(at, "expected a whole number, got " + number_text());
+  template <class Where>
+  std::int64_t integer(const Where& where) {
+    const std::size_t byte = in.next_offset();
+    const double d = number(where);
+    if (!in.integral() && d != std::floor(d))
+      invalid(where(byte), "expected a whole number, got " + number_text());
     if (std::fabs(d) >= 9.2e18) return d < 0 ? INT64_MIN : INT64_MAX;
     return static_cast<std::int64_t>(d);
   }
@@ -270,7 +290,7 @@ void Reader::read_object(const Field<T> (&fields)[N], T& state, const Path& at, 
     const Kind kind = in.peek();
     const Path field(at, key, in.offset());
     std::size_t i = 0;
-    while (i < N && fields[i].key != key) ++i;
+    while (i < N && !same_key(fields[i].key, key)) ++i;
     if (i == N || !(state.allowed >> i & 1)) unknown_key(fields, state.allowed, key, field);
     if (state.seen >> i & 1)
       invalid(field, "\"" + std::string(key) + "\" is given twice in one object; give each key once");
@@ -340,10 +360,17 @@ Vec3 Reader::vec3(const Path& at) {
 // [[x, y], ...] or [[x, y, z], ...]: the first point decides, and every other must agree.
 void Reader::points(PrimitiveState& s, const Path& at) {
   s.points_byte = at.byte();
+  s.first_point = scene.points.size();
   const char* shape = s.dims == 3 ? "[x, y, z]" : "[x, y]";
   std::size_t k = 0;
   // The hot loop of big 2D scenes: pointers are made only for an error.
   for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
+    if (double x, y;
+        s.dims != 3 && in.pair(x, y) && std::fabs(x) <= kMaxCoordinate && std::fabs(y) <= kMaxCoordinate) {
+      s.dims = 2;
+      scene.points.push_back({x, y});
+      continue;
+    }
     if (!in.at('['))
       expect(element(at, k), format::kArray, s.dims == 3 ? "a point [x, y, z]" : "a point [x, y]");
     const std::size_t byte = in.offset();
@@ -366,7 +393,10 @@ void Reader::points(PrimitiveState& s, const Path& at) {
     if (n != s.dims)
       invalid(Path(at, k, byte), std::string("expected a point ") + shape + " like the first point, got " +
                                      std::to_string(n) + " numbers");
-    s.coords.insert(s.coords.end(), v, v + n);
+    if (s.dims == 2)  // image space, straight into the scene (an error anywhere discards it)
+      scene.points.push_back({v[0], v[1]});
+    else
+      s.coords.push_back(v[0]), s.coords.push_back(v[1]), s.coords.push_back(v[2]);
   }
 }
 
@@ -378,16 +408,16 @@ bool Reader::tuples(const Path& at, const char* shape, const char* names, Number
   std::size_t k = 0;
   bool flat = false;
   for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    if (k == 0) flat = in.peek() == Kind::number;
-    const Path e = element(at, k);
+    if (k == 0) flat = in.at_number();
     if (flat) {
-      if (v[k % N] = number(e); k % N == N - 1) add(v);
+      if (v[k % N] = number([&](std::size_t byte) { return Path(at, k, byte); }); k % N == N - 1) add(v);
       continue;
     }
+    const Path e = element(at, k);
     expect(e, format::kArray, shape);
     std::size_t n = 0;
     for (bool inner = in.array_begin(); inner; inner = in.array_next(), ++n) {
-      const double d = number(element(e, n));
+      const double d = number([&](std::size_t byte) { return Path(e, n, byte); });
       if (n < N) v[n] = d;
     }
     if (n != N) invalid(e, std::string("expected ") + shape + ", got " + std::to_string(n) + " numbers");
@@ -402,7 +432,7 @@ bool Reader::tuples(const Path& at, const char* shape, const char* names, Number
 void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
   out.reserve(in.flat_array_size() / 3);
   tuples<3>(
-      at, "a point [x, y, z]", "x, y, z triples", [&](const Path& e) { return coordinate(e); },
+      at, "a point [x, y, z]", "x, y, z triples", [&](const auto& where) { return coordinate(where); },
       [&](const std::array<double, 3>& v) {
         out.push_back({v[0], v[1], v[2]});
       });
@@ -412,8 +442,8 @@ void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
 void Reader::indices(PrimitiveState& s, const Path& at) {
   s.indices_byte = at.byte();
   s.indices.reserve(in.flat_array_size());
-  auto index = [&](const Path& e) {
-    const std::int64_t i = integer(e);
+  auto index = [&](const auto& where) {
+    const std::int64_t i = integer(where);
     const bool outside = i < 0 || i >= UINT32_MAX;
     if (outside && s.bad_index.empty()) s.bad_index = number_text();
     return outside ? double{UINT32_MAX} : static_cast<double>(i);
@@ -432,7 +462,7 @@ void Reader::uvs(PrimitiveState& s, const Path& at) {
   s.mesh.uvs.reserve(in.flat_array_size() / 2);
   tuples<2>(
       at, "a texture coordinate [u, v]", "u, v pairs",
-      [&](const Path& e) { return ranged(e, format::kTexCoord); },
+      [&](const auto& where) { return ranged(where, format::kTexCoord); },
       [&](const std::array<double, 2>& v) {
         s.mesh.uvs.push_back({static_cast<float>(v[0]), static_cast<float>(v[1])});
       });
@@ -670,13 +700,13 @@ void Reader::set_type(PrimitiveState& s, std::string_view name, const Path& at) 
 void Reader::finish_drawn(PrimitiveState& s, const Path& at) {
   const PrimitiveType& t = kTypes[s.type];
   if (!(s.seen & 2u)) invalid(at, "a " + std::string(t.name) + " needs \"points\"");
-  const std::size_t n = s.dims ? s.coords.size() / s.dims : 0;
+  const std::size_t n = s.dims == 3 ? s.coords.size() / 3 : scene.points.size() - s.first_point;
   const Path points(at, "points", s.points_byte);
   if (n < t.min_points || n > t.max_points)
     invalid(points, "a " + std::string(t.name) +
                         (t.min_points == t.max_points ? " has exactly " : " has at least ") +
                         std::to_string(t.min_points) + " points, got " + std::to_string(n));
-  if (scene.points.size() + n > UINT32_MAX) fail(ErrorKind::limit, points, "too many points in the scene");
+  if (s.first_point + n > UINT32_MAX) fail(ErrorKind::limit, points, "too many points in the scene");
   if ((s.seen & bit("color")) && (s.seen & bit("colors")))
     invalid(at, "give either \"color\" (flat) or \"colors\" (one per point), not both");
   if ((s.seen & bit("colors")) && s.colors.size() != n)
@@ -705,12 +735,11 @@ void Reader::finish_drawn(PrimitiveState& s, const Path& at) {
     scene.primitives.push_back(p);
     return;
   }
-  p.first_point = static_cast<std::uint32_t>(scene.points.size());
+  p.first_point = static_cast<std::uint32_t>(s.first_point);
   p.point_count = static_cast<std::uint32_t>(n);
-  for (std::size_t k = 0; k < s.coords.size(); k += 2) scene.points.push_back({s.coords[k], s.coords[k + 1]});
   p.first_color = static_cast<std::uint32_t>(scene.colors.size());
   p.per_vertex_color = per_vertex;
-  scene.colors.insert(scene.colors.end(), s.colors.begin(), s.colors.end());
+  for (const Rgba8 c : s.colors) scene.colors.push_back(c);
   scene.primitives.push_back(p);
 }
 
