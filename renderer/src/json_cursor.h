@@ -174,8 +174,10 @@ class JsonCursor {
       // Clinger's fast path: the mantissa and the power of ten are exact doubles, so the one IEEE
       // division is correctly rounded; std::from_chars (also correctly rounded) takes everything else.
       // Nothing here waits for the division: its sign is the text's, and zero is decided by the digits.
-      if (fraction == 0)
-        return negative ? -static_cast<double>(mantissa) + 0.0 : static_cast<double>(mantissa);
+      if (fraction == 0) {  // integer syntax: read as an integer would be, so "-0" is +0
+        const double i = static_cast<double>(mantissa);
+        return negative && mantissa != 0 ? -i : i;
+      }
       v = static_cast<double>(mantissa) / kExactPow10[fraction];
       return negative ? -v : v;
     } else if (const auto [last, error] = std::from_chars(digits, p, v); error != std::errc() || last != p) {

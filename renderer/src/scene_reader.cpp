@@ -365,11 +365,14 @@ void Reader::points(PrimitiveState& s, const Path& at) {
   std::size_t k = 0;
   // The hot loop of big 2D scenes: pointers are made only for an error.
   for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    if (double x, y;
-        s.dims != 3 && in.pair(x, y) && std::fabs(x) <= kMaxCoordinate && std::fabs(y) <= kMaxCoordinate) {
-      s.dims = 2;
-      scene.points.push_back({x, y});
-      continue;
+    const JsonCursor::Mark start = in.mark();
+    if (double x, y; s.dims != 3 && in.pair(x, y)) {
+      if (std::fabs(x) <= kMaxCoordinate && std::fabs(y) <= kMaxCoordinate) {
+        s.dims = 2;
+        scene.points.push_back({x, y});
+        continue;
+      }
+      in.seek(start);  // read again below, for the error's words
     }
     if (!in.at('['))
       expect(element(at, k), format::kArray, s.dims == 3 ? "a point [x, y, z]" : "a point [x, y]");
