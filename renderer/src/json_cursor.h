@@ -119,9 +119,9 @@ class JsonCursor {
     if (!at('[') || depth_ + 1 > max_depth_) return false;
     ++p_;
     if (at_number()) {
-      x = number();
+      x = number_here();
       if (at(',') && (++p_, at_number())) {
-        y = number();
+        y = number_here();
         if (at(']')) return ++p_, true;
       }
     }
@@ -133,10 +133,16 @@ class JsonCursor {
     space();
     return p_ < end_ && (*p_ == '-' || is_digit(*p_));
   }
+  /// string() where at('"') was just true.
+  [[gnu::always_inline]] std::string_view string_here() { return string_body(); }
   /// A number as the nearest double; integer syntax gives +0 for "-0", as an integer parse would. Out of
   /// double's range is malformed, as nlohmann's overflow is; below it is 0, as strtod gives.
   [[gnu::always_inline]] double number() {
     if (!at_number()) fail("expected a number");
+    return number_here();
+  }
+  /// number() where at_number() was just true.
+  [[gnu::always_inline]] double number_here() {
     // A local cursor: through the member, every byte read (a char may alias anything) would reload it.
     const char* p = p_;
     const char* const end = end_;
@@ -167,7 +173,7 @@ class JsonCursor {
       while (p < end && is_digit(*p)) ++p;
     }
     p_ = p;
-    number_text_ = {start, static_cast<std::size_t>(p - start)};
+    number_start_ = start;
     const bool integral = integral_ = !fraction && !exponent;
     double v = 0;
     if (!exponent && digit_count <= 19 && mantissa <= (std::uint64_t{1} << 53) && fraction <= 22) {
@@ -187,8 +193,10 @@ class JsonCursor {
     if (integral && v == 0) return 0.0;
     return negative ? -v : v;
   }
-  /// The text of the last number read, for messages.
-  std::string_view number_text() const { return number_text_; }
+  /// The text of the number just read (before anything else is read), for messages.
+  std::string_view number_text() const {
+    return {number_start_, static_cast<std::size_t>(p_ - number_start_)};
+  }
   /// Whether the last number read was written as an integer (no fraction, no exponent).
   bool integral() const { return integral_; }
   bool boolean() {
@@ -289,7 +297,7 @@ class JsonCursor {
   int max_depth_;
   int depth_ = 0;
   std::string scratch_;  // a string with escapes, decoded
-  std::string_view number_text_;
+  const char* number_start_ = nullptr;  // of the last number read, which ends at p_ until the next read
   bool integral_ = false;
 };
 

@@ -75,7 +75,7 @@ constexpr std::array<std::int8_t, 256> kHexDigit = [] {
 }();
 
 // "#rgb", "#rgba", "#rrggbb" or "#rrggbbaa"; false for anything else.
-bool parse_hex_color(std::string_view s, Rgba8& out) {
+[[gnu::always_inline]] inline bool parse_hex_color(std::string_view s, Rgba8& out) {
   const std::size_t n = s.size();
   if (n == 0 || s[0] != '#' || (n != 4 && n != 5 && n != 7 && n != 9)) return false;
   int d[8] = {0, 0, 0, 0, 0, 0, 15, 15};  // absent alpha reads as "ff"
@@ -146,10 +146,14 @@ struct PrimitiveState : Keys {
   void reset() {
     static_cast<Keys&>(*this) = Keys{};
     type = -1, dims = 0, indices_nested = false, primitive = Primitive{};  // `mesh` is reset when moved out
-    coords.clear(), colors.clear(), indices.clear(), obj.clear(), mtl.clear(), textures.clear(),
-        bad_index.clear();
-    source.clear(), mtl_source.clear();
+    coords.clear(), colors.clear();
+    if (seen_model) {  // what only meshes and models use, cleared only after one
+      indices.clear(), obj.clear(), mtl.clear(), textures.clear(), bad_index.clear();
+      source.clear(), mtl_source.clear();
+      seen_model = false;
+    }
   }
+  bool seen_model = false;  // the last primitive was a mesh or a model
 };
 
 struct Reader;
@@ -185,7 +189,7 @@ struct Reader {
   template <class Where>
   double number(const Where& where) {
     if (!in.at_number()) expect(where(in.offset()), format::kNumber, "a number");
-    return in.number();
+    return in.number_here();
   }
   std::string number_text() const { return std::string(in.number_text()); }
   template <class Where>
@@ -561,7 +565,7 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
        for (bool more = r.in.array_begin(); more; more = r.in.array_next(), ++k) {
          Rgba8 c;
          const JsonCursor::Mark start = r.in.mark();
-         if (r.in.at('"') && parse_hex_color(r.in.string(), c)) {  // the usual colour: no pointer made
+         if (r.in.at('"') && parse_hex_color(r.in.string_here(), c)) {  // the usual colour: no pointer made
            s.colors.push_back(c);
            continue;
          }
@@ -874,6 +878,7 @@ void Reader::primitive(const Path& at) {
   }
   if (s.type < 0) invalid(at, std::string("missing \"type\" (") + kTypeNames + ")");
   if (kTypes[s.type].kind != PrimitiveKind::mesh) return finish_drawn(s, at);
+  s.seen_model = true;
   if (kTypes[s.type].name == "mesh")
     finish_mesh(s, at);
   else
