@@ -101,3 +101,37 @@ TEST(JsonConformance, EveryErrorHasTheByteWhereItsValueStarts) {
 }
 
 }  // namespace
+
+namespace {
+
+// The format's ranges are stated once (scene_format.h): a scene built in code gets the reader's words.
+TEST(JsonConformance, ScenesBuiltInCodeGetTheReadersRanges) {
+  auto message_of = [](auto&& f) -> std::string {
+    try {
+      f();
+    } catch (const raster::SceneError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const std::string json_fov =
+      message_of([] { raster::parse_scene(R"({"width": 4, "height": 4, "camera": {"fov": 200}})"); });
+  raster::Scene scene = raster::parse_scene(R"({"width": 4, "height": 4})");
+  scene.camera.fov_deg = 200;
+  const std::string code_fov = message_of([&] { raster::validate(scene); });
+  EXPECT_EQ(code_fov, json_fov.substr(0, code_fov.size())) << json_fov;  // the JSON one adds "; got 200"
+  EXPECT_NE(code_fov, "accepted");
+
+  scene = raster::parse_scene(
+      R"({"width": 4, "height": 4, "primitives": [{"type": "line", "points": [[0, 0], [1, 1]]}]})");
+  scene.primitives[0].width = 0;
+  const std::string code_width = message_of([&] { raster::validate(scene); });
+  const std::string json_width = message_of([] {
+    raster::parse_scene(
+        R"({"width": 4, "height": 4, "primitives": [{"type": "line", "points": [[0, 0], [1, 1]], "width": 0}]})");
+  });
+  EXPECT_NE(code_width, "accepted");
+  EXPECT_EQ(code_width, json_width.substr(0, code_width.size())) << json_width;
+}
+
+}  // namespace

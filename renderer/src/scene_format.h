@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "raster/scene.h"
+
 namespace raster::format {
 
 /// Where a number may lie; `rule` is the sentence a rejection starts with.
@@ -33,7 +35,8 @@ inline constexpr Range kNear{0, kInf, true, true,
 inline constexpr Range kFar{0, kInf, true, true, "\"far\" must be > 0"};
 inline constexpr Range kViewHeight{0, kInf, true, true, "\"height\" (orthographic view height) must be > 0"};
 inline constexpr Range kAmbient{0, 1, false, false, "\"ambient\" is in 0..1"};
-inline constexpr Range kIntensity{0, 1000, false, false, "\"intensity\" is in 0..1000"};
+inline constexpr Range kIntensity{0, kMaxLightIntensity, false, false, "\"intensity\" is in 0..1000"};
+static_assert(kMaxLightIntensity == 1000, "kIntensity's rule names the limit");
 inline constexpr Range kTexCoord{-1e30, 1e30, false, false,
                                  "a texture coordinate must be a number within +-1e30"};
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "raster/scene.h"
+#include "scene_format.h"
 
 namespace raster {
 namespace {
@@ -18,6 +19,9 @@ void check_references(const Scene& scene) {
                     p.point_count == (p.kind == PrimitiveKind::triangle ? 3u
                                       : p.kind == PrimitiveKind::line   ? 2u
                                                                         : std::max(p.point_count, 2u));
+    if (!format::kLineWidth.contains(p.width))
+      throw SceneError(ErrorKind::invalid, format::kLineWidth.rule,
+                       {"/primitives/" + std::to_string(i) + "/width", 0, 0});
     if (!ok)
       throw SceneError(ErrorKind::invalid, "primitive refers to points or colours the scene does not have",
                        {"/primitives/" + std::to_string(i), 0, 0});
@@ -29,6 +33,10 @@ void check_references(const Scene& scene) {
     if (p.mesh >= scene.meshes.size())
       throw SceneError(ErrorKind::invalid, "mesh primitive refers to a missing mesh", {where, 0, 0});
     const Mesh& m = scene.meshes[p.mesh];
+    if (!format::kEdgeWidth.contains(m.edges.width) || !format::kCreaseAngle.contains(m.edges.crease_deg))
+      throw SceneError(ErrorKind::invalid,
+                       std::string(format::kEdgeWidth.rule) + "; " + format::kCreaseAngle.rule,
+                       {where + "/edges", 0, 0});
     const std::size_t n = m.positions.size();
     bool ok = (m.colors.size() == 1 || m.colors.size() == n) &&
               (m.face_colors.empty() || m.face_colors.size() == m.triangles.size()) &&
@@ -68,14 +76,16 @@ void check_camera_and_light(const Scene& scene) {
   auto invalid = [](const char* pointer, const std::string& message) {
     throw SceneError(ErrorKind::invalid, message, {pointer, 0, 0});
   };
+  // The ranges the JSON reader applies, in the same words (scene_format.h).
+  auto within = [&](bool given, double v, const format::Range& range, const char* pointer) {
+    if (given && !range.contains(v)) invalid(pointer, range.rule);
+  };
   if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0) invalid("/camera/up", "\"up\" must not be the zero vector");
-  if (!(c.fov_deg > 0 && c.fov_deg < 180))
-    invalid("/camera/fov", "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180");
-  if (c.has_near && !(c.near > 0)) invalid("/camera/near", "\"near\" is a distance in front of the eye and must be > 0");
-  if (c.has_far && !(c.far > 0)) invalid("/camera/far", "\"far\" must be > 0");
+  within(true, c.fov_deg, format::kFov, "/camera/fov");
+  within(c.has_near, c.near, format::kNear, "/camera/near");
+  within(c.has_far, c.far, format::kFar, "/camera/far");
   if (c.has_near && c.has_far && !(c.near < c.far)) invalid("/camera/far", "\"far\" must be greater than \"near\"");
-  if (c.has_height && !(c.height > 0))
-    invalid("/camera/height", "\"height\" (orthographic view height) must be > 0");
+  within(c.has_height, c.height, format::kViewHeight, "/camera/height");
   if (c.has_eye && c.has_target && c.eye == c.target)
     invalid("/camera/target", "\"eye\" and \"target\" are the same point: the camera has no view direction");
   if (scene.lights.size() > kMaxLights)
@@ -86,7 +96,7 @@ void check_camera_and_light(const Scene& scene) {
       invalid("/lights", "a directional light's direction must be finite and not the zero vector");
     if (l.kind == LightKind::point && !std::isfinite(std::hypot(l.position.x, l.position.y, l.position.z)))
       invalid("/lights", "a point light's position must be finite");
-    if (!(l.intensity >= 0 && l.intensity <= kMaxLightIntensity)) invalid("/lights", "intensity out of range");
+    within(true, l.intensity, format::kIntensity, "/lights");
     for (double c : {l.color.x, l.color.y, l.color.z})
       if (!(c >= 0 && c <= 1)) invalid("/lights", "light colour components are in 0..1");
   }
