@@ -136,7 +136,6 @@ struct PrimitiveState : Keys {
   std::vector<Rgba8> colors;           // "colors"
   Rgba8 color;                         // "color"
   Mesh mesh;                           // "mesh" and "obj": positions, normals, uvs, texture, options
-  std::vector<std::uint32_t> indices;  // a mesh's "indices", three per triangle
   bool indices_nested = false;
   std::string bad_index;  // the text of the first index below 0 or above 2^32 - 2
   std::string obj, mtl;   // an "obj"'s text: "data" / "mtl" or the uploads "source" / "mtl_source" name
@@ -148,7 +147,7 @@ struct PrimitiveState : Keys {
     type = -1, dims = 0, indices_nested = false, primitive = Primitive{};  // `mesh` is reset when moved out
     coords.clear(), colors.clear();
     if (seen_model) {  // what only meshes and models use, cleared only after one
-      indices.clear(), obj.clear(), mtl.clear(), textures.clear(), bad_index.clear();
+      obj.clear(), mtl.clear(), textures.clear(), bad_index.clear();
       source.clear(), mtl_source.clear();
       seen_model = false;
     }
@@ -448,7 +447,8 @@ void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
 // 0-based into the positions, checked when the mesh ends: one outside every range is kept as UINT32_MAX.
 void Reader::indices(PrimitiveState& s, const Path& at) {
   s.indices_byte = at.byte();
-  s.indices.reserve(in.flat_array_size());
+  auto& triangles = s.mesh.triangles;
+  triangles.reserve(in.flat_array_size() / 3);
   auto index = [&](const auto& where) {
     const std::int64_t i = integer(where);
     const bool outside = i < 0 || i >= UINT32_MAX;
@@ -457,10 +457,11 @@ void Reader::indices(PrimitiveState& s, const Path& at) {
   };
   s.indices_nested =
       !tuples<3>(at, "a triangle [a, b, c]", "a, b, c triples", index, [&](const std::array<double, 3>& v) {
-        for (double i : v) s.indices.push_back(static_cast<std::uint32_t>(i));
-        if (static_cast<std::int64_t>(s.indices.size()) > 3 * limits.max_primitives)
+        if (static_cast<std::int64_t>(triangles.size()) == limits.max_primitives)
           fail(ErrorKind::limit, at,
                "more triangles than the limit of " + std::to_string(limits.max_primitives));
+        triangles.push_back({static_cast<std::uint32_t>(v[0]), static_cast<std::uint32_t>(v[1]),
+                             static_cast<std::uint32_t>(v[2])});
       });
 }
 
@@ -755,24 +756,23 @@ void Reader::finish_mesh(PrimitiveState& s, const Path& at) {
   if (!(s.seen & bit("positions"))) invalid(at, "a mesh needs \"positions\"");
   if (!(s.seen & bit("indices"))) invalid(at, "a mesh needs \"indices\" (triangles as [a, b, c], 0-based)");
   const std::size_t n = mesh.positions.size();
-  const Path indices(at, "indices", s.indices_byte);
-  mesh.triangles.resize(s.indices.size() / 3);
-  for (std::size_t k = 0; k < s.indices.size(); ++k) {
-    if (s.indices[k] >= n) {
-      const Path triangle(indices, k / 3, s.indices_byte);
-      invalid(s.indices_nested ? Path(triangle, k % 3, s.indices_byte) : Path(indices, k, s.indices_byte),
-              "index " + (s.indices[k] == UINT32_MAX ? s.bad_index : std::to_string(s.indices[k])) +
-                  " is outside the " + std::to_string(n) + " positions (0-based)");
+  // Indices come before or after the positions they index: checked now that both are read.
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::size_t j = 0; j < 3; ++j) {
+      const std::uint32_t i = mesh.triangles[t][j];
+      if (i < n) continue;
+      const Path indices(at, "indices", s.indices_byte), triangle(indices, t, s.indices_byte);
+      invalid(s.indices_nested ? Path(triangle, j, s.indices_byte) : Path(indices, 3 * t + j, s.indices_byte),
+              "index " + (i == UINT32_MAX ? s.bad_index : std::to_string(i)) + " is outside the " +
+                  std::to_string(n) + " positions (0-based)");
     }
-    mesh.triangles[k / 3][k % 3] = s.indices[k];
-  }
   if ((s.seen & bit("color")) && (s.seen & bit("colors")))
     invalid(at, "give either \"color\" (flat) or \"colors\" (one per point), not both");
   if ((s.seen & bit("colors")) && s.colors.size() != n)
     invalid(Path(at, "colors", s.colors_byte),
             "\"colors\" needs one colour per point (" + std::to_string(n) + ")");
-  mesh.colors =
-      (s.seen & bit("colors")) ? s.colors : std::vector<Rgba8>{(s.seen & bit("color")) ? s.color : kMeshGrey};
+  mesh.colors = (s.seen & bit("colors")) ? std::move(s.colors)
+                                         : std::vector<Rgba8>{(s.seen & bit("color")) ? s.color : kMeshGrey};
   if (s.seen & bit("normals")) {
     if (mesh.normals.size() != n)
       invalid(Path(at, "normals", s.normals_byte),
