@@ -197,6 +197,8 @@ class JsonCursor {
   std::string_view number_text() const {
     return {number_start_, static_cast<std::size_t>(p_ - number_start_)};
   }
+  /// 1-based byte offset of the number just read.
+  std::size_t number_offset() const { return static_cast<std::size_t>(number_start_ - begin_) + 1; }
   /// Whether the last number read was written as an integer (no fraction, no exponent).
   bool integral() const { return integral_; }
   bool boolean() {

@@ -193,26 +193,23 @@ struct Reader {
   std::string number_text() const { return std::string(in.number_text()); }
   template <class Where>
   double ranged(const Where& where, const Range& r) {
-    const std::size_t byte = in.next_offset();
     const double d = number(where);
-    if (!r.contains(d)) invalid(where(byte), std::string(r.rule) + "; got " + number_text());
+    if (!r.contains(d)) invalid(where(in.number_offset()), std::string(r.rule) + "; got " + number_text());
     return d;
   }
   template <class Where>
   double coordinate(const Where& where) {
-    const std::size_t byte = in.next_offset();
     const double d = number(where);
     if (std::fabs(d) > kMaxCoordinate)
-      invalid(where(byte), "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
+      invalid(where(in.number_offset()), "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
     return d;
   }
   // 256 and 256.0, not 256.5; clamped to int64 (the range check is the caller's).
   template <class Where>
   std::int64_t integer(const Where& where) {
-    const std::size_t byte = in.next_offset();
     const double d = number(where);
     if (!in.integral() && d != std::floor(d))
-      invalid(where(byte), "expected a whole number, got " + number_text());
+      invalid(where(in.number_offset()), "expected a whole number, got " + number_text());
     if (std::fabs(d) >= 9.2e18) return d < 0 ? INT64_MIN : INT64_MAX;
     return static_cast<std::int64_t>(d);
   }
@@ -412,13 +409,20 @@ template <std::size_t N, class Number, class Add>
 bool Reader::tuples(const Path& at, const char* shape, const char* names, Number number, Add add) {
   std::array<double, N> v;
   std::size_t k = 0;
-  bool flat = false;
-  for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    if (k == 0) flat = in.at_number();
-    if (flat) {
-      if (v[k % N] = number([&](std::size_t byte) { return Path(at, k, byte); }); k % N == N - 1) add(v);
-      continue;
+  if (!in.array_begin()) return false;
+  if (in.at_number()) {  // flat: N numbers at a time, the hot loop of big meshes
+    for (bool more = true; more;) {
+      for (std::size_t j = 0; j < N; ++j, ++k) {
+        v[j] = number([&](std::size_t byte) { return Path(at, k, byte); });
+        if (!(more = in.array_next()) && j + 1 < N)
+          invalid(at, std::string("a flat list holds ") + names + "; its length " + std::to_string(k + 1) +
+                          " is not a multiple of " + std::to_string(N));
+      }
+      add(v);
     }
+    return true;
+  }
+  for (bool more = true; more; more = in.array_next(), ++k) {
     const Path e = element(at, k);
     expect(e, format::kArray, shape);
     std::size_t n = 0;
@@ -429,10 +433,7 @@ bool Reader::tuples(const Path& at, const char* shape, const char* names, Number
     if (n != N) invalid(e, std::string("expected ") + shape + ", got " + std::to_string(n) + " numbers");
     add(v);
   }
-  if (flat && k % N != 0)
-    invalid(at, std::string("a flat list holds ") + names + "; its length " + std::to_string(k) +
-                    " is not a multiple of " + std::to_string(N));
-  return flat;
+  return false;
 }
 
 void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
