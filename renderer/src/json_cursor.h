@@ -128,6 +128,20 @@ class JsonCursor {
     seek(start);
     return false;
   }
+  /// A plain integer in 0..2^32 - 2 ("12"; not "-1", "01", "1.0" or "1e3"): a mesh's index, read in one
+  /// go. False with nothing consumed for anything else, which number() then reads.
+  [[gnu::always_inline]] bool index(std::uint32_t& out) {
+    space();
+    const char* const first = p_;
+    const char* p = first;
+    std::uint64_t v = 0;
+    while (p < end_ && is_digit(*p) && p - first < 10) v = v * 10 + static_cast<unsigned>(*p++ - '0');
+    if (p == first || (*first == '0' && p - first > 1) || v >= UINT32_MAX) return false;
+    if (p < end_ && (is_digit(*p) || *p == '.' || *p == 'e' || *p == 'E')) return false;
+    number_start_ = first, integral_ = true, p_ = p;
+    out = static_cast<std::uint32_t>(v);
+    return true;
+  }
   /// True when a number starts here (after whitespace).
   [[gnu::always_inline]] bool at_number() {
     space();

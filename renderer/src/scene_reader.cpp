@@ -451,6 +451,7 @@ void Reader::indices(PrimitiveState& s, const Path& at) {
   auto& triangles = s.mesh.triangles;
   triangles.reserve(in.flat_array_size() / 3);
   auto index = [&](const auto& where) {
+    if (std::uint32_t i; in.index(i)) return static_cast<double>(i);
     const std::int64_t i = integer(where);
     const bool outside = i < 0 || i >= UINT32_MAX;
     if (outside && s.bad_index.empty()) s.bad_index = number_text();
