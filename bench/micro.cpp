@@ -1,12 +1,18 @@
 // Google Benchmark micro-benchmarks, one stage at a time: parse (per scene, plus the flat-array mesh),
-// plan, raster (per scene and thread count), encode; and the growth series — raster cost against image
+// the JSON tokenizer against RapidJSON's (issue 31's choice), plan, raster (per scene and thread count),
+// encode; and the growth series — raster cost against image
 // side (256..4096) and against primitive count (10^3..10^6). `make bench` runs them after the end-to-end
 // table and keeps their output in docs/performance.md.
 #include <benchmark/benchmark.h>
 
+#include <charconv>
 #include <map>
 #include <string>
 
+#include <rapidjson/error/en.h>
+#include <rapidjson/reader.h>
+
+#include "json_cursor.h"
 #include "raster/raster.h"
 #include "scenes.h"
 
@@ -40,6 +46,44 @@ raster::RenderPlan plan_for(const raster::Scene& s, int threads) {
 void parse(benchmark::State& state, const std::string& kind) {
   const std::string& text = json(kind);
   for (auto _ : state) benchmark::DoNotOptimize(raster::parse_scene(text));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+}
+
+// The two tokenizers issue 31 chose between, each doing the least a scene reader needs: check the whole
+// text and turn every number into a double. RapidJSON's SAX Reader with the flags the issue names (numbers
+// as strings, converted with std::from_chars, which is correctly rounded); our pull cursor (json_cursor.h)
+// passing over the document. The library is taken unless it is more than 15% slower.
+struct NumberSum : rapidjson::BaseReaderHandler<rapidjson::UTF8<>, NumberSum> {
+  double sum = 0;
+  bool RawNumber(const char* text, rapidjson::SizeType length, bool) {
+    double v = 0;
+    std::from_chars(text, text + length, v);
+    sum += v;
+    return true;
+  }
+};
+
+void tokenize_rapidjson(benchmark::State& state, const std::string& kind) {
+  const std::string& text = json(kind);
+  constexpr unsigned kFlags = rapidjson::kParseValidateEncodingFlag | rapidjson::kParseIterativeFlag |
+                              rapidjson::kParseNumbersAsStringsFlag;
+  for (auto _ : state) {
+    NumberSum handler;
+    rapidjson::StringStream in(text.c_str());
+    rapidjson::Reader reader;
+    if (reader.Parse<kFlags>(in, handler).IsError()) state.SkipWithError("RapidJSON rejected the scene");
+    benchmark::DoNotOptimize(handler.sum);
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+}
+
+void tokenize_cursor(benchmark::State& state, const std::string& kind) {
+  const std::string& text = json(kind);
+  for (auto _ : state) {
+    raster::JsonCursor in(text, 64);
+    benchmark::DoNotOptimize(in.skip());
+    in.finish();
+  }
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
 }
 
@@ -84,6 +128,12 @@ void register_all() {
   for (const char* kind : kScenes)
     benchmark::RegisterBenchmark((std::string("parse/") + kind).c_str(), parse, kind);
   benchmark::RegisterBenchmark("parse/mesh_flat_320k_triangles", parse, std::string("mesh"));
+  for (const char* kind : {"small", "grid", "mesh"}) {
+    benchmark::RegisterBenchmark((std::string("tokenize/rapidjson_sax/") + kind).c_str(), tokenize_rapidjson,
+                                 kind);
+    benchmark::RegisterBenchmark((std::string("tokenize/json_cursor/") + kind).c_str(), tokenize_cursor,
+                                 kind);
+  }
   for (const char* kind : kScenes)
     benchmark::RegisterBenchmark((std::string("plan/") + kind).c_str(), plan, kind);
   for (const char* kind : kScenes)
