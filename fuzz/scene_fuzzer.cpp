@@ -8,6 +8,8 @@
 #include <optional>
 #include <string_view>
 
+#include <nlohmann/json.hpp>
+
 #include "oracle/scene_dom.h"
 #include "raster/raster.h"
 
@@ -15,6 +17,15 @@ namespace {
 
 void check_readers_agree(std::string_view text, const raster::Limits& limits) {
   std::optional<raster::Scene> ours, theirs;
+  if (text.find('\0') != std::string_view::npos) {
+    // JSON has no raw NUL byte anywhere, and nlohmann takes one for the end of its input: no oracle here.
+    try {
+      raster::parse_scene(text, limits);
+    } catch (const raster::SceneError& e) {
+      if (e.kind() == raster::ErrorKind::syntax || e.kind() == raster::ErrorKind::encoding) return;
+    }
+    std::abort();  // accepted, or called valid JSON
+  }
   raster::ErrorKind our_kind{}, their_kind{};
   try {
     ours = raster::parse_scene(text, limits);
@@ -28,8 +39,13 @@ void check_readers_agree(std::string_view text, const raster::Limits& limits) {
   }
   if (ours.has_value() != theirs.has_value()) std::abort();  // one accepts what the other rejects
   if (ours && !(*ours == *theirs)) std::abort();             // read differently
-  if (!ours && (our_kind == raster::ErrorKind::syntax) != (their_kind == raster::ErrorKind::syntax))
-    std::abort();  // malformed to one of them only
+  const bool our_syntax = our_kind == raster::ErrorKind::syntax,
+             their_syntax = their_kind == raster::ErrorKind::syntax;
+  // Malformed to one of them only. The oracle reports a key given twice as it parses, before a syntax error
+  // further on; the reader reports the syntax error first (issue 31). Whether the text is JSON decides.
+  const bool json = nlohmann::json::accept(text);
+  if (!ours && our_syntax != their_syntax && our_kind != raster::ErrorKind::encoding && our_syntax == json)
+    std::abort();
 }
 
 }  // namespace

@@ -75,6 +75,13 @@ TEST(JsonConformance, AMalformedDocumentIsMalformedWhateverElseIsWrongInIt) {
     EXPECT_EQ(e.where().byte, text.find(",]") + 2) << e.what();
   }
   EXPECT_EQ(verdict(R"({"width": -4, "height": 8})"), ErrorKind::invalid);
+  // A key given twice is an invalid scene, but the document is not JSON further on (found by the fuzzer,
+  // where the oracle, which reports a repeated key while it parses, disagreed).
+  EXPECT_EQ(
+      verdict(
+          R"({"width": 3, "height": 300, "height": 6, "primitives": [{"type": "triangle", "points": [[30, 0], [pe""]}]})"),
+      ErrorKind::syntax);
+  EXPECT_EQ(verdict(R"({"width": 3, "height": 300, "height": 6})"), ErrorKind::invalid);
 }
 
 TEST(JsonConformance, EveryErrorHasTheByteWhereItsValueStarts) {

@@ -1,6 +1,8 @@
 // The tokenizer's slower paths: escapes, the number grammar, skipping a value, and error messages.
 #include "json_cursor.h"
 
+#include "raster/utf8.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -54,6 +56,15 @@ void JsonCursor::too_deep() const {
                    ErrorLocation{"", offset(), 0});
 }
 
+void JsonCursor::require_utf8(const char* from, const char* to) const {
+  if (first_invalid_utf8(std::string_view(from, static_cast<std::size_t>(to - from))) ==
+      std::string_view::npos)
+    return;
+  // The whole text's first bad byte: none is before this string (every earlier string was checked, and a
+  // byte above 0x7F outside a string is a syntax error), so this names the byte in this one.
+  raster::require_utf8(std::string_view(begin_, static_cast<std::size_t>(end_ - begin_)), "the scene");
+}
+
 std::string_view JsonCursor::escaped_string(const char* start) {
   scratch_.assign(start, p_);
   auto hex4 = [&](const char* at) {
@@ -68,7 +79,7 @@ std::string_view JsonCursor::escaped_string(const char* start) {
   while (true) {
     if (p_ == end_) fail("expected '\"' to close the string");
     const char c = *p_;
-    if (c == '"') return ++p_, scratch_;
+    if (c == '"') return require_utf8(start, p_), ++p_, scratch_;
     if (static_cast<unsigned char>(c) < 0x20) fail("a control character must be escaped in a string");
     if (c != '\\') {
       scratch_ += c, ++p_;

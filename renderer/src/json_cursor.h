@@ -288,14 +288,22 @@ class JsonCursor {
                                            1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                            1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};  // all exact doubles
   // At '"': the usual string, without escapes, is a view of the text; escapes are decoded out of line.
+  // Bytes above 0x7F (UTF-8 beyond ASCII) are valid JSON only inside strings: each string that has one is
+  // checked here, so a text the cursor reads to its end is well-formed UTF-8 (see parse_scene).
   [[gnu::always_inline]] std::string_view string_body() {
     const char* start = p_ + 1;
     const char* p = start;
-    while (p < end_ && kPlainByte[static_cast<unsigned char>(*p)]) ++p;
+    unsigned char high = 0;
+    for (unsigned char c; p < end_ && kPlainByte[c = static_cast<unsigned char>(*p)]; ++p) high |= c;
     p_ = p;
-    if (p < end_ && *p == '"') return ++p_, std::string_view(start, static_cast<std::size_t>(p - start));
+    if (p < end_ && *p == '"') {
+      if (high & 0x80) require_utf8(start, p);
+      return ++p_, std::string_view(start, static_cast<std::size_t>(p - start));
+    }
     return escaped_string(start);
   }
+  // Throws SceneError(encoding) at the text's first ill-formed byte when [from, to) is not UTF-8.
+  void require_utf8(const char* from, const char* to) const;
   std::string_view escaped_string(const char* start);
   [[noreturn, gnu::cold, gnu::noinline]] void too_deep() const;
   // Bytes that stand for themselves in a string: all but '"', '\\' and control characters (UTF-8 is checked

@@ -694,8 +694,6 @@ constexpr PrimitiveType kTypes[] = {
      format::mask_of(kPrimitiveFields, {"type", "data", "source", "mtl", "mtl_source", "textures", "color",
                                         "shading", "wireframe", "edges", "cull", "transform"})},
 };
-constexpr std::uint32_t kMeshOptions =
-    format::mask_of(kPrimitiveFields, {"shading", "wireframe", "edges", "cull", "transform"});
 constexpr const char* kTypeNames = "\"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\"";
 
 void Reader::set_type(PrimitiveState& s, std::string_view name, const Path& at) {
@@ -1098,17 +1096,17 @@ void Reader::read_root() {
 }  // namespace
 
 Scene parse_scene(std::string_view text, const Limits& limits, const Uploads& uploads) {
-  // JSON text is UTF-8 (RFC 8259 8.1): checked first, so no reader and no message ever holds a bad byte.
-  require_utf8(text, "the scene");
   if (text.empty())
     throw SceneError(ErrorKind::syntax, "the scene is empty (0 bytes); expected a JSON object");
   Reader r{JsonCursor(text, limits.max_json_depth), limits, uploads, {}, {}};
   r.reserve(text);
   try {
-    r.read_root();
+    r.read_root();  // checks the UTF-8 of every string it reads, so a scene read to the end is UTF-8
   } catch (const SceneError& e) {
+    // JSON text is UTF-8 (RFC 8259 8.1): a byte that is not is the first thing to report, wherever it is.
+    require_utf8(text, "the scene");
     if (e.kind() == ErrorKind::syntax) throw;
-    // Syntax first: a document that is not well-formed is reported as such, whatever else is wrong in it.
+    // Then syntax: a document that is not well-formed is reported as such, whatever else is wrong in it.
     JsonCursor whole(text, limits.max_json_depth);
     whole.skip();
     whole.finish();
