@@ -166,18 +166,21 @@ struct Reader {
   Scene scene;
   PrimitiveState prim;  // reused from primitive to primitive, so its buffers are allocated once
 
-  [[noreturn]] static void fail(ErrorKind kind, const Path& at, const std::string& message) {
+  [[noreturn, gnu::cold]] static void fail(ErrorKind kind, const Path& at, const std::string& message) {
     throw SceneError(kind, message, ErrorLocation{at.str(), at.byte(), 0});
   }
-  [[noreturn]] static void invalid(const Path& at, const std::string& message) {
+  [[noreturn, gnu::cold]] static void invalid(const Path& at, const std::string& message) {
     fail(ErrorKind::invalid, at, message);
+  }
+  [[noreturn, gnu::cold, gnu::noinline]] static void wrong_kind(const Path& at, Kind k,
+                                                                const char* expected) {
+    invalid(at, std::string("expected ") + expected + ", got " + phrase(k));
   }
 
   // The next value's kind, which must be one of `kinds`.
   Kind expect(const Path& at, std::uint8_t kinds, const char* expected) {
     const Kind k = in.peek();
-    if (!(kinds >> static_cast<int>(k) & 1))
-      invalid(at, std::string("expected ") + expected + ", got " + phrase(k));
+    if (!(kinds >> static_cast<int>(k) & 1)) wrong_kind(at, k, expected);
     return k;
   }
   // The next array element's pointer, its byte where its value starts.
@@ -283,20 +286,21 @@ void Reader::unknown_key(const F (&fields)[N], std::uint32_t allowed, std::strin
 template <class T, std::size_t N>
 void Reader::read_object(const Field<T> (&fields)[N], T& state, const Path& at, const char* expected) {
   expect(at, format::kObject, expected);
+  std::size_t next = 0;  // where the search for a key starts: documents tend to keep the table's order
   for (bool more = in.object_begin(); more; more = in.object_next()) {
     std::string own;
     std::string_view key = in.key();
     if (!in.in_text(key)) own = key, key = own;  // an escaped key: the next string read reuses its buffer
     const Kind kind = in.peek();
     const Path field(at, key, in.offset());
-    std::size_t i = 0;
-    while (i < N && !same_key(fields[i].key, key)) ++i;
-    if (i == N || !(state.allowed >> i & 1)) unknown_key(fields, state.allowed, key, field);
+    std::size_t i = next, tried = 0;
+    for (; tried < N && !same_key(fields[i].key, key); ++tried) i = i + 1 == N ? 0 : i + 1;
+    if (tried == N || !(state.allowed >> i & 1)) unknown_key(fields, state.allowed, key, field);
+    next = i + 1 == N ? 0 : i + 1;
     if (state.seen >> i & 1)
       invalid(field, "\"" + std::string(key) + "\" is given twice in one object; give each key once");
     state.seen |= 1u << i;
-    if (!(fields[i].kinds >> static_cast<int>(kind) & 1))
-      invalid(field, std::string("expected ") + fields[i].expected + ", got " + phrase(kind));
+    if (!(fields[i].kinds >> static_cast<int>(kind) & 1)) wrong_kind(field, kind, fields[i].expected);
     fields[i].read(*this, state, field);
     if (const std::uint32_t early =
             state.seen & ~state.allowed) {  // read before a "type" that does not take it
