@@ -7,8 +7,8 @@ namespace rasterd {
 void ConnectionThreads::enqueue(std::function<void()> job) {
   std::lock_guard lock(mutex_);
   if (!idle_.empty()) {
-    Worker* worker = idle_.front();  // EXPERIMENT: FIFO
-    idle_.erase(idle_.begin());
+    Worker* worker = idle_.back();
+    idle_.pop_back();
     worker->job = std::move(job);
     worker->wake.notify_one();
     return;
