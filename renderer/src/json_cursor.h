@@ -229,7 +229,7 @@ class JsonCursor {
   };
   Mark mark() const { return {p_, depth_}; }
   void seek(Mark m) { p_ = m.p, depth_ = m.depth; }
-  JsonCursor at(Mark m) const {
+  JsonCursor from(Mark m) const {
     JsonCursor c(std::string_view(begin_, static_cast<std::size_t>(end_ - begin_)), max_depth_);
     c.p_ = m.p, c.depth_ = m.depth;
     return c;

@@ -138,8 +138,8 @@ struct PrimitiveState : Keys {
   Mesh mesh;                           // "mesh" and "obj": positions, normals, uvs, texture, options
   bool indices_nested = false;
   std::string bad_index;  // the text of the first index below 0 or above 2^32 - 2
-  std::string obj, mtl;   // an "obj"'s text: "data" / "mtl" or the uploads "source" / "mtl_source" name
-  std::string source, mtl_source;
+  std::string obj, mtl;   // an "obj"'s inline texts: "data" and "mtl"
+  std::string source, mtl_source;  // an "obj"'s uploaded parts by name: "source" and "mtl_source"
   Uploads textures;  // an "obj"'s "textures"
   // Ready for the next primitive, keeping the flat buffers' capacity.
   void reset() {
@@ -711,7 +711,7 @@ void Reader::set_type(PrimitiveState& s, std::string_view name, const Path& at) 
 
 void Reader::finish_drawn(PrimitiveState& s, const Path& at) {
   const PrimitiveType& t = kTypes[s.type];
-  if (!(s.seen & 2u)) invalid(at, "a " + std::string(t.name) + " needs \"points\"");
+  if (!(s.seen & bit("points"))) invalid(at, "a " + std::string(t.name) + " needs \"points\"");
   const std::size_t n = s.dims == 3 ? s.coords.size() / 3 : scene.points.size() - s.first_point;
   const Path points(at, "points", s.points_byte);
   if (n < t.min_points || n > t.max_points)
@@ -848,7 +848,7 @@ void Reader::finish_obj(PrimitiveState& s, const Path& at) {
 // The type decides what else a primitive may hold, so a wrong or missing "type" is the error to report,
 // wherever it stands in the object. Only after an error: the object is read again from its start.
 void Reader::type_first(JsonCursor::Mark start, const Path& at) {
-  JsonCursor look = in.at(start);
+  JsonCursor look = in.from(start);
   try {
     if (look.peek() != Kind::object) return;
     for (bool more = look.object_begin(); more; more = look.object_next()) {
@@ -1010,7 +1010,7 @@ void Reader::primitives(const Path& at) {
     } catch (const SceneError& e) {
       if (e.kind() == ErrorKind::syntax) throw;
       // Too many primitives is the error to report, before what is wrong in one of them: count them.
-      JsonCursor look = in.at(start);
+      JsonCursor look = in.from(start);
       try {
         std::int64_t n = 0;
         for (bool more = look.array_begin(); more && n <= limits.max_primitives; more = look.array_next())
