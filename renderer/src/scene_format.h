@@ -15,9 +15,9 @@ namespace raster::format {
 
 /// Where a number may lie; `rule` is the sentence a rejection starts with.
 struct Range {
-  double lo, hi;
+  double lo, hi;          ///< the bounds, in the field's own unit (pixels, degrees, world units, 0..1)
   bool lo_open, hi_open;  ///< the bound itself is excluded
-  const char* rule;
+  const char* rule;       ///< the sentence an error starts with, naming the field and the range
   bool contains(double v) const {  // false for NaN
     return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
   }
@@ -54,15 +54,16 @@ enum KindBits : std::uint8_t {
 /// of the object being read). "expected <expected>, got <kind>" is the error for a value of another kind.
 template <class Read>
 struct Field {
-  std::string_view key;
-  std::uint8_t kinds;
-  const char* expected;
-  Read read;
+  std::string_view key;  ///< the JSON key, as written
+  std::uint8_t kinds;    ///< KindBits the value may be
+  const char* expected;  ///< what the value should be, in words: "an array of points"
+  Read read;             ///< reads the value, which starts at the cursor, into the object's state
 };
 
 /// The bit of each key of `keys` in a table of fields (a key not in the table is a build error).
 template <class F, std::size_t N>
-constexpr std::uint32_t mask_of(const F (&fields)[N], std::initializer_list<std::string_view> keys) {
+requires(N <= 32)  // masks of fields are 32 bits
+    constexpr std::uint32_t mask_of(const F (&fields)[N], std::initializer_list<std::string_view> keys) {
   std::uint32_t mask = 0;
   for (std::string_view k : keys) {
     std::size_t i = 0;

@@ -285,6 +285,7 @@ void Reader::unknown_key(const F (&fields)[N], std::uint32_t allowed, std::strin
 
 template <class T, std::size_t N>
 void Reader::read_object(const Field<T> (&fields)[N], T& state, const Path& at, const char* expected) {
+  static_assert(N <= 32, "`allowed` and `seen` hold a bit per field");
   expect(at, format::kObject, expected);
   std::size_t next = 0;  // where the search for a key starts: documents tend to keep the table's order
   for (bool more = in.object_begin(); more; more = in.object_next()) {

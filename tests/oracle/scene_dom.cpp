@@ -12,6 +12,7 @@
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_dom.h"
+#include "texture.h"
 #include "vecmath.h"
 
 namespace raster::scene_json {
@@ -435,41 +436,7 @@ std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const Path
   return out;
 }
 
-// Standard base64 (RFC 4648 section 4, '=' padding optional), or a data URI holding it
-// ("data:image/png;base64,..."). False on any other character.
-bool decode_base64(std::string_view text, std::string& out) {
-  if (text.starts_with("data:")) {
-    const std::size_t comma = text.find(',');
-    if (comma == std::string_view::npos || text.substr(0, comma).find(";base64") == std::string_view::npos)
-      return false;
-    text.remove_prefix(comma + 1);
-  }
-  while (!text.empty() && text.back() == '=') text.remove_suffix(1);
-  if (text.size() % 4 == 1) return false;
-  out.clear();
-  out.reserve(text.size() / 4 * 3 + 2);
-  std::uint32_t acc = 0;
-  int bits = 0;
-  for (const char c : text) {
-    int v;
-    if (c >= 'A' && c <= 'Z')
-      v = c - 'A';
-    else if (c >= 'a' && c <= 'z')
-      v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9')
-      v = c - '0' + 52;
-    else if (c == '+')
-      v = 62;
-    else if (c == '/')
-      v = 63;
-    else
-      return false;
-    acc = (acc << 6) | static_cast<std::uint32_t>(v), bits += 6;
-    if (bits >= 8) bits -= 8, out.push_back(static_cast<char>((acc >> bits) & 0xff));
-  }
-  return true;
-}
-
+// Base64 is the library's own decoder (texture.h): the oracle checks how a scene is read, not base64.
 // Texels the scene's textures hold so far: what is left of the limit is what the next one may take.
 std::int64_t texels_left(const Scene& scene, const Limits& limits) {
   std::int64_t used = 0;
