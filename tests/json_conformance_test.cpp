@@ -27,9 +27,9 @@ std::string read(const fs::path& path) {
 }
 
 // The kind of error parse_scene gives, or nothing when it accepts.
-std::optional<ErrorKind> verdict(const std::string& text) {
+std::optional<ErrorKind> verdict(const std::string& text, const raster::Limits& limits = {}) {
   try {
-    raster::parse_scene(text);
+    raster::parse_scene(text, limits);
     return std::nullopt;
   } catch (const raster::SceneError& e) {
     return e.kind();
@@ -82,6 +82,17 @@ TEST(JsonConformance, AMalformedDocumentIsMalformedWhateverElseIsWrongInIt) {
           R"({"width": 3, "height": 300, "height": 6, "primitives": [{"type": "triangle", "points": [[30, 0], [pe""]}]})"),
       ErrorKind::syntax);
   EXPECT_EQ(verdict(R"({"width": 3, "height": 300, "height": 6})"), ErrorKind::invalid);
+}
+
+// A library caller may allow deep documents; judging one (here: syntax first, after the wrong kind of
+// "$comment") takes no stack per level, where a recursive walk would overflow it.
+TEST(JsonConformance, DeepNestingWithinAHighLimitNeedsNoStackPerLevel) {
+  raster::Limits limits;
+  limits.max_json_depth = 1'000'000;
+  const std::size_t depth = 500'000;
+  const std::string head = R"({"width": 1, "height": 1, "$comment": )" + std::string(depth, '[');
+  EXPECT_EQ(verdict(head + std::string(depth, ']') + "}", limits), ErrorKind::invalid);
+  EXPECT_EQ(verdict(head + std::string(depth - 1, ']') + "}", limits), ErrorKind::syntax);
 }
 
 TEST(JsonConformance, EveryErrorHasTheByteWhereItsValueStarts) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 namespace raster {
 namespace {
@@ -185,29 +186,43 @@ bool JsonCursor::overflows(const char* q) const {
 }
 
 std::string_view JsonCursor::skip() {
-  const Kind kind = peek();
-  const char* start = p_;
-  switch (kind) {
-    case Kind::object:
-      for (bool more = object_begin(); more; more = object_next()) key(), skip();
-      break;
-    case Kind::array:
-      for (bool more = array_begin(); more; more = array_next()) skip();
-      break;
-    case Kind::string:
-      string_body();
-      break;
-    case Kind::number:
-      number();
-      break;
-    case Kind::boolean:
-      boolean();
-      break;
-    case Kind::null:
-      if (!literal("null")) fail("expected a value");
-      break;
+  const char* start = (peek(), p_);
+  // Without recursion, so the stack stays flat however deep a library caller lets documents nest: one
+  // entry per open container, true for an object (whose next member starts with a key).
+  std::vector<bool> open;
+  while (true) {
+    bool opened = false;
+    switch (peek()) {
+      case Kind::object:
+        if ((opened = object_begin())) open.push_back(true), key();
+        break;
+      case Kind::array:
+        if ((opened = array_begin())) open.push_back(false);
+        break;
+      case Kind::string:
+        string_body();
+        break;
+      case Kind::number:
+        number();
+        break;
+      case Kind::boolean:
+        boolean();
+        break;
+      case Kind::null:
+        if (!literal("null")) fail("expected a value");
+        break;
+    }
+    if (opened) continue;  // its first element is next
+    // A value ended: close the containers it ends, until one has another element.
+    while (!open.empty()) {
+      if (open.back() ? object_next() : array_next()) {
+        if (open.back()) key();
+        break;
+      }
+      open.pop_back();
+    }
+    if (open.empty()) return {start, static_cast<std::size_t>(p_ - start)};
   }
-  return {start, static_cast<std::size_t>(p_ - start)};
 }
 
 }  // namespace raster
