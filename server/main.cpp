@@ -74,15 +74,20 @@ std::string describe(const raster::SceneError& e) {
   return e.what() + where;
 }
 
-// A model read from a file finds the files it names beside it, as model viewers do: the MTL its mtllib lines
-// name, then the textures that MTL names, read from the model's folder by file name (what --part gave wins;
-// a name that is not there is left to the parser to report). The service never does this: it has only what
-// was uploaded.
-void gather_model_files(const std::string& model_path, const std::string& obj, raster::Uploads& uploads) {
+// A model read from a file finds the files it names beside it, as model viewers do: an OBJ's MTL its mtllib
+// lines name, then the textures that MTL names; a glTF's buffers and images; read from the model's folder by
+// file name (what --part gave wins; a name that is not there is left to the parser to report). The service
+// never does this: it has only what was uploaded.
+void gather_model_files(const std::string& model_path, const std::string& model,
+                        std::optional<raster::ModelFormat> format, raster::Uploads& uploads) {
   const std::filesystem::path folder = std::filesystem::path(model_path).parent_path();
   const auto mtl = uploads.find("mtl");
-  for (int round = 0; round < 2; ++round)  // the libraries, then the textures they name
-    for (const std::string& name : raster::obj_files(obj, mtl == uploads.end() ? "" : mtl->second, uploads)) {
+  const bool gltf = format == raster::ModelFormat::gltf || format == raster::ModelFormat::glb;
+  if (!gltf && format != raster::ModelFormat::obj && format) return;  // STL and PLY name no files
+  for (int round = 0; round < (gltf ? 1 : 2); ++round)  // OBJ: the libraries, then the textures they name
+    for (const std::string& name :
+         gltf ? raster::gltf_files(model)
+              : raster::obj_files(model, mtl == uploads.end() ? "" : mtl->second, uploads)) {
       const std::filesystem::path file = folder / name;
       std::error_code error;
       if (uploads.contains(name) || !std::filesystem::is_regular_file(file, error)) continue;  // not "..", not a folder
@@ -139,10 +144,13 @@ int run_render(const std::vector<std::string>& args) {
     std::cerr << "rasterd: cannot read " << input << ": " << std::strerror(errno) << "\n";
     return 1;
   }
-  if (input != "-" && !rasterd::is_scene_text(text)) gather_model_files(input, text, uploads);
+  const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(text);
+  if (input != "-" && (!rasterd::is_scene_text(text) || sniffed == raster::ModelFormat::gltf))
+    gather_model_files(input, text, sniffed, uploads);
   try {
     raster::Scene scene =
-        rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{});
+        rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{}, false,
+                                    raster::format_of_file_name(input));
     const raster::RenderPlan plan = raster::plan(scene);
     // The plan or the PNG, written where -o says (the PNG is not copied: it can be tens of MB).
     std::string plan_text;

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "raster/model.h"
 #include "raster/utf8.h"
 
 namespace rasterd {
@@ -37,7 +38,7 @@ bool looks_like_flattened_obj(std::string_view body) {
 
 // The query parameters of a bare model's default scene ("explain" is the route's).
 constexpr std::string_view kModelParams[] = {"width", "height", "background", "view", "projection",
-                                             "fov",   "eye",    "target",     "up"};
+                                             "fov",   "eye",    "target",     "up",   "format"};
 
 std::string known_params() {
   std::string list;
@@ -60,6 +61,7 @@ std::string colour_param(const std::string& value) {
 
 // The query parameter a field of the default scene comes from ("/camera/fov/..." -> "fov"), or "".
 std::string param_of_pointer(const std::string& pointer, const Params& params) {
+  if (pointer.starts_with("/primitives/0/format")) return params.contains("format") ? "format" : "";
   std::string name =
       pointer.starts_with("/camera/") ? pointer.substr(8) : pointer.substr(pointer.empty() ? 0 : 1);
   name = name.substr(0, name.find('/'));
@@ -79,7 +81,7 @@ bool starts_like_obj(std::string_view body) {
 
 // The default scene of a bare model, with the parameters turned into JSON and parsed like any scene, so
 // that a bad parameter gets the same precise message as the same field in a scene document.
-std::string default_scene_json(const Params& params) {
+std::string default_scene_json(const Params& params, std::optional<raster::ModelFormat> named_format) {
   nlohmann::json scene = {{"width", 512}, {"height", 512}};
   nlohmann::json camera = nlohmann::json::object();
   auto number = [&](const std::string& name, const std::string& text) -> nlohmann::json {
@@ -114,13 +116,19 @@ std::string default_scene_json(const Params& params) {
       camera["fov"] = number(name, value);
     else if (name == "eye" || name == "target" || name == "up")
       camera[name] = vector(name, value);
-    else if (name == "explain")
-      continue;  // the route's, not the scene's
+    else if (name == "explain" || name == "format")
+      continue;  // the route's, and the model's (below)
     else
       bad_param(name, "unknown; known: " + known_params());
   }
   if (!camera.empty()) scene["camera"] = camera;
-  scene["primitives"] = nlohmann::json::array({{{"type", "obj"}, {"source", "model"}}});
+  nlohmann::json model = {{"type", "model"}, {"source", "model"}};
+  // The bytes tell the format first (the reader sniffs them); else the part's file name, else ?format=.
+  if (named_format)
+    model["format"] = raster::format_name(*named_format);
+  else if (const auto format = params.find("format"); format != params.end())
+    model["format"] = format->second;
+  scene["primitives"] = nlohmann::json::array({model});
   return scene.dump();
 }
 
@@ -132,6 +140,29 @@ bool is_json_media_type(std::string_view content_type) {
   std::transform(type.begin(), type.end(), type.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return type == "application/json" || type == "text/json" || type.ends_with("+json");
+}
+
+std::optional<raster::ModelFormat> format_of_media_type(std::string_view content_type) {
+  std::string type(content_type.substr(0, content_type.find(';')));
+  while (!type.empty() && (type.back() == ' ' || type.back() == '\t')) type.pop_back();
+  std::transform(type.begin(), type.end(), type.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  using raster::ModelFormat;
+  static constexpr std::pair<std::string_view, ModelFormat> kTypes[] = {
+      {"model/obj", ModelFormat::obj},
+      {"text/x-obj", ModelFormat::obj},
+      {"model/stl", ModelFormat::stl},
+      {"model/x.stl-ascii", ModelFormat::stl},
+      {"model/x.stl-binary", ModelFormat::stl},
+      {"application/sla", ModelFormat::stl},
+      {"application/vnd.ms-pki.stl", ModelFormat::stl},
+      {"model/ply", ModelFormat::ply},
+      {"application/ply", ModelFormat::ply},
+      {"model/gltf+json", ModelFormat::gltf},
+      {"model/gltf-binary", ModelFormat::glb}};
+  for (const auto& [name, format] : kTypes)
+    if (type == name) return format;
+  return std::nullopt;
 }
 
 bool is_scene_text(std::string_view body) {
@@ -168,7 +199,8 @@ void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts
   }
 }
 
-std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts) {
+std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts,
+                            std::string* model_file_name) {
   if (!body.empty() || uploads.contains("model") || parts.empty()) return {};
   auto lower_ends_with = [](std::string name, std::string_view suffix) {
     std::transform(name.begin(), name.end(), name.begin(),
@@ -178,17 +210,19 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
   // A lone part is the body whatever its name; among several, the one whose file is a scene or a model.
   std::vector<const PartName*> candidates;
   for (const PartName& p : parts)
-    if (parts.size() == 1 || lower_ends_with(p.key, ".obj") || lower_ends_with(p.key, ".json"))
+    if (parts.size() == 1 || raster::format_of_file_name(p.key) || lower_ends_with(p.key, ".json"))
       candidates.push_back(&p);
   if (candidates.size() == 1) {
     const PartName& p = *candidates.front();
     std::string bytes = std::move(uploads[p.key]);
     uploads.erase(p.key);
     if (p.part != p.key) uploads.erase(p.part);  // the copy add_part_names made under the part's name
-    if (is_scene_text(bytes))
+    if (is_scene_text(bytes) && raster::sniff_model(bytes) != raster::ModelFormat::gltf) {
       body = std::move(bytes);
-    else
+    } else {
       uploads["model"] = std::move(bytes);
+      if (model_file_name) *model_file_name = p.key;
+    }
     return {};
   }
   std::string names;
@@ -196,11 +230,13 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
     names += (names.empty() ? "\"" : ", \"") + p.part + "\"" + (p.key != p.part ? " (" + p.key + ")" : "");
   return "the upload has the parts " + names + " but none is named \"scene\" or \"model\"" +
          (candidates.empty() ? "" : " and more than one could be") +
-         "; send the model as -F model=@model.obj or the scene as -F scene=@scene.json";
+         "; send the model as -F model=@model.stl (or .obj, .ply, .gltf, .glb) or the scene as -F "
+         "scene=@scene.json";
 }
 
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
-                                 const raster::Limits& limits, bool declared_json) {
+                                 const raster::Limits& limits, bool declared_json,
+                                 std::optional<raster::ModelFormat> named_format) {
   // Parameters become JSON text below and are quoted in errors: their bytes must be UTF-8 first.
   for (const auto& [name, value] : params) {
     raster::require_utf8(name, "the name of a query parameter");
@@ -210,7 +246,9 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   // A byte order mark (Windows editors write one) is whitespace to the readers: blanked rather than cut,
   // so every byte offset in an error still counts from the start of what was sent.
   if (body.starts_with(kUtf8Bom)) body.replace(0, kUtf8Bom.size(), kUtf8Bom.size(), ' ');
-  if (declared_json || is_scene_text(body)) {
+  // A glTF document is JSON too (model/gltf+json ends in "+json"): its first key tells it from a scene.
+  const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(body);
+  if ((declared_json || is_scene_text(body)) && sniffed != raster::ModelFormat::gltf) {
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {
       if (name == "explain") continue;
@@ -229,17 +267,18 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
           "as model/obj, or with curl --data-binary and no Content-Type of its own");
     return raster::parse_scene(body, limits, uploads);
   }
-  if (looks_like_flattened_obj(body))
+  if ((!sniffed || sniffed == raster::ModelFormat::obj) && looks_like_flattened_obj(body))
     throw raster::SceneError(
         raster::ErrorKind::syntax,
         "the body looks like an OBJ model whose line breaks were removed (curl -d does that); "
         "send it with --data-binary @model.obj");
   if (body.find_first_not_of(" \t\r\n") == std::string_view::npos && !uploads.count("model"))
     throw raster::SceneError(raster::ErrorKind::syntax,
-                             "the request is empty: send a scene (JSON) or a model (OBJ)");
+                             "the request is empty: send a scene (JSON) or a model (" +
+                                 std::string(raster::accepted_formats()) + ")");
   if (!body.empty()) uploads["model"] = std::move(body);
   try {
-    return raster::parse_scene(default_scene_json(params), limits, uploads);
+    return raster::parse_scene(default_scene_json(params, named_format), limits, uploads);
   } catch (const raster::SceneError& e) {
     // A field the query set is reported as that parameter: the client sent no document to point into.
     const std::string param = param_of_pointer(e.where().pointer, params);

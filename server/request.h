@@ -7,12 +7,16 @@
 #include <string_view>
 #include <vector>
 
+#include <optional>
+
+#include "raster/model.h"
 #include "raster/scene.h"
 
 namespace rasterd {
 
 /// Query parameters (HTTP) or --key=value options (CLI) that shape the default scene of a bare model:
-/// width, height, background, projection, fov, eye, target, up (vectors as "x,y,z").
+/// width, height, background, projection, fov, eye, target, up (vectors as "x,y,z"), and format (the
+/// model's, when its bytes do not tell it: obj, stl, ply, gltf or glb).
 using Params = std::map<std::string, std::string, std::less<>>;
 
 /// The name an uploaded part is kept under in raster::Uploads. "scene", "model" and "mtl" keep their
@@ -37,6 +41,10 @@ void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts
 /// scene whatever its first byte.
 bool is_json_media_type(std::string_view content_type);
 
+/// The model format a Content-Type names (model/stl, model/gltf-binary, model/gltf+json, model/obj,
+/// application/sla, model/ply, ...), or nullopt.
+std::optional<raster::ModelFormat> format_of_media_type(std::string_view content_type);
+
 /// True when `body` is a scene by its bytes: the first byte after an optional UTF-8 byte order mark and
 /// whitespace is '{' or '['; anything else is a model.
 bool is_scene_text(std::string_view body);
@@ -45,19 +53,24 @@ bool is_scene_text(std::string_view body);
 /// ?explain, is true. Anything else throws raster::SceneError naming the parameter.
 bool explain_requested(const Params& params);
 
-/// A multipart upload with neither a "scene" nor a "model" part (`curl -F file=@bunny.obj`): a lone part,
-/// or else the one part whose file name ends in .obj or .json, becomes the body (a scene by its bytes) or
-/// the model. Returns an error message naming the parts when no single part qualifies; "" otherwise (also
-/// when there was nothing to choose).
-std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts);
+/// A multipart upload with neither a "scene" nor a "model" part (`curl -F file=@bunny.stl`): a lone part,
+/// or else the one part whose file name ends in a model's extension (.obj, .stl, .ply, .gltf, .glb) or
+/// .json, becomes the body (a scene by its bytes) or the model, whose file name then goes to
+/// `model_file_name` when given. Returns an error message naming the parts when no single part
+/// qualifies; "" otherwise (also when there was nothing to choose).
+std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts,
+                            std::string* model_file_name = nullptr);
 
-/// A scene when `declared_json` (the request's Content-Type says JSON) or is_scene_text(body); otherwise an
-/// OBJ model drawn with the default scene (512x512, camera framing the model) adjusted by `params`. A scene
+/// A scene when `declared_json` (the request's Content-Type says JSON) or is_scene_text(body), unless the
+/// bytes are a glTF document; otherwise a model drawn with the default scene (512x512, camera framing the
+/// model) adjusted by `params`. The model's format is told by its bytes, else by `named_format` (from the
+/// file name of the part that carried it, or the Content-Type), else by ?format=. A scene
 /// takes no parameter but "explain": any other is refused, as an unknown one is for a model. A UTF-8 byte
 /// order mark is read as whitespace. A body that looks like an OBJ whose line breaks were stripped (curl -d)
 /// is refused with a hint. Throws raster::SceneError. Takes the body and uploads by value: callers move
 /// them in, so a large model is never copied.
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
-                                 const raster::Limits& limits, bool declared_json = false);
+                                 const raster::Limits& limits, bool declared_json = false,
+                                 std::optional<raster::ModelFormat> named_format = std::nullopt);
 
 }  // namespace rasterd

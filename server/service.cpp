@@ -255,7 +255,7 @@ struct Service::State {
   // while streaming (chunked bodies declare no length) and the deadline holds whatever the pace of the
   // bytes. Multipart parts go to `uploads`, except "scene", which becomes the body.
   bool read_body(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
-                 std::string& body, raster::Uploads& uploads) {
+                 std::string& body, raster::Uploads& uploads, std::string& model_file_name) {
     const std::size_t cap = config.max_body_bytes;
     if (req.has_header("Content-Encoding") && req.get_header_value("Content-Encoding") != "identity")
       return refuse(res,
@@ -304,6 +304,7 @@ struct Service::State {
               current = &body;
               return true;
             }
+            if (part.name == "model") model_file_name = part.filename;
             const std::string key = upload_key(part.name, part.filename);
             parts.push_back({part.name, key});
             const auto [it, added] = uploads.try_emplace(key);
@@ -329,7 +330,8 @@ struct Service::State {
                                   "\" (texture parts are named by their file name); send each once"),
                       "duplicate_part");
       add_part_names(uploads, parts);
-      if (const std::string unnamed = adopt_main_part(body, uploads, parts); !unnamed.empty())
+      if (const std::string unnamed = adopt_main_part(body, uploads, parts, &model_file_name);
+          !unnamed.empty())
         return refuse(res, problem(400, "missing-part", "No scene or model part in the upload", unnamed),
                       "missing_part");
     } else {
@@ -359,11 +361,15 @@ struct Service::State {
                    const httplib::ContentReader& reader) {
     std::string body;
     raster::Uploads uploads;
-    if (!read_body(req, res, reader, body, uploads)) return;
-    const bool declared_json =
-        !req.is_multipart_form_data() && is_json_media_type(req.get_header_value("Content-Type"));
+    std::string model_file_name;  // of the multipart part that carried the model
+    if (!read_body(req, res, reader, body, uploads, model_file_name)) return;
+    const bool multipart = req.is_multipart_form_data();
+    const bool declared_json = !multipart && is_json_media_type(req.get_header_value("Content-Type"));
+    // What the request says the model is, for bytes that do not tell: the file name, else the media type.
+    std::optional<raster::ModelFormat> named = raster::format_of_file_name(model_file_name);
+    if (!named && !multipart) named = format_of_media_type(req.get_header_value("Content-Type"));
     render(req, res, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()), false,
-           declared_json);
+           declared_json, named);
   }
 
   // GET /render?scene=...: the scene is in the URL, so the answer can be cached by URL.
@@ -396,7 +402,8 @@ struct Service::State {
   // Both methods from here: admission, parse, plan, conditional request, render, encode. `cacheable`: the
   // request is a GET, whose answer is named by its URL alone. `declared_json`: its Content-Type says JSON.
   void render(const httplib::Request& req, httplib::Response& res, std::string body, raster::Uploads uploads,
-              const Params& params, bool cacheable, bool declared_json) {
+              const Params& params, bool cacheable, bool declared_json,
+              std::optional<raster::ModelFormat> named_format = std::nullopt) {
     const Admission::Verdict verdict = admission.enter(body.size() + uploads_size(uploads));
     if (verdict.refused) {
       const auto seconds = std::max<std::int64_t>(1, (verdict.wait.count() + 999) / 1000);
@@ -422,8 +429,8 @@ struct Service::State {
 
     const Clock::time_point t0 = Clock::now();
     try {
-      raster::Scene scene =
-          scene_from_request(std::move(body), std::move(uploads), params, config.limits, declared_json);
+      raster::Scene scene = scene_from_request(std::move(body), std::move(uploads), params, config.limits,
+                                               declared_json, named_format);
       const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
       if (explain_requested(params)) {  // no tag: the plan also depends on the thread count
         res.set_content(raster::explain_json(plan), "application/json");

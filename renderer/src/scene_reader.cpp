@@ -14,11 +14,13 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "json_cursor.h"
+#include "raster/model.h"
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_format.h"
@@ -139,8 +141,9 @@ struct PrimitiveState : Keys {
   bool indices_nested = false;
   std::string bad_index;  // the text of the first index below 0 or above 2^32 - 2
   std::string obj, mtl;   // an "obj"'s inline texts: "data" and "mtl"
-  std::string source, mtl_source;  // an "obj"'s uploaded parts by name: "source" and "mtl_source"
-  Uploads textures;  // an "obj"'s "textures"
+  std::string source, mtl_source;     // a model's uploaded parts by name: "source" and "mtl_source"
+  Uploads textures;                   // a model's "textures": the files it names, by file name
+  std::optional<ModelFormat> format;  // a model's "format"; "obj" for the type "obj"
   // Ready for the next primitive, keeping the flat buffers' capacity.
   void reset() {
     static_cast<Keys&>(*this) = Keys{};
@@ -149,6 +152,7 @@ struct PrimitiveState : Keys {
     if (seen_model) {  // what only meshes and models use, cleared only after one
       obj.clear(), mtl.clear(), textures.clear(), bad_index.clear();
       source.clear(), mtl_source.clear();
+      format.reset();
       seen_model = false;
     }
   }
@@ -662,6 +666,11 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
      [](Reader& r, PrimitiveState& s, const Path&) { s.mtl = r.in.string(); }},
     {"mtl_source", format::kString, "the name of an uploaded part",
      [](Reader& r, PrimitiveState& s, const Path&) { s.mtl_source = r.in.string(); }},
+    {"format", format::kString, "a string",
+     [](Reader& r, PrimitiveState& s, const Path& at) {
+       s.format = static_cast<ModelFormat>(
+           r.choice(at, std::array<std::string_view, 5>{"obj", "stl", "ply", "gltf", "glb"}));
+     }},
     {"textures", format::kObject, "an object of file name: base64 image",
      [](Reader& r, PrimitiveState& s, const Path& at) {
        for (bool more = r.in.object_begin(); more; more = r.in.object_next()) {
@@ -695,11 +704,16 @@ constexpr PrimitiveType kTypes[] = {
     {"mesh", PrimitiveKind::mesh, 0, 0,
      format::mask_of(kPrimitiveFields, {"type", "positions", "indices", "colors", "color", "normals", "uvs",
                                         "texture", "shading", "wireframe", "edges", "cull", "transform"})},
+    // A model file in any format (model.h), its format told by its bytes, else by "format"; "obj" is the
+    // same with OBJ as the format to fall back on (rasterd 0.1's name, kept).
+    {"model", PrimitiveKind::mesh, 0, 0,
+     format::mask_of(kPrimitiveFields, {"type", "data", "source", "format", "mtl", "mtl_source", "textures",
+                                        "color", "shading", "wireframe", "edges", "cull", "transform"})},
     {"obj", PrimitiveKind::mesh, 0, 0,
      format::mask_of(kPrimitiveFields, {"type", "data", "source", "mtl", "mtl_source", "textures", "color",
                                         "shading", "wireframe", "edges", "cull", "transform"})},
 };
-constexpr const char* kTypeNames = "\"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\"";
+constexpr const char* kTypeNames = "\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\"";
 
 void Reader::set_type(PrimitiveState& s, std::string_view name, const Path& at) {
   const auto* t = std::find_if(std::begin(kTypes), std::end(kTypes),
@@ -813,8 +827,11 @@ void Reader::finish_obj(PrimitiveState& s, const Path& at) {
     return part->second;
   };
   const std::string_view obj = text_of(bit("data"), bit("source"), s.obj, s.source);
+  const std::string_view type = kTypes[s.type].name;
   if (!(s.seen & (bit("data") | bit("source"))))
-    invalid(at, "an obj needs \"data\" (OBJ text) or \"source\" (the name of an uploaded part)");
+    invalid(at, "a" + std::string(type == "obj" ? "n " : " ") + std::string(type) + " needs \"data\" (" +
+                    (type == "obj" ? "OBJ text" : "the model's text") +
+                    ") or \"source\" (the name of an uploaded part)");
   std::string_view mtl = text_of(bit("mtl"), bit("mtl_source"), s.mtl, s.mtl_source);
   // An MTL uploaded as part "mtl" goes with a model taken from the uploads.
   if (mtl.empty() && (s.seen & bit("source")) && !(s.seen & bit("mtl_source")))
@@ -823,11 +840,15 @@ void Reader::finish_obj(PrimitiveState& s, const Path& at) {
   model_limits.max_texture_pixels = texels_left(scene, limits);
   Mesh mesh;
   try {
-    mesh = parse_obj(obj, mtl, model_limits, (s.seen & bit("textures")) ? s.textures : uploads);
+    const std::optional<ModelFormat> hint = type == "obj" ? ModelFormat::obj : s.format;
+    mesh = parse_model(obj, hint, model_limits, (s.seen & bit("textures")) ? s.textures : uploads, mtl);
   } catch (const SceneError& e) {
     // An encoding error keeps its byte: the offset into the model's own text, which the message names.
-    const std::string message =
-        e.where().line ? std::string(e.what()) + " (line " + std::to_string(e.where().line) + ")" : e.what();
+    std::string message = e.what();
+    if (e.where().line)
+      message += " (line " + std::to_string(e.where().line) + ")";
+    else if (e.where().byte && e.kind() != ErrorKind::encoding)  // a binary model's place in its own bytes
+      message += " (byte " + std::to_string(e.where().byte) + " of the model)";
     throw SceneError(e.kind(), message,
                      ErrorLocation{at.str(), e.kind() == ErrorKind::encoding ? e.where().byte : at.byte(),
                                    e.where().line});

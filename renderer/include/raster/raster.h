@@ -3,6 +3,7 @@
 
 #include "raster/error.h"
 #include "raster/image.h"
+#include "raster/model.h"
 #include "raster/plan.h"
 #include "raster/png.h"
 #include "raster/render.h"

@@ -1,0 +1,75 @@
+// Models in the formats people bring: OBJ, STL (ASCII and binary), PLY (ASCII, binary little and big
+// endian) and glTF 2.0 (.gltf and .glb). Each reader turns bytes into a Mesh and never reads a file: the
+// files a model names (an OBJ's MTL and textures, a glTF's buffers and images) come from `files`, by name.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "raster/scene.h"
+
+namespace raster {
+
+enum class ModelFormat : std::uint8_t { obj, stl, ply, gltf, glb };
+
+/// The format's name as the scene's "format" field and the service's ?format= take it: "obj", "stl",
+/// "ply", "gltf", "glb".
+std::string_view format_name(ModelFormat format);
+/// The inverse of format_name (ASCII case ignored); nullopt for any other word.
+std::optional<ModelFormat> format_named(std::string_view name);
+/// "OBJ, STL (ASCII or binary), PLY (ASCII or binary) and glTF 2.0 (.gltf or .glb)": for errors.
+std::string_view accepted_formats();
+
+/// The format `bytes` are in, by the bytes alone, or nullopt when they are in none:
+/// - glb: the magic "glTF" and version 2;
+/// - gltf: a JSON object whose first key is a glTF top-level property ("asset", "scene", "nodes", ...);
+///   only that key is read, so a scene document of any size is told apart at once;
+/// - ply: "ply" and a line break;
+/// - stl: "solid" followed by "facet" or "endsolid" (ASCII), else a size of exactly 84 + 50 x the count
+///   the header gives (binary; some binary files start with "solid" too);
+/// - obj: text whose first statement (after blank lines and '#' comments) is an OBJ keyword; a file of
+///   nothing but comments too, which parse_obj then calls empty.
+std::optional<ModelFormat> sniff_model(std::string_view bytes);
+
+/// The format a file name's extension names (.obj, .stl, .ply, .gltf, .glb; ASCII case ignored), or nullopt.
+std::optional<ModelFormat> format_of_file_name(std::string_view file_name);
+
+/// STL, ASCII or binary (told apart as sniff_model does). Each facet is a triangle of its own (an STL has
+/// no shared corners); shading is flat, from each facet's plane: the stored facet normals are not read,
+/// as writers often leave them zero or stale, and one that disagreed with the corners' order would light
+/// the face from behind. The solid's name and the attribute bytes are ignored. The binary triangle count is
+/// checked against the size before anything is allocated; `limits.max_obj_faces` bounds the facets.
+/// Throws SceneError(model) naming the line (ASCII) or byte (binary), SceneError(limit) over the limit.
+Mesh parse_stl(std::string_view bytes, const Limits& limits = {});
+
+/// PLY 1.0, ASCII or binary of either byte order: the "vertex" element's x, y, z, optional normals
+/// (nx, ny, nz) and colours (red, green, blue and alpha, as uchar 0..255 or as float 0..1), and the "face"
+/// element's index list ("vertex_indices" or "vertex_index", any list and index types). Faces of more
+/// than three corners are triangulated as OBJ faces are (quads on their shorter diagonal, as
+/// tinyobjloader splits them; larger polygons as a fan from their first corner, exact for the convex
+/// polygons models hold). Other elements and properties are skipped. Every element count and list length
+/// is checked against the bytes left before anything is allocated; `limits.max_obj_faces` bounds the faces.
+Mesh parse_ply(std::string_view bytes, const Limits& limits = {});
+
+/// glTF 2.0 through tinygltf: a .gltf document (buffers and images as data: URIs, or as `files` named by
+/// their URI's file name) or a .glb. Every mesh of the default scene (or the first) is drawn under its
+/// node's transform; triangles, strips and fans, lines, line strips and loops; indices of every component
+/// type; POSITION, NORMAL, COLOR_0, TEXCOORD_0; a material's baseColorFactor and baseColorTexture, and
+/// KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked to lie
+/// within its buffer view and buffer before it is read. Nothing is read from disk or the network.
+Mesh parse_gltf(std::string_view bytes, const Limits& limits = {}, const Uploads& files = {});
+
+/// The files a glTF document (or a GLB's JSON chunk) names: the URIs of its buffers and images that are not
+/// data: URIs, as file names without folders, percent-decoded, each once. For a program that has the
+/// model's folder at hand (the CLI) to gather them as uploads. Never throws: parse_gltf reports a bad model.
+std::vector<std::string> gltf_files(std::string_view bytes);
+
+/// Any of the formats: sniff_model(bytes), else `hint` (from a file name or the request), else
+/// SceneError(model) naming the formats accepted. OBJ takes `mtl_text` as parse_obj does; OBJ and glTF
+/// find the files they name in `files`.
+Mesh parse_model(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits = {},
+                 const Uploads& files = {}, std::string_view mtl_text = {});
+
+}  // namespace raster

@@ -1,0 +1,599 @@
+// glTF 2.0 models through tinygltf: the document (and a GLB's chunks) parsed by tinygltf, with its file
+// callbacks resolving only uploaded parts and its image callback keeping the encoded bytes; then every
+// mesh of the default scene read into one Mesh under its node's transform, each accessor checked to lie
+// within its buffer view and buffer before a byte of it is read.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "raster/model.h"
+
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE        // images are decoded by decode_texture, under the texel budget
+#define TINYGLTF_NO_STB_IMAGE_WRITE  // nothing is written
+#define TINYGLTF_NO_EXTERNAL_IMAGE   // an image's URI is resolved below, among the uploads
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wimplicit-fallthrough"
+#endif
+#include <tiny_gltf.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace raster {
+namespace {
+
+[[noreturn]] void gltf_error(const std::string& message, ErrorKind kind = ErrorKind::model) {
+  throw SceneError(kind, "glTF: " + message);
+}
+
+// A URI's file name, percent-decoded, without folders ("textures/Duck%20Diffuse.png" -> "Duck Diffuse.png").
+std::string file_name_of_uri(std::string_view uri) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    auto hex = [](char c) {
+      return c >= '0' && c <= '9' ? c - '0' : (c | 32) >= 'a' && (c | 32) <= 'f' ? (c | 32) - 'a' + 10 : -1;
+    };
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+      out += static_cast<char>(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  const std::size_t slash = out.find_last_of("/\\");
+  return slash == std::string::npos ? out : out.substr(slash + 1);
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return (x >= 'A' && x <= 'Z' ? x + 32 : x) == (y >= 'A' && y <= 'Z' ? y + 32 : y);
+         });
+}
+
+// An uploaded file by a URI's file name, exactly or else differing only in ASCII case.
+const std::string* find_upload(const Uploads& files, const std::string& uri) {
+  const std::string name = file_name_of_uri(uri);
+  if (const auto it = files.find(name); it != files.end()) return &it->second;
+  for (const auto& [key, bytes] : files)
+    if (iequals(key, name)) return &bytes;
+  return nullptr;
+}
+
+std::string upload_names(const Uploads& files) {
+  std::string names;
+  for (const auto& [key, bytes] : files) names += (names.empty() ? "\"" : ", \"") + key + "\"";
+  return names.empty() ? "nothing else" : names;
+}
+
+// tinygltf's file system: the uploads, read-only.
+bool upload_exists(const std::string& path, void* files) {
+  return find_upload(*static_cast<const Uploads*>(files), path) != nullptr;
+}
+std::string same_path(const std::string& path, void*) {
+  return path;
+}
+bool read_upload(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* files) {
+  const std::string* bytes = find_upload(*static_cast<const Uploads*>(files), path);
+  if (!bytes) {
+    if (err) *err += "no uploaded part named \"" + file_name_of_uri(path) + "\"\n";
+    return false;
+  }
+  out->assign(bytes->begin(), bytes->end());
+  return true;
+}
+bool write_nothing(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+  return false;
+}
+
+// tinygltf's image callback: the encoded bytes are kept (width 0 marks them so) and decoded only if a
+// material uses the image. Called for data: URIs and for buffer views, whose range tinygltf does not check.
+bool keep_image(tinygltf::Image* image, const int, std::string* err, std::string*, int, int,
+                const unsigned char* bytes, int size, void* model_being_read) {
+  const auto* model = static_cast<const tinygltf::Model*>(model_being_read);
+  if (image->bufferView >= 0) {
+    const tinygltf::BufferView& view = model->bufferViews[static_cast<std::size_t>(image->bufferView)];
+    const std::size_t buffer_size = model->buffers[static_cast<std::size_t>(view.buffer)].data.size();
+    if (view.byteOffset > buffer_size || view.byteLength > buffer_size - view.byteOffset) {
+      if (err) *err += "an image's buffer view lies outside its buffer\n";
+      return false;
+    }
+  }
+  if (size < 0) return false;
+  image->image.assign(bytes, bytes + size);
+  image->width = image->height = 0;
+  return true;
+}
+
+double srgb_of_linear(double c) {
+  c = std::clamp(c, 0.0, 1.0);
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+}
+
+std::uint8_t unit_byte(double v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+}
+
+using Mat = std::array<double, 16>;  // column-major, as glTF stores it
+
+Mat multiply(const Mat& a, const Mat& b) {
+  Mat r{};
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row)
+      for (int k = 0; k < 4; ++k) r[c * 4 + row] += a[k * 4 + row] * b[c * 4 + k];
+  return r;
+}
+
+Mat local_matrix(const tinygltf::Node& node) {
+  Mat m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  if (node.matrix.size() == 16) {
+    std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
+    return m;
+  }
+  // T * R * S
+  double s[3] = {1, 1, 1}, q[4] = {0, 0, 0, 1}, t[3] = {0, 0, 0};
+  if (node.scale.size() == 3) std::copy(node.scale.begin(), node.scale.end(), s);
+  if (node.rotation.size() == 4) std::copy(node.rotation.begin(), node.rotation.end(), q);
+  if (node.translation.size() == 3) std::copy(node.translation.begin(), node.translation.end(), t);
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),
+                       2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
+                       2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y)};
+  for (int c = 0; c < 3; ++c)
+    for (int row = 0; row < 3; ++row) m[c * 4 + row] = r[c * 3 + row] * s[c];
+  m[12] = t[0], m[13] = t[1], m[14] = t[2];
+  return m;
+}
+
+// One accessor's elements as doubles, after checking that every byte it names lies in its buffer.
+class AccessorView {
+ public:
+  AccessorView(const tinygltf::Model& model, int index, const std::string& what) : what_(what) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
+      gltf_error(what + " names accessor " + std::to_string(index) + ", which does not exist");
+    const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
+    what_ = what + " (accessor " + std::to_string(index) + ")";
+    if (a.sparse.isSparse) gltf_error(what_ + " is sparse; rasterd reads only dense accessors");
+    if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model.bufferViews.size())
+      gltf_error(what_ + " has no buffer view");
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
+      gltf_error(what_ + "'s buffer view names no buffer");
+    const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+    component_ = a.componentType;
+    const int size = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
+    components_ = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+    if (size <= 0 || components_ <= 0 || components_ > 4) gltf_error(what_ + " has an unknown type");
+    normalized_ = a.normalized;
+    count_ = a.count;
+    const std::uint64_t element = static_cast<std::uint64_t>(size) * components_;
+    stride_ = view.byteStride ? view.byteStride : element;
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
+      gltf_error(what_ + "'s buffer view (bytes " + std::to_string(view.byteOffset) + " + " +
+                 std::to_string(view.byteLength) + ") lies outside its buffer of " +
+                 std::to_string(buffer.size()) + " bytes");
+    // count x stride within the view, in 64 bits: count, offset and stride come from the document and
+    // can be anything, so each is bounded by the view before they are multiplied.
+    if (a.byteOffset > view.byteLength || stride_ > view.byteLength + element)
+      gltf_error(what_ + "'s byte offset or stride lies outside its buffer view of " +
+                 std::to_string(view.byteLength) + " bytes");
+    const std::uint64_t end = count_ == 0 ? 0 : a.byteOffset + stride_ * (count_ - 1) + element;
+    if (count_ > view.byteLength || end > view.byteLength || (count_ > 0 && stride_ < element))
+      gltf_error(what_ + " declares " + std::to_string(count_) + " elements of " + std::to_string(element) +
+                 " bytes, which do not fit in its buffer view of " + std::to_string(view.byteLength) +
+                 " bytes");
+    data_ = buffer.data() + view.byteOffset + a.byteOffset;
+  }
+
+  std::size_t count() const { return count_; }
+  int components() const { return components_; }
+  const std::string& what() const { return what_; }
+
+  double get(std::size_t i, int c) const {
+    const unsigned char* p = data_ + i * stride_;
+    switch (component_) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return load<float>(p, c);
+      case TINYGLTF_COMPONENT_TYPE_DOUBLE:
+        return load<double>(p, c);
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return norm(load<std::int8_t>(p, c), 127.0, true);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return norm(load<std::uint8_t>(p, c), 255.0, false);
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return norm(load<std::int16_t>(p, c), 32767.0, true);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return norm(load<std::uint16_t>(p, c), 65535.0, false);
+      case TINYGLTF_COMPONENT_TYPE_INT:
+        return load<std::int32_t>(p, c);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return norm(load<std::uint32_t>(p, c), 4294967295.0, false);
+    }
+    return 0;
+  }
+  // An index: unsigned integers only, as the spec has them.
+  std::uint64_t index(std::size_t i) const {
+    const unsigned char* p = data_ + i * stride_;
+    switch (component_) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return static_cast<std::uint64_t>(load<std::uint8_t>(p, 0));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return static_cast<std::uint64_t>(load<std::uint16_t>(p, 0));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return static_cast<std::uint64_t>(load<std::uint32_t>(p, 0));
+    }
+    gltf_error(what_ + " holds indices of a type that is not an unsigned integer");
+  }
+
+ private:
+  template <typename T>
+  static double load(const unsigned char* p, int c) {
+    T v;
+    std::memcpy(&v, p + c * sizeof(T), sizeof(T));  // glTF buffers are little-endian, as this machine
+    return static_cast<double>(v);
+  }
+  double norm(double v, double max, bool is_signed) const {
+    if (!normalized_) return v;
+    return is_signed ? std::max(v / max, -1.0) : v / max;
+  }
+
+  std::string what_;
+  const unsigned char* data_ = nullptr;
+  std::uint64_t stride_ = 0;
+  std::size_t count_ = 0;
+  int component_ = 0, components_ = 0;
+  bool normalized_ = false;
+};
+
+class Reader {
+ public:
+  Reader(const tinygltf::Model& model, const Limits& limits, const Uploads& files)
+      : model_(model), limits_(limits), files_(files), texture_of_image_(model.images.size(), -2) {}
+
+  Mesh read() {
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+      const int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      if (static_cast<std::size_t>(s) >= model_.scenes.size())
+        gltf_error("the default scene " + std::to_string(s) + " does not exist");
+      roots = model_.scenes[static_cast<std::size_t>(s)].nodes;
+    } else if (model_.nodes.empty()) {  // no scenes and no nodes: every mesh as it is
+      for (std::size_t i = 0; i < model_.meshes.size(); ++i)
+        add_mesh(static_cast<int>(i), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+    } else {  // no scenes: every node that is no other node's child
+      std::vector<bool> child(model_.nodes.size());
+      for (const tinygltf::Node& n : model_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && static_cast<std::size_t>(c) < child.size()) child[static_cast<std::size_t>(c)] = true;
+      for (std::size_t i = 0; i < child.size(); ++i)
+        if (!child[i]) roots.push_back(static_cast<int>(i));
+    }
+    visited_.assign(model_.nodes.size(), false);
+    const Mat identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    // Depth first without recursion: a document's nesting cannot exhaust the stack.
+    std::vector<std::pair<int, Mat>> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, identity});
+    while (!stack.empty()) {
+      auto [index, parent] = stack.back();
+      stack.pop_back();
+      if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
+        gltf_error("a scene or node names node " + std::to_string(index) + ", which does not exist");
+      if (visited_[static_cast<std::size_t>(index)])
+        gltf_error("node " + std::to_string(index) + " is reached twice; a scene's nodes form trees");
+      visited_[static_cast<std::size_t>(index)] = true;
+      const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+      const Mat world = multiply(parent, local_matrix(node));
+      if (node.mesh >= 0) add_mesh(node.mesh, world);
+      for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back({*c, world});
+    }
+    if (mesh_.triangles.empty() && mesh_.segments.empty())
+      gltf_error(
+          "the default scene has no triangles or lines to draw (rasterd draws faces and lines, not "
+          "points)");
+    if (!all_normals_ || mesh_.normals.size() != mesh_.positions.size()) mesh_.normals.clear();
+    if (!mesh_.normals.empty()) mesh_.normal_triangles = mesh_.triangles;
+    if (mesh_.textures.empty()) {
+      mesh_.uvs.clear(), mesh_.uv_triangles.clear(), mesh_.face_textures.clear();
+    } else {
+      mesh_.uv_triangles = mesh_.triangles;
+    }
+    if (any_lit_ == false && any_unlit_) mesh_.shading = Shading::unlit;
+    return std::move(mesh_);
+  }
+
+ private:
+  void add_mesh(int index, const Mat& m) {
+    if (static_cast<std::size_t>(index) >= model_.meshes.size())
+      gltf_error("a node names mesh " + std::to_string(index) + ", which does not exist");
+    // Normals go through the inverse transpose of the upper 3x3; a mirroring transform turns the winding.
+    const double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6], k = m[10];
+    const double det = a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+    const double n[9] = {e * k - f * h, c * h - b * k, b * f - c * e,  // rows of the cofactor matrix
+                         f * g - d * k, a * k - c * g, c * d - a * f,  // = det x the inverse transpose
+                         d * h - e * g, b * g - a * h, a * e - b * d};
+    const bool mirrored = det < 0;
+    const auto& primitives = model_.meshes[static_cast<std::size_t>(index)].primitives;
+    for (std::size_t pi = 0; pi < primitives.size(); ++pi) {
+      const tinygltf::Primitive& p = primitives[pi];
+      const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(pi);
+      if (p.mode == TINYGLTF_MODE_POINTS) continue;  // rasterd draws faces and lines
+      const auto pos_it = p.attributes.find("POSITION");
+      if (pos_it == p.attributes.end()) gltf_error(where + " has no POSITION");
+      const AccessorView positions(model_, pos_it->second, where + " POSITION");
+      if (positions.components() != 3) gltf_error(positions.what() + " is not VEC3");
+      const std::size_t base = mesh_.positions.size();
+      if (base + positions.count() > 3 * static_cast<std::size_t>(limits_.max_obj_faces) + 3)
+        throw SceneError(ErrorKind::limit, "the model has more than " +
+                                               std::to_string(3 * limits_.max_obj_faces) + " vertices");
+      mesh_.positions.reserve(base + positions.count());
+      for (std::size_t i = 0; i < positions.count(); ++i) {
+        const double x = positions.get(i, 0), y = positions.get(i, 1), z = positions.get(i, 2);
+        const Vec3 w{m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13],
+                     m[2] * x + m[6] * y + m[10] * z + m[14]};
+        if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
+          gltf_error(positions.what() + " element " + std::to_string(i) + " is not a finite point");
+        mesh_.positions.push_back(w);
+      }
+      const std::size_t count = positions.count();
+      add_normals(p, where, count, n);
+      const Material material = material_of(p.material, where);
+      add_colours(p, where, count, material.colour);
+      add_uvs(p, where, count, material);
+
+      // The primitive's corner order: its indices, or 0..count-1.
+      std::vector<std::uint32_t> corners;
+      if (p.indices >= 0) {
+        const AccessorView idx(model_, p.indices, where + " indices");
+        corners.resize(idx.count());
+        for (std::size_t i = 0; i < idx.count(); ++i) {
+          const std::uint64_t v = idx.index(i);
+          if (v >= count)
+            gltf_error(idx.what() + " element " + std::to_string(i) + " is " + std::to_string(v) +
+                       ", but the primitive has " + std::to_string(count) + " vertices");
+          corners[i] = static_cast<std::uint32_t>(base + v);
+        }
+      } else {
+        corners.resize(count);
+        for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(base + i);
+      }
+      add_faces(p.mode, corners, mirrored, where);
+    }
+  }
+
+  void add_normals(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
+                   const double* n) {
+    const auto it = p.attributes.find("NORMAL");
+    if (it == p.attributes.end() || !all_normals_) {
+      all_normals_ = false;
+      return;
+    }
+    const AccessorView normals(model_, it->second, where + " NORMAL");
+    if (normals.components() != 3 || normals.count() != count) {
+      all_normals_ = false;
+      return;
+    }
+    mesh_.normals.reserve(mesh_.positions.size());
+    for (std::size_t i = 0; i < count; ++i) {
+      const double x = normals.get(i, 0), y = normals.get(i, 1), z = normals.get(i, 2);
+      mesh_.normals.push_back(
+          {n[0] * x + n[1] * y + n[2] * z, n[3] * x + n[4] * y + n[5] * z, n[6] * x + n[7] * y + n[8] * z});
+    }
+  }
+
+  void add_colours(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
+                   const std::array<double, 4>& factor) {
+    const auto it = p.attributes.find("COLOR_0");
+    std::optional<AccessorView> colours;
+    if (it != p.attributes.end()) {
+      colours.emplace(model_, it->second, where + " COLOR_0");
+      if ((colours->components() != 3 && colours->components() != 4) || colours->count() != count)
+        gltf_error(colours->what() + " is not one VEC3 or VEC4 per vertex");
+    }
+    // glTF colours are linear; the 8-bit colours lit here are sRGB-encoded, as texels are.
+    mesh_.colors.reserve(mesh_.positions.size());
+    for (std::size_t i = 0; i < count; ++i) {
+      double c[4] = {factor[0], factor[1], factor[2], factor[3]};
+      if (colours)
+        for (int k = 0; k < colours->components(); ++k) c[k] *= colours->get(i, k);
+      mesh_.colors.push_back({unit_byte(srgb_of_linear(c[0])), unit_byte(srgb_of_linear(c[1])),
+                              unit_byte(srgb_of_linear(c[2])), unit_byte(c[3])});
+    }
+  }
+
+  struct Material {
+    std::array<double, 4> colour{0.8, 0.8, 0.8, 1};  ///< linear RGBA: baseColorFactor, or the default grey
+    std::int32_t texture = -1;                       ///< index into mesh_.textures, or -1
+    int texcoord = 0;                                ///< which TEXCOORD_n the texture reads
+  };
+
+  Material material_of(int index, const std::string& where) {
+    Material out;
+    if (index < 0) {
+      out.colour = {0.6038, 0.6038, 0.6038, 1};  // linear of sRGB 204: the grey OBJ models get
+      any_lit_ = true;
+      return out;
+    }
+    if (static_cast<std::size_t>(index) >= model_.materials.size())
+      gltf_error(where + " names material " + std::to_string(index) + ", which does not exist");
+    const tinygltf::Material& mat = model_.materials[static_cast<std::size_t>(index)];
+    const auto& pbr = mat.pbrMetallicRoughness;
+    for (std::size_t k = 0; k < 4 && k < pbr.baseColorFactor.size(); ++k)
+      out.colour[k] = pbr.baseColorFactor[k];
+    if (mat.alphaMode != "BLEND") out.colour[3] = 1;
+    (mat.extensions.count("KHR_materials_unlit") ? any_unlit_ : any_lit_) = true;
+    if (pbr.baseColorTexture.index >= 0) {
+      out.texture = texture_of(pbr.baseColorTexture.index, where);
+      out.texcoord = pbr.baseColorTexture.texCoord;
+    }
+    return out;
+  }
+
+  std::int32_t texture_of(int index, const std::string& where) {
+    if (static_cast<std::size_t>(index) >= model_.textures.size())
+      gltf_error(where + "'s material names texture " + std::to_string(index) + ", which does not exist");
+    const tinygltf::Texture& t = model_.textures[static_cast<std::size_t>(index)];
+    if (t.source < 0) return -1;  // an extension's image (KTX2, WebP) rasterd cannot decode: untextured
+    if (static_cast<std::size_t>(t.source) >= model_.images.size())
+      gltf_error("texture " + std::to_string(index) + " names image " + std::to_string(t.source) +
+                 ", which does not exist");
+    std::int32_t& slot = texture_of_image_[static_cast<std::size_t>(t.source)];
+    if (slot != -2) return slot;
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(t.source)];
+    std::string_view bytes(reinterpret_cast<const char*>(image.image.data()), image.image.size());
+    std::string name = image.name.empty() ? "image " + std::to_string(t.source) : image.name;
+    if (image.bufferView < 0 && !image.uri.empty() && image.uri.rfind("data:", 0) != 0) {
+      const std::string* upload = find_upload(files_, image.uri);
+      name = file_name_of_uri(image.uri);
+      if (!upload)
+        gltf_error("the model asks for image \"" + name +
+                   "\", which was not sent; sent: " + upload_names(files_) +
+                   ". Send it as a multipart part with that file name (curl -F 'file=@" + name + "')");
+      bytes = *upload;
+    }
+    Texture texture = decode_texture(bytes, name, texel_budget_);
+    texel_budget_ -= std::int64_t{texture.width} * texture.height;
+    if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < model_.samplers.size())
+      texture.clamp =
+          model_.samplers[static_cast<std::size_t>(t.sampler)].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+    slot = static_cast<std::int32_t>(mesh_.textures.size());
+    mesh_.textures.push_back(std::move(texture));
+    return slot;
+  }
+
+  void add_uvs(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
+               const Material& material) {
+    // One uv per position whatever the primitive; (0, 0) where it has none.
+    const std::size_t base = mesh_.uvs.size();
+    mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
+    primitive_texture_ = material.texture;
+    if (material.texture < 0) return;
+    const auto it = p.attributes.find("TEXCOORD_" + std::to_string(material.texcoord));
+    if (it == p.attributes.end()) {
+      primitive_texture_ = -1;
+      return;
+    }
+    const AccessorView uv(model_, it->second, where + " TEXCOORD_" + std::to_string(material.texcoord));
+    if (uv.components() != 2 || uv.count() != count) gltf_error(uv.what() + " is not one VEC2 per vertex");
+    for (std::size_t i = 0; i < count;
+         ++i)  // glTF's v runs down from the image's top; ours up from its bottom
+      mesh_.uvs[base + i] = {static_cast<float>(uv.get(i, 0)), static_cast<float>(1 - uv.get(i, 1))};
+  }
+
+  void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, bool mirrored) {
+    if (mesh_.triangles.size() >= static_cast<std::size_t>(limits_.max_obj_faces))
+      throw SceneError(ErrorKind::limit,
+                       "the model has more than " + std::to_string(limits_.max_obj_faces) + " faces");
+    mesh_.triangles.push_back(mirrored ? std::array{a, c, b} : std::array{a, b, c});
+    mesh_.face_textures.push_back(primitive_texture_);
+  }
+
+  void add_faces(int mode, const std::vector<std::uint32_t>& v, bool mirrored, const std::string& where) {
+    const std::size_t n = v.size();
+    switch (mode) {
+      case TINYGLTF_MODE_TRIANGLES:
+        for (std::size_t i = 0; i + 2 < n; i += 3) add_triangle(v[i], v[i + 1], v[i + 2], mirrored);
+        break;
+      case TINYGLTF_MODE_TRIANGLE_STRIP:  // every other triangle turned back to the strip's winding
+        for (std::size_t i = 0; i + 2 < n; ++i)
+          add_triangle(v[i], v[i + 1 + (i & 1)], v[i + 2 - (i & 1)], mirrored);
+        break;
+      case TINYGLTF_MODE_TRIANGLE_FAN:
+        for (std::size_t i = 1; i + 1 < n; ++i) add_triangle(v[0], v[i], v[i + 1], mirrored);
+        break;
+      case TINYGLTF_MODE_LINE:
+        for (std::size_t i = 0; i + 1 < n; i += 2) mesh_.segments.push_back({v[i], v[i + 1]});
+        break;
+      case TINYGLTF_MODE_LINE_STRIP:
+      case TINYGLTF_MODE_LINE_LOOP:
+        for (std::size_t i = 0; i + 1 < n; ++i) mesh_.segments.push_back({v[i], v[i + 1]});
+        if (mode == TINYGLTF_MODE_LINE_LOOP && n > 2) mesh_.segments.push_back({v[n - 1], v[0]});
+        break;
+      default:
+        gltf_error(where + " has mode " + std::to_string(mode) + ", which glTF does not define");
+    }
+    if (mesh_.segments.size() > 3 * static_cast<std::size_t>(limits_.max_obj_faces))
+      throw SceneError(ErrorKind::limit,
+                       "the model has more than " + std::to_string(3 * limits_.max_obj_faces) + " lines");
+  }
+
+  const tinygltf::Model& model_;
+  const Limits& limits_;
+  const Uploads& files_;
+  Mesh mesh_;
+  std::vector<bool> visited_;
+  std::vector<std::int32_t> texture_of_image_;  ///< per image: index into mesh_.textures, -1 none, -2 not yet
+  std::int64_t texel_budget_ = limits_.max_texture_pixels;
+  std::int32_t primitive_texture_ = -1;
+  bool all_normals_ = true, any_lit_ = false, any_unlit_ = false;
+};
+
+}  // namespace
+
+std::vector<std::string> gltf_files(std::string_view bytes) {
+  std::vector<std::string> names;
+  if (bytes.starts_with("glTF")) {  // a GLB: the JSON chunk follows the 12-byte header and its 8-byte head
+    if (bytes.size() < 20) return names;
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    bytes = bytes.substr(20, std::min<std::size_t>(length, bytes.size() - 20));
+  }
+  const nlohmann::json doc = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+  if (!doc.is_object()) return names;
+  for (const char* list : {"buffers", "images"}) {
+    const auto it = doc.find(list);
+    if (it == doc.end() || !it->is_array()) continue;
+    for (const nlohmann::json& item : *it) {
+      if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
+      const std::string& uri = item["uri"].get_ref<const std::string&>();
+      if (uri.rfind("data:", 0) == 0) continue;
+      std::string name = file_name_of_uri(uri);
+      if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+  }
+  return names;
+}
+
+Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& files) {
+  if (bytes.size() > 0xFFFFFFFFu) gltf_error("the model is over 4 GB", ErrorKind::limit);
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&keep_image, &model);
+  loader.SetFsCallbacks({&upload_exists, &same_path, &read_upload, &write_nothing,
+                         const_cast<Uploads*>(&files)});  // read only: the callbacks never write
+  std::string err, warn;
+  const bool binary = bytes.starts_with("glTF");
+  if (binary && bytes.size() >= 8 && bytes[4] != 2)
+    gltf_error("the file is a GLB of version " + std::to_string(static_cast<unsigned char>(bytes[4])) +
+               "; rasterd reads glTF 2.0 (Blender and the glTF tools convert older files)");
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                                       reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                       static_cast<unsigned int>(bytes.size()))
+                         : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                                      static_cast<unsigned int>(bytes.size()), "");
+  if (!ok) {
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    for (char& c : err)
+      if (c == '\n') c = ';';
+    if (bytes.find("KHR_draco_mesh_compression") != std::string_view::npos)
+      gltf_error(
+          "the model's meshes are Draco-compressed (KHR_draco_mesh_compression), which rasterd does not "
+          "read; export it without compression");
+    gltf_error("the model could not be read: " +
+               (err.empty() ? std::string("tinygltf gave no reason") : err));
+  }
+  if (!model.asset.version.starts_with("2"))
+    gltf_error("the document is glTF " + model.asset.version.substr(0, 20) +
+               "; rasterd reads glTF 2.0 (Blender and the glTF tools convert older files)");
+  return Reader(model, limits, files).read();
+}
+
+}  // namespace raster

@@ -1,0 +1,417 @@
+// PLY models (Turk's polygon file format, as scanners and MeshLab write it): a text header of elements
+// and their properties, then the data in ASCII or binary of either byte order. The vertex element gives
+// positions and, when present, normals and colours; the face element gives index lists. Every count the
+// header declares is checked against the bytes that are left before anything is sized from it.
+#include <algorithm>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "raster/model.h"
+
+namespace raster {
+namespace {
+
+[[noreturn]] void ply_error(const std::string& message, std::size_t line = 0, std::size_t byte = 0) {
+  throw SceneError(ErrorKind::model, "PLY: " + message, ErrorLocation{"", byte, line});
+}
+
+enum class Type : std::uint8_t { i8, u8, i16, u16, i32, u32, f32, f64 };
+constexpr int kSize[] = {1, 1, 2, 2, 4, 4, 4, 8};
+
+bool type_named(std::string_view name, Type& type) {
+  static constexpr std::pair<std::string_view, Type> kTypes[] = {
+      {"char", Type::i8},   {"int8", Type::i8},     {"uchar", Type::u8},   {"uint8", Type::u8},
+      {"short", Type::i16}, {"int16", Type::i16},   {"ushort", Type::u16}, {"uint16", Type::u16},
+      {"int", Type::i32},   {"int32", Type::i32},   {"uint", Type::u32},   {"uint32", Type::u32},
+      {"float", Type::f32}, {"float32", Type::f32}, {"double", Type::f64}, {"float64", Type::f64}};
+  for (const auto& [n, t] : kTypes)
+    if (n == name) return type = t, true;
+  return false;
+}
+
+// What the reader does with a property of the vertex or face element.
+enum class Role : std::uint8_t { none, x, y, z, nx, ny, nz, red, green, blue, alpha, indices };
+
+struct Property {
+  std::string name;
+  Type type = Type::f32;
+  bool list = false;
+  Type count_type = Type::u8;  ///< lists: the type of the length before the items
+  Role role = Role::none;
+};
+
+struct Element {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<Property> properties;
+  std::size_t line = 0;  ///< the header line that declares it
+};
+
+enum class Encoding : std::uint8_t { ascii, little, big };
+
+struct Header {
+  Encoding encoding = Encoding::ascii;
+  std::vector<Element> elements;
+  std::size_t data = 0;   ///< byte offset of the first data byte
+  std::size_t lines = 0;  ///< lines in the header, for ASCII data's line numbers
+};
+
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+Role role_of(std::string_view element, std::string_view property) {
+  if (element == "vertex") {
+    static constexpr std::pair<std::string_view, Role> kRoles[] = {{"x", Role::x},
+                                                                   {"y", Role::y},
+                                                                   {"z", Role::z},
+                                                                   {"nx", Role::nx},
+                                                                   {"ny", Role::ny},
+                                                                   {"nz", Role::nz},
+                                                                   {"red", Role::red},
+                                                                   {"green", Role::green},
+                                                                   {"blue", Role::blue},
+                                                                   {"alpha", Role::alpha},
+                                                                   {"r", Role::red},
+                                                                   {"g", Role::green},
+                                                                   {"b", Role::blue},
+                                                                   {"diffuse_red", Role::red},
+                                                                   {"diffuse_green", Role::green},
+                                                                   {"diffuse_blue", Role::blue}};
+    for (const auto& [n, r] : kRoles)
+      if (n == property) return r;
+  }
+  if (element == "face" && (property == "vertex_indices" || property == "vertex_index")) return Role::indices;
+  return Role::none;
+}
+
+Header read_header(std::string_view bytes) {
+  Header h;
+  std::size_t at = 0;
+  bool format_seen = false;
+  while (true) {
+    const std::size_t eol = bytes.find('\n', at);
+    if (eol == std::string_view::npos) ply_error("the header has no \"end_header\" line", h.lines + 1);
+    const std::string_view line = bytes.substr(at, eol - at);
+    at = eol + 1;
+    ++h.lines;
+    const std::vector<std::string_view> w = split(line);
+    if (h.lines == 1) continue;  // "ply", which sniff_model or the caller checked
+    if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
+    if (w[0] == "end_header") break;
+    if (w[0] == "format") {
+      if (w.size() < 3 || w[2] != "1.0") ply_error("expected \"format <encoding> 1.0\"", h.lines);
+      if (w[1] == "ascii")
+        h.encoding = Encoding::ascii;
+      else if (w[1] == "binary_little_endian")
+        h.encoding = Encoding::little;
+      else if (w[1] == "binary_big_endian")
+        h.encoding = Encoding::big;
+      else
+        ply_error("unknown format \"" + std::string(w[1].substr(0, 40)) +
+                      "\"; expected ascii, binary_little_endian or binary_big_endian",
+                  h.lines);
+      format_seen = true;
+    } else if (w[0] == "element") {
+      std::uint64_t count = 0;
+      if (w.size() != 3 ||
+          std::from_chars(w[2].data(), w[2].data() + w[2].size(), count).ptr != w[2].data() + w[2].size())
+        ply_error("expected \"element <name> <count>\"", h.lines);
+      h.elements.push_back({std::string(w[1]), count, {}, h.lines});
+    } else if (w[0] == "property") {
+      if (h.elements.empty()) ply_error("a property before any element", h.lines);
+      Element& e = h.elements.back();
+      Property p;
+      bool ok = false;
+      if (w.size() == 5 && w[1] == "list") {
+        p.list = true;
+        ok = type_named(w[2], p.count_type) && type_named(w[3], p.type);
+        if (ok && (p.count_type == Type::f32 || p.count_type == Type::f64))
+          ply_error("a list's length must have an integer type, not \"" + std::string(w[2]) + "\"", h.lines);
+        p.name = w[4];
+      } else if (w.size() == 3) {
+        ok = type_named(w[1], p.type);
+        p.name = w[2];
+      }
+      if (!ok)
+        ply_error("expected \"property <type> <name>\" or \"property list <type> <type> <name>\"", h.lines);
+      p.role = role_of(e.name, p.name);
+      if ((p.role == Role::indices) != p.list) p.role = Role::none;  // a scalar "vertex_indices", a list "x"
+      e.properties.push_back(std::move(p));
+    }
+    // Any other line is passed over, as other readers do: old Blender wrote "Created by Blender3D 247 - ..."
+    // without "comment".
+  }
+  if (!format_seen) ply_error("the header has no \"format\" line", 2);
+  h.data = at;
+  return h;
+}
+
+// The data of the elements, one value at a time, in the file's encoding.
+class Values {
+ public:
+  Values(std::string_view bytes, const Header& h)
+      : bytes_(bytes), at_(h.data), line_(h.lines + 1), enc_(h.encoding) {}
+
+  std::size_t left() const { return bytes_.size() - at_; }
+  bool ascii() const { return enc_ == Encoding::ascii; }
+  std::size_t line() const { return line_; }
+  std::size_t byte() const { return at_ + 1; }
+
+  double read(Type t) { return ascii() ? read_text() : read_binary(t); }
+
+  // Skips n values of type t (binary: without looking at them).
+  void skip(Type t, std::uint64_t n) {
+    if (!ascii()) {
+      at_ +=
+          static_cast<std::size_t>(n) * kSize[static_cast<int>(t)];  // checked against left() by the caller
+      return;
+    }
+    for (std::uint64_t i = 0; i < n; ++i) read_text();
+  }
+
+ private:
+  double read_binary(Type t) {
+    const int size = kSize[static_cast<int>(t)];
+    if (left() < static_cast<std::size_t>(size)) ply_error("the data ends early", 0, bytes_.size());
+    unsigned char b[8];
+    std::memcpy(b, bytes_.data() + at_, size);
+    at_ += size;
+    if ((enc_ == Encoding::big) != (std::endian::native == std::endian::big)) std::reverse(b, b + size);
+    switch (t) {
+      case Type::i8:
+        return static_cast<std::int8_t>(b[0]);
+      case Type::u8:
+        return b[0];
+      case Type::i16:
+        return load<std::int16_t>(b);
+      case Type::u16:
+        return load<std::uint16_t>(b);
+      case Type::i32:
+        return load<std::int32_t>(b);
+      case Type::u32:
+        return load<std::uint32_t>(b);
+      case Type::f32:
+        return load<float>(b);
+      case Type::f64:
+        return load<double>(b);
+    }
+    return 0;
+  }
+  template <typename T>
+  static double load(const unsigned char* b) {
+    T v;
+    std::memcpy(&v, b, sizeof v);
+    return static_cast<double>(v);
+  }
+  double read_text() {
+    while (at_ < bytes_.size()) {
+      const char c = bytes_[at_];
+      if (c == '\n')
+        ++line_;
+      else if (c != ' ' && c != '\t' && c != '\r')
+        break;
+      ++at_;
+    }
+    const std::size_t start = at_;
+    while (at_ < bytes_.size() && bytes_[at_] != ' ' && bytes_[at_] != '\t' && bytes_[at_] != '\r' &&
+           bytes_[at_] != '\n')
+      ++at_;
+    std::string_view w = bytes_.substr(start, at_ - start);
+    if (w.empty()) ply_error("the data ends early", line_);
+    if (w.size() > 1 && w[0] == '+') w.remove_prefix(1);
+    double v = 0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size())
+      ply_error("expected a number, got \"" + std::string(w.substr(0, 40)) + "\"", line_);
+    return v;
+  }
+
+  std::string_view bytes_;
+  std::size_t at_;
+  std::size_t line_;
+  Encoding enc_;
+};
+
+// The fewest bytes one instance of `e` takes: binary, its scalars and each list's length; ASCII, one
+// character and a separator per value.
+std::uint64_t min_bytes(const Element& e, Encoding enc) {
+  std::uint64_t n = 0;
+  for (const Property& p : e.properties)
+    n += enc == Encoding::ascii ? 2 : kSize[static_cast<int>(p.list ? p.count_type : p.type)];
+  return n;
+}
+
+std::uint8_t colour_byte(double v, Type t) {
+  if (!std::isfinite(v)) return 0;
+  const double unit = t == Type::f32 || t == Type::f64 ? v : t == Type::u16 ? v / 65535 : v / 255;
+  return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255));
+}
+
+// OBJ's triangulation (tinyobjloader's): a quad on its shorter diagonal, a larger polygon as a fan.
+void triangulate(const std::vector<std::uint32_t>& c, const std::vector<Vec3>& positions,
+                 std::vector<std::array<std::uint32_t, 3>>& out) {
+  if (c.size() == 4) {
+    auto d2 = [&](std::uint32_t a, std::uint32_t b) {
+      const Vec3 &p = positions[a], &q = positions[b];
+      return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y) + (q.z - p.z) * (q.z - p.z);
+    };
+    if (d2(c[0], c[2]) < d2(c[1], c[3])) {
+      out.push_back({c[0], c[1], c[2]});
+      out.push_back({c[0], c[2], c[3]});
+    } else {
+      out.push_back({c[0], c[1], c[3]});
+      out.push_back({c[1], c[2], c[3]});
+    }
+    return;
+  }
+  for (std::size_t k = 1; k + 1 < c.size(); ++k) out.push_back({c[0], c[k], c[k + 1]});
+}
+
+}  // namespace
+
+Mesh parse_ply(std::string_view bytes, const Limits& limits) {
+  if (!(bytes.starts_with("ply\n") || bytes.starts_with("ply\r\n")))
+    ply_error("the file does not start with \"ply\" and a line break", 1);
+  const Header h = read_header(bytes);
+  const std::size_t data_bytes = bytes.size() - h.data;
+  const Element* vertex = nullptr;
+  const Element* face = nullptr;
+  for (const Element& e : h.elements) {
+    // Checked before anything is sized from a count: a 100-byte file can declare 2^60 vertices.
+    const std::uint64_t least = min_bytes(e, h.encoding);
+    if (e.count > 0 && least > 0 && e.count > (data_bytes + 1) / least)
+      ply_error("element \"" + e.name + "\" declares " + std::to_string(e.count) + " entries, but the " +
+                    std::to_string(data_bytes) + " bytes of data after the header cannot hold them",
+                e.line);
+    if (e.name == "vertex") vertex = &e;
+    if (e.name == "face") face = &e;
+  }
+  if (!vertex || vertex->count == 0) ply_error("the model has no vertices (no \"element vertex\")");
+  bool has[12] = {};
+  for (const Property& p : vertex->properties) has[static_cast<int>(p.role)] = true;
+  if (!has[int(Role::x)] || !has[int(Role::y)] || !has[int(Role::z)])
+    ply_error("the vertex element has no x, y and z properties", vertex->line);
+  if (!face || face->count == 0)
+    ply_error("the model has no faces (no \"element face\"); rasterd draws faces");
+  if (face->count > static_cast<std::uint64_t>(limits.max_obj_faces))
+    throw SceneError(ErrorKind::limit,
+                     "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+  if (std::none_of(face->properties.begin(), face->properties.end(),
+                   [](const Property& p) { return p.role == Role::indices; }))
+    ply_error("the face element has no \"vertex_indices\" list", face->line);
+  const bool normals = has[int(Role::nx)] && has[int(Role::ny)] && has[int(Role::nz)];
+  const bool colours = has[int(Role::red)] && has[int(Role::green)] && has[int(Role::blue)];
+
+  Mesh mesh;
+  Values in(bytes, h);
+  std::vector<std::uint32_t> corners;
+  for (const Element& e : h.elements) {
+    if (&e == vertex) {
+      mesh.positions.resize(e.count);
+      if (normals) mesh.normals.resize(e.count);
+      if (colours) mesh.colors.resize(e.count);
+    } else if (&e == face) {
+      if (mesh.positions.empty())  // quads are split by their corners' positions, which must be known
+        ply_error("the face element comes before the vertex element; write the vertices first", e.line);
+      mesh.triangles.reserve(e.count);
+    }
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      Vec3 pos, normal;
+      Rgba8 colour;
+      for (const Property& p : e.properties) {
+        if (p.list) {
+          const double n = in.read(p.count_type);
+          const std::uint64_t items = n >= 0 && n < 4294967296.0 ? static_cast<std::uint64_t>(n) : UINT64_MAX;
+          if (items == UINT64_MAX || (!in.ascii() && items * kSize[int(p.type)] > in.left()) ||
+              (in.ascii() && items > in.left()))
+            ply_error("a list of " + std::to_string(n) + " items in " + e.name + " " + std::to_string(i) +
+                          " is longer than the data left",
+                      in.line(), in.ascii() ? 0 : in.byte());
+          if (p.role != Role::indices || &e != face) {
+            in.skip(p.type, items);
+            continue;
+          }
+          corners.clear();
+          for (std::uint64_t k = 0; k < items; ++k) {
+            const double v = in.read(p.type);
+            if (!(v >= 0 && v < static_cast<double>(vertex->count)) || v != std::floor(v))
+              ply_error("face " + std::to_string(i) + " refers to vertex " + std::to_string(v) +
+                            ", but there are " + std::to_string(vertex->count),
+                        in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
+            corners.push_back(static_cast<std::uint32_t>(v));
+          }
+          if (corners.size() >= 3) {
+            if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_obj_faces))
+              throw SceneError(ErrorKind::limit,
+                               "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+            triangulate(corners, mesh.positions, mesh.triangles);
+          }
+          continue;
+        }
+        const double v = in.read(p.type);
+        if (&e != vertex) continue;
+        switch (p.role) {
+          case Role::x:
+            pos.x = v;
+            break;
+          case Role::y:
+            pos.y = v;
+            break;
+          case Role::z:
+            pos.z = v;
+            break;
+          case Role::nx:
+            normal.x = v;
+            break;
+          case Role::ny:
+            normal.y = v;
+            break;
+          case Role::nz:
+            normal.z = v;
+            break;
+          case Role::red:
+            colour.r = colour_byte(v, p.type);
+            break;
+          case Role::green:
+            colour.g = colour_byte(v, p.type);
+            break;
+          case Role::blue:
+            colour.b = colour_byte(v, p.type);
+            break;
+          case Role::alpha:
+            colour.a = colour_byte(v, p.type);
+            break;
+          default:
+            break;
+        }
+      }
+      if (&e == vertex) {
+        if (!std::isfinite(pos.x) || !std::isfinite(pos.y) || !std::isfinite(pos.z))
+          ply_error("vertex " + std::to_string(i) + " has a coordinate that is not a finite number",
+                    in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
+        mesh.positions[i] = pos;
+        if (normals) mesh.normals[i] = normal;
+        if (colours) mesh.colors[i] = colour;
+      }
+    }
+  }
+  if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");
+  // A face's corners are vertices, so normals are indexed as positions are.
+  if (normals) mesh.normal_triangles = mesh.triangles;
+  return mesh;
+}
+
+}  // namespace raster
