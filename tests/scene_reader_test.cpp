@@ -76,8 +76,14 @@ class DocumentGenerator {
   std::string primitive() {
     std::vector<std::string> fields;
     const int kind = integer_value(0, 4);
-    if (kind == 4) {  // an OBJ model
+    if (kind == 4 && chance(0.5)) {  // an OBJ model
       fields = {member("type", "\"obj\""), member("data", "\"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n\"")};
+    } else if (kind == 4) {  // a model in another format, named or told by its text
+      fields = {member("type", "\"model\""),
+                member("data",
+                       "\"solid s\\nfacet normal 0 0 1 outer loop vertex 0 0 0 vertex 1 0 0 vertex 0 1 "
+                       "0 endloop endfacet\\nendsolid\\n\"")};
+      if (chance(0.5)) fields.push_back(member("format", "\"stl\""));
     } else if (kind == 3) {  // a mesh
       const int positions = integer_value(3, 6);
       std::vector<std::string> p, idx;

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <initializer_list>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_set>
 #include <vector>
 
+#include "raster/model.h"
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_dom.h"
@@ -562,14 +564,23 @@ Mesh read_mesh(const json& v, const Path& pointer, const Scene& scene, const Lim
 }
 
 std::string located(const SceneError& e) {
-  return e.where().line ? std::string(e.what()) + " (line " + std::to_string(e.where().line) + ")" : e.what();
+  if (e.where().line) return std::string(e.what()) + " (line " + std::to_string(e.where().line) + ")";
+  if (e.where().byte && e.kind() != ErrorKind::encoding)
+    return std::string(e.what()) + " (byte " + std::to_string(e.where().byte) + " of the model)";
+  return e.what();
 }
 
 Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limits& limits,
               const Uploads& uploads) {
-  check_keys(v, pointer,
-             {"type", "data", "source", "mtl", "mtl_source", "textures", "color", "shading", "wireframe",
-              "edges", "cull", "transform"});
+  const bool obj = v.at("type") == "obj";
+  if (obj)
+    check_keys(v, pointer,
+               {"type", "data", "source", "mtl", "mtl_source", "textures", "color", "shading", "wireframe",
+                "edges", "cull", "transform"});
+  else
+    check_keys(v, pointer,
+               {"type", "data", "source", "format", "mtl", "mtl_source", "textures", "color", "shading",
+                "wireframe", "edges", "cull", "transform"});
   auto text_of = [&](const char* inline_key, const char* source_key, bool required) -> std::string_view {
     auto data = v.find(inline_key);
     auto source = v.find(source_key);
@@ -591,7 +602,10 @@ Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limi
       return part->second;
     }
     if (required)
-      invalid(pointer, "an obj needs \"data\" (OBJ text) or \"source\" (the name of an uploaded part)");
+      invalid(pointer,
+              obj ? "an obj needs \"data\" (OBJ text) or \"source\" (the name of an uploaded part)"
+                  : "a model needs \"data\" (the model's text) or \"source\" (the name of an uploaded "
+                    "part)");
     return {};
   };
   const std::string_view obj_text = text_of("data", "source", true);
@@ -613,7 +627,18 @@ Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limi
   model_limits.max_texture_pixels = texels_left(scene, limits);
   Mesh mesh;
   try {
-    mesh = parse_obj(obj_text, mtl_text, model_limits, v.contains("textures") ? inline_images : uploads);
+    std::optional<ModelFormat> hint;
+    if (obj) hint = ModelFormat::obj;
+    if (auto it = v.find("format"); it != v.end()) {
+      const Path fp(pointer, "format");
+      const char* expected = "expected \"obj\", \"stl\", \"ply\", \"gltf\" or \"glb\"";
+      if (!it->is_string()) invalid(fp, std::string(expected) + ", got " + type_name(*it));
+      hint = format_named(it->get_ref<const std::string&>());
+      if (!hint || it->get_ref<const std::string&>() != format_name(*hint))
+        invalid(fp, std::string(expected) + ", got " + it->dump());
+    }
+    mesh =
+        parse_model(obj_text, hint, model_limits, v.contains("textures") ? inline_images : uploads, mtl_text);
   } catch (const SceneError& e) {
     // An encoding error keeps its byte: the offset into the model's own text, which the message names.
     const std::size_t byte = e.kind() == ErrorKind::encoding ? e.where().byte : 0;
@@ -684,14 +709,15 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
   if (!v.is_object()) invalid(pointer, std::string("expected a primitive object, got ") + type_name(v));
   auto type_it = v.find("type");
   if (type_it == v.end())
-    invalid(pointer, "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\")");
+    invalid(pointer,
+            "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\")");
   const Path type_pointer(pointer, "type");
   if (!type_it->is_string())
     invalid(type_pointer, std::string("expected a string, got ") + type_name(*type_it));
   const std::string& type = type_it->get_ref<const std::string&>();
 
   Primitive p;
-  if (type == "mesh" || type == "obj") {
+  if (type == "mesh" || type == "obj" || type == "model") {
     p.kind = PrimitiveKind::mesh;
     p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
     scene.meshes.push_back(type == "mesh" ? read_mesh(v, pointer, scene, limits, uploads)
@@ -709,8 +735,9 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
     p.kind = PrimitiveKind::polyline;
     check_keys(v, pointer, {"type", "points", "color", "colors", "closed", "width"});
   } else {
-    invalid(type_pointer, "unknown primitive type \"" + type +
-                              "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\" or \"obj\"");
+    invalid(type_pointer,
+            "unknown primitive type \"" + type +
+                "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\"");
   }
 
   auto points_it = v.find("points");

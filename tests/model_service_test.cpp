@@ -1,0 +1,128 @@
+// The model formats through the service (issue 32): raw bodies, multipart parts and scene references work
+// for every format, told by the bytes, then the part's file name, then the Content-Type or ?format=; a body
+// in no format is a 422 that names the formats.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "model_files.h"
+#include "support.h"
+#include "test_server.h"
+
+namespace {
+
+const char* kQuery = "/render?width=64&height=64&view=iso";
+
+std::string problem_detail(const httplib::Result& r) {
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
+  return nlohmann::json::parse(r->body).value("detail", "");
+}
+
+TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
+  test::TestServer server;
+  const test::TestMesh m = test::make_mesh(5);
+  // STL is drawn flat; the formats whose faces share corners are drawn smooth: one picture for each group.
+  struct Body {
+    const char* name;
+    std::string bytes;
+    const char* type;
+    bool flat;
+  };
+  const Body bodies[] = {{"binary STL", test::write_stl_binary(m), "application/octet-stream", true},
+                         {"ASCII STL", test::write_stl_ascii(m), "text/plain", true},
+                         {"binary STL with no type", test::write_stl_binary(m), "", true},
+                         {"OBJ", test::write_obj(m), "model/obj", false},
+                         {"PLY", test::write_ply_binary(m, false), "application/octet-stream", false},
+                         {"GLB", test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary", false}};
+  std::string flat, smooth;
+  for (const Body& b : bodies) {
+    SCOPED_TRACE(b.name);
+    auto r = server.client().Post(kQuery, b.bytes, b.type);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+    std::string& want = b.flat ? flat : smooth;
+    if (want.empty()) want = r->body;
+    EXPECT_EQ(r->body, want);
+  }
+  EXPECT_NE(flat, smooth);
+}
+
+// A glTF document is JSON, and model/gltf+json ends in "+json": it is still a model, not a scene.
+TEST(ModelService, AGltfDocumentIsAModelWhateverItsJsonContentType) {
+  test::TestServer server;
+  const test::TestMesh m = test::make_mesh(5);
+  const test::Gltf g = test::make_gltf(m, "data:application/octet-stream;base64,", false);
+  const std::string doc =
+      test::make_gltf(m, "data:application/octet-stream;base64," + test::base64(g.buffer), false).json;
+  for (const char* type : {"model/gltf+json", "application/json", "text/plain"}) {
+    SCOPED_TRACE(type);
+    auto r = server.client().Post(kQuery, doc, type);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << r->body;
+  }
+}
+
+TEST(ModelService, MultipartPartsOfEveryFormatAreFoundByFileName) {
+  test::TestServer server;
+  const test::TestMesh m = test::make_mesh(5);
+  const test::Gltf g = test::make_gltf(m, "torus.bin", true);
+  // A .gltf and the buffer its URI names, sent as a folder's files are (no part named "model").
+  auto gltf = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"files", g.json, "torus.gltf", "model/gltf+json"},
+                                              {"files", g.buffer, "torus.bin", "application/octet-stream"}});
+  ASSERT_TRUE(gltf);
+  EXPECT_EQ(gltf->status, 200) << gltf->body;
+  auto glb = server.client().Post(kQuery, test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary");
+  ASSERT_TRUE(glb);
+  EXPECT_EQ(gltf->body, glb->body);  // the same mesh, however its buffer travelled
+
+  auto ply = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"scan", test::write_ply_ascii(m), "scan.PLY", ""}});
+  ASSERT_TRUE(ply);
+  EXPECT_EQ(ply->status, 200) << ply->body;
+
+  // A scene that names the part: "model" with or without a format, and the old "obj" type.
+  const std::string scene =
+      R"({"width": 64, "height": 64, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "part"}]})";
+  auto referenced = server.client().Post(
+      "/render", httplib::MultipartFormDataItems{{"scene", scene, "scene.json", "application/json"},
+                                                 {"part", test::write_ply_ascii(m), "", ""}});
+  ASSERT_TRUE(referenced);
+  EXPECT_EQ(referenced->status, 200) << referenced->body;
+  EXPECT_EQ(referenced->body, ply->body);
+}
+
+// Bytes that do not tell their format: the part's file name does, then the request's ?format=.
+TEST(ModelService, TheFileNameThenTheFormatParameterNameWhatTheBytesDoNot) {
+  test::TestServer server;
+  const test::TestMesh m = test::make_mesh(5);
+  std::string truncated = test::write_stl_binary(m);
+  truncated.resize(truncated.size() - 7);  // no longer 84 + 50n bytes, so no format by its bytes
+  auto unknown = server.client().Post(kQuery, truncated, "application/octet-stream");
+  ASSERT_TRUE(unknown);
+  EXPECT_EQ(unknown->status, 422);
+  const std::string words = problem_detail(unknown);
+  for (const char* format : {"OBJ", "STL", "PLY", "glTF"})
+    EXPECT_NE(words.find(format), std::string::npos) << words;
+
+  auto by_name =
+      server.client().Post(kQuery, httplib::MultipartFormDataItems{{"model", truncated, "part.stl", ""}});
+  auto by_param =
+      server.client().Post(std::string(kQuery) + "&format=stl", truncated, "application/octet-stream");
+  auto by_type = server.client().Post(kQuery, truncated, "model/stl");
+  for (const auto* r : {&by_name, &by_param, &by_type}) {
+    ASSERT_TRUE(*r);
+    EXPECT_EQ((*r)->status, 422);
+    EXPECT_NE(problem_detail(*r).find("binary STL of"), std::string::npos) << (*r)->body;  // read as STL
+  }
+  auto bad =
+      server.client().Post(std::string(kQuery) + "&format=step", truncated, "application/octet-stream");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_NE(problem_detail(bad).find("query parameter \"format\""), std::string::npos) << bad->body;
+}
+
+}  // namespace

@@ -1,0 +1,279 @@
+// The model formats (issue 32): one generated mesh written as OBJ, STL (ASCII, binary), PLY (ASCII, binary
+// of both byte orders) and glTF (.gltf with an embedded or uploaded buffer, .glb) renders to the same
+// pixels; each reader's counts are checked against its bytes before anything is sized; the formats are
+// told by their bytes; and the real models of Debian's assimp-testmodels each render or get a SceneError.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "model_files.h"
+#include "support.h"
+
+namespace {
+
+using raster::ErrorKind;
+using raster::ModelFormat;
+using raster::SceneError;
+
+using test::Gltf;
+using test::TestMesh;
+using namespace test;  // the writers of model_files.h
+
+raster::Image render_model(const std::string& bytes, const std::string& shading, raster::Uploads files = {},
+                           const std::string& extra = "") {
+  files["m"] = bytes;
+  const raster::Scene scene = raster::parse_scene(
+      R"({"width": 96, "height": 80, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "m",
+          "shading": ")" +
+          shading + "\"" + extra + "}]}",
+      {}, files);
+  return test::render(scene);
+}
+
+struct Written {
+  const char* name;
+  std::string bytes;
+  raster::Uploads files;
+  ModelFormat format;
+  bool shares_corners;  // STL repeats each corner per facet
+};
+
+std::vector<Written> every_format(const TestMesh& m) {
+  const Gltf embedded = make_gltf(m, "data:application/octet-stream;base64,", false);
+  Gltf with_data = make_gltf(m, "data:application/octet-stream;base64," + base64(embedded.buffer), false);
+  const Gltf uploaded = make_gltf(m, "buffers/torus%20data.bin", true);
+  return {
+      {"OBJ", write_obj(m), {}, ModelFormat::obj, true},
+      {"ASCII STL", write_stl_ascii(m), {}, ModelFormat::stl, false},
+      {"binary STL", write_stl_binary(m), {}, ModelFormat::stl, false},
+      // Some binary writers start the header with "solid": still binary by its size.
+      {"binary STL, \"solid\" header",
+       write_stl_binary(m, "solid torus, binary"),
+       {},
+       ModelFormat::stl,
+       false},
+      {"ASCII PLY", write_ply_ascii(m), {}, ModelFormat::ply, true},
+      {"little-endian PLY", write_ply_binary(m, false), {}, ModelFormat::ply, true},
+      {"big-endian PLY", write_ply_binary(m, true), {}, ModelFormat::ply, true},
+      {"glTF, data: buffer", with_data.json, {}, ModelFormat::gltf, true},
+      {"glTF, uploaded buffer",
+       uploaded.json,
+       {{"torus data.bin", uploaded.buffer}},
+       ModelFormat::gltf,
+       true},
+      {"GLB", write_glb(make_gltf(m, "", true)), {}, ModelFormat::glb, true},
+  };
+}
+
+TEST(Models, EveryFormatOfOneMeshRendersTheSamePixels) {
+  const TestMesh m = make_mesh(7);
+  const std::vector<Written> files = every_format(m);
+  const raster::Image flat = render_model(files[0].bytes, "flat");
+  const raster::Image smooth = render_model(files[0].bytes, "smooth");
+  ASSERT_GT(test::count_not(flat, test::kBlack), 1000);  // the torus is in the picture
+  ASSERT_NE(flat.pixels, smooth.pixels);
+  for (const Written& w : files) {
+    SCOPED_TRACE(w.name);
+    EXPECT_EQ(raster::sniff_model(w.bytes), w.format);
+    EXPECT_EQ(render_model(w.bytes, "flat", w.files).pixels, flat.pixels);
+    // Smooth normals are computed per shared corner: the same wherever corners are shared.
+    if (w.shares_corners) {
+      EXPECT_EQ(render_model(w.bytes, "smooth", w.files).pixels, smooth.pixels);
+    }
+  }
+}
+
+// STL has no better normals than its facets': it is drawn flat unless the scene says otherwise.
+TEST(Models, StlIsFlatShadedAndOthersSmooth) {
+  const TestMesh m = make_mesh(3);
+  EXPECT_EQ(raster::parse_stl(write_stl_binary(m)).shading, raster::Shading::flat);
+  EXPECT_EQ(raster::parse_stl(write_stl_ascii(m)).shading, raster::Shading::flat);
+  EXPECT_EQ(raster::parse_ply(write_ply_ascii(m)).shading, raster::Shading::smooth);
+  const raster::Mesh stl = raster::parse_stl(write_stl_binary(m));
+  EXPECT_EQ(stl.triangles.size(), triangles_of(m).size());
+  EXPECT_EQ(stl.positions.size(), 3 * stl.triangles.size());
+}
+
+// A quad's diagonal is OBJ's: a bent quad split the other way would show other pixels.
+TEST(Models, PlyQuadsAreSplitAsObjQuadsAre) {
+  TestMesh bent;
+  bent.v = {{0, 0, 0}, {1, 0, 0.5}, {0.75, 0.75, 0}, {0, 1, 0.5}};  // 0-2 is the shorter diagonal
+  bent.faces = {{0, 1, 2, 3}};
+  const raster::Mesh ply = raster::parse_ply(write_ply_ascii(bent));
+  const raster::Mesh obj = raster::parse_obj(write_obj(bent));
+  EXPECT_EQ(ply.triangles, obj.triangles);
+  bent.v[1][2] = bent.v[3][2] = 0, bent.v[2][0] = 1.5;  // now 1-3 is the shorter diagonal
+  EXPECT_EQ(raster::parse_ply(write_ply_ascii(bent)).triangles, raster::parse_obj(write_obj(bent)).triangles);
+  EXPECT_NE(raster::parse_ply(write_ply_ascii(bent)).triangles, ply.triangles);
+}
+
+TEST(Models, FormatsAreToldByTheirBytesThenByName) {
+  EXPECT_EQ(raster::sniff_model("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), ModelFormat::obj);
+  EXPECT_EQ(raster::sniff_model("# only a comment\n\n# and another\no box\nv 0 0 0\n"), ModelFormat::obj);
+  EXPECT_EQ(raster::sniff_model("solid x\nendsolid x\n"), ModelFormat::stl);
+  EXPECT_EQ(raster::sniff_model("ply\r\nformat ascii 1.0\r\n"), ModelFormat::ply);
+  EXPECT_EQ(raster::sniff_model(R"( {"asset": {"version": "2.0"}})"), ModelFormat::gltf);
+  EXPECT_EQ(raster::sniff_model(R"({"accessors": [], "asset": {"version": "2.0"}})"), ModelFormat::gltf);
+  // A scene document is not a model: its first key is no glTF property.
+  EXPECT_EQ(raster::sniff_model(R"({"width": 10, "asset": 1})"), std::nullopt);
+  EXPECT_EQ(raster::sniff_model("hello world"), std::nullopt);
+  EXPECT_EQ(raster::sniff_model(std::string(84, '\0')), ModelFormat::stl);  // a binary STL of 0 facets
+  EXPECT_EQ(raster::sniff_model(std::string(85, '\0')), std::nullopt);
+  EXPECT_EQ(raster::format_of_file_name("Models/Part.STL"), ModelFormat::stl);
+  EXPECT_EQ(raster::format_of_file_name("scan.ply"), ModelFormat::ply);
+  EXPECT_EQ(raster::format_of_file_name("a.glb"), ModelFormat::glb);
+  EXPECT_EQ(raster::format_of_file_name("a.json"), std::nullopt);
+  EXPECT_EQ(raster::format_named("GLTF"), ModelFormat::gltf);
+
+  // Bytes that are no format: the hint decides, and without one the error names the formats.
+  try {
+    raster::parse_model("\x01\x02 not a model", std::nullopt);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::model);
+    EXPECT_NE(std::string(e.what()).find("STL"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("glTF"), std::string::npos) << e.what();
+  }
+  try {
+    raster::parse_model("\x01\x02 not a model", ModelFormat::ply);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("PLY"), std::string::npos) << e.what();
+  }
+}
+
+// Each declared count is checked against the bytes before it sizes anything: these would ask for
+// terabytes (the test runs under ASan too, whose allocator fails loudly on such sizes).
+TEST(Models, DeclaredCountsAreCheckedAgainstTheBytesFirst) {
+  auto model_error = [](auto&& read, const std::string& words) {
+    try {
+      read();
+      ADD_FAILURE() << "accepted; expected: " << words;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::model) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  // Binary STL: the count must match the size.
+  std::string stl = write_stl_binary(make_mesh(1));
+  stl[83] = 0x40;  // 2^30 more triangles than the bytes hold; also not a size sniff_model accepts
+  model_error([&] { raster::parse_stl(stl); }, "binary STL of");
+  // PLY: 2^40 vertices in a few hundred bytes; a face list of 2^32 - 1 entries.
+  std::string ply = write_ply_ascii(make_mesh(1));
+  ply.replace(ply.find("vertex 112"), 10, "vertex 1099511627776");
+  model_error([&] { raster::parse_ply(ply); }, "cannot hold them");
+  std::string list =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+  for (int i = 0; i < 9; ++i) put<float>(list, static_cast<float>(i % 2));
+  put<std::uint32_t>(list, 0xffffffffu);
+  put<std::int32_t>(list, 0);
+  model_error([&] { raster::parse_ply(list); }, "longer than the data left");
+  // glTF: an accessor of 2^31 elements in a buffer of 12 bytes.
+  const TestMesh m = make_mesh(1);
+  Gltf g = make_gltf(m, "", false);
+  g.json.replace(g.json.find("\"count\": 112"), 12, "\"count\": 2147483647");
+  model_error([&] { raster::parse_gltf(write_glb(g)); }, "do not fit in its buffer view");
+  // An index beyond the vertices, and a buffer view beyond its buffer.
+  Gltf bad_view = make_gltf(m, "", false);
+  bad_view.json.replace(bad_view.json.find("\"byteOffset\": 0"), 15, "\"byteOffset\": 4000000");
+  model_error([&] { raster::parse_gltf(write_glb(bad_view)); }, "lies outside its buffer");
+}
+
+TEST(Models, TheFaceLimitHoldsForEveryFormat) {
+  raster::Limits limits;
+  limits.max_obj_faces = 10;
+  const TestMesh m = make_mesh(2);
+  for (const Written& w : every_format(m)) {
+    SCOPED_TRACE(w.name);
+    try {
+      raster::parse_model(w.bytes, std::nullopt, limits, w.files);
+      ADD_FAILURE() << "accepted";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::limit) << e.what();
+    }
+  }
+}
+
+// A glTF's URIs name uploaded parts only: nothing is read from disk, whatever the path says.
+TEST(Models, GltfReadsNoFileButUploads) {
+  const TestMesh m = make_mesh(1);
+  for (const std::string uri : {"/etc/hostname", "../../../../etc/hostname", "file:///etc/hostname"}) {
+    SCOPED_TRACE(uri);
+    const Gltf g = make_gltf(m, uri, false);
+    try {
+      raster::parse_gltf(g.json);
+      ADD_FAILURE() << "accepted";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::model);
+      EXPECT_NE(std::string(e.what()).find("hostname"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(raster::gltf_files(make_gltf(m, "dir/a%20b.bin", false).json),
+            std::vector<std::string>{"a b.bin"});
+}
+
+// Node transforms, COLOR_0 and baseColorFactor (linear, drawn sRGB-encoded), KHR_materials_unlit.
+TEST(Models, GltfNodesAndMaterialsAreRead) {
+  const TestMesh m = make_mesh(1);
+  Gltf g = make_gltf(m, "", false,
+                     R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.3185, 1, 0, 1]},
+                                        "extensions": {"KHR_materials_unlit": {}}}])");
+  g.json.replace(
+      g.json.find(R"("nodes": [{"mesh": 0}])"), 22,
+      R"("nodes": [{"children": [1], "translation": [10, 0, 0]}, {"mesh": 0, "scale": [2, 2, 2]}])");
+  g.json.replace(g.json.find(R"("indices": 1})"), 13, R"("indices": 1, "material": 0})");
+  const raster::Mesh mesh = raster::parse_gltf(write_glb(g));
+  ASSERT_EQ(mesh.positions.size(), m.v.size());
+  for (std::size_t i = 0; i < m.v.size(); ++i) {
+    EXPECT_FLOAT_EQ(mesh.positions[i].x, 10 + 2 * m.v[i][0]);
+    EXPECT_FLOAT_EQ(mesh.positions[i].y, 2 * m.v[i][1]);
+  }
+  EXPECT_EQ(mesh.shading, raster::Shading::unlit);
+  ASSERT_EQ(mesh.colors.size(), m.v.size());
+  EXPECT_EQ(mesh.colors[0], (raster::Rgba8{153, 255, 0, 255}));  // linear 0.3185 is sRGB 0.6
+}
+
+// The corpus: every STL, PLY and glTF model of assimp's test files (real files from many exporters,
+// broken ones among them) either renders or is refused with a SceneError; nothing else, no crash.
+TEST(Models, AssimpTestModelsRenderOrGetASceneError) {
+  const std::filesystem::path root = "/usr/share/assimp/models";
+  if (!std::filesystem::exists(root)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  int rendered = 0, refused = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string path = entry.path().string();
+    const auto format = raster::format_of_file_name(path);
+    if (!format || *format == ModelFormat::obj) continue;
+    SCOPED_TRACE(path);
+    raster::Uploads files;  // the model's folder, as a user would upload it
+    for (const auto& f : std::filesystem::directory_iterator(entry.path().parent_path()))
+      if (f.is_regular_file() && f.path() != entry.path() && f.file_size() < (8 << 20))
+        files[f.path().filename().string()] = test::read_file(f.path().string());
+    files["m"] = test::read_file(path);
+    try {
+      raster::Scene scene = raster::parse_scene(
+          R"({"width": 48, "height": 48, "primitives": [{"type": "model", "source": "m", "format": ")" +
+              std::string(raster::format_name(*format)) + "\"}]}",
+          {}, files);
+      EXPECT_GT(test::render(scene).pixels.size(), 0u);
+      ++rendered;
+    } catch (const SceneError& e) {
+      ++refused;
+      EXPECT_TRUE(e.kind() == ErrorKind::model || e.kind() == ErrorKind::limit) << e.what();
+    }
+  }
+  EXPECT_GT(rendered, 40);
+  EXPECT_GT(refused, 5);
+}
+
+}  // namespace
