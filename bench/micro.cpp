@@ -1,5 +1,6 @@
 // Google Benchmark micro-benchmarks, one stage at a time: parse (per scene, plus the flat-array mesh),
-// the JSON tokenizer against RapidJSON's (issue 31's choice), plan, raster (per scene and thread count),
+// the JSON tokenizer against RapidJSON's (issue 31's choice), the model readers per format (and tinygltf's
+// own load beside ours), plan, raster (per scene and thread count),
 // encode; and the growth series — raster cost against image
 // side (256..4096) and against primitive count (10^3..10^6). `make bench` runs them after the end-to-end
 // table and keeps their output in docs/performance.md.
@@ -13,8 +14,16 @@
 #include <rapidjson/reader.h>
 
 #include "json_cursor.h"
+#include "model_files.h"  // tests/: the generated torus in every model format
 #include "raster/raster.h"
 #include "scenes.h"
+
+// tinygltf's declarations, configured as the library compiles it (renderer/src/gltf.cpp), whose copy of the
+// implementation the model/tinygltf rows call: its own load, without our reading of the result.
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
 
 namespace {
 
@@ -87,6 +96,53 @@ void tokenize_cursor(benchmark::State& state, const std::string& kind) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
 }
 
+// The model readers on one torus of 80,000 corners and 160,000 triangles (quads in OBJ and PLY), written in
+// each format: bytes per second, so that formats of different sizes compare per byte (issue 32's targets:
+// binary STL >= 1 GB/s; PLY and ASCII STL at least the OBJ path's rate; glTF within 1.2x of tinygltf's own
+// load of the same bytes).
+const std::string& model_bytes(const std::string& kind) {
+  static const test::TestMesh mesh = test::make_mesh(11, 400, 200);
+  static std::map<std::string, std::string> cache;
+  auto it = cache.find(kind);
+  if (it != cache.end()) return it->second;
+  std::string bytes;
+  if (kind == "obj") bytes = test::write_obj(mesh);
+  if (kind == "stl_ascii") bytes = test::write_stl_ascii(mesh);
+  if (kind == "stl_binary") bytes = test::write_stl_binary(mesh);
+  if (kind == "ply_ascii") bytes = test::write_ply_ascii(mesh);
+  if (kind == "ply_binary") bytes = test::write_ply_binary(mesh, false);
+  if (kind == "gltf") {
+    const test::Gltf g = test::make_gltf(mesh, "", true);
+    bytes = test::make_gltf(mesh, "data:application/octet-stream;base64," + test::base64(g.buffer), true).json;
+  }
+  if (kind == "glb") bytes = test::write_glb(test::make_gltf(mesh, "", true));
+  return cache.emplace(kind, std::move(bytes)).first->second;
+}
+
+void read_model(benchmark::State& state, const std::string& kind) {
+  const std::string& bytes = model_bytes(kind);
+  const auto format = raster::sniff_model(bytes);
+  for (auto _ : state) benchmark::DoNotOptimize(raster::parse_model(bytes, format));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * bytes.size()));
+}
+
+void tinygltf_load(benchmark::State& state, const std::string& kind) {
+  const std::string& bytes = model_bytes(kind);
+  for (auto _ : state) {
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    const bool ok = kind == "glb" ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                                                reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                                static_cast<unsigned>(bytes.size()))
+                                  : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                                               static_cast<unsigned>(bytes.size()), "");
+    if (!ok) state.SkipWithError(err.c_str());
+    benchmark::DoNotOptimize(model);
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * bytes.size()));
+}
+
 void plan(benchmark::State& state, const std::string& kind) {
   const raster::Scene& s = scene(kind);
   for (auto _ : state) benchmark::DoNotOptimize(plan_for(s, 1));
@@ -134,6 +190,12 @@ void register_all() {
     benchmark::RegisterBenchmark((std::string("tokenize/json_cursor/") + kind).c_str(), tokenize_cursor,
                                  kind);
   }
+  for (const char* kind : {"obj", "stl_ascii", "stl_binary", "ply_ascii", "ply_binary", "gltf", "glb"})
+    benchmark::RegisterBenchmark((std::string("model/") + kind).c_str(), read_model, kind)
+        ->Unit(benchmark::kMillisecond);
+  for (const char* kind : {"gltf", "glb"})
+    benchmark::RegisterBenchmark((std::string("model/tinygltf_load/") + kind).c_str(), tinygltf_load, kind)
+        ->Unit(benchmark::kMillisecond);
   for (const char* kind : kScenes)
     benchmark::RegisterBenchmark((std::string("plan/") + kind).c_str(), plan, kind);
   for (const char* kind : kScenes)

@@ -26,11 +26,10 @@ inline double grid(double x) {
   return std::round(x * 256) / 256;
 }
 
-inline TestMesh make_mesh(unsigned seed) {
+inline TestMesh make_mesh(unsigned seed, int ring = 14, int tube = 8) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> bump(-0.08, 0.08);
   TestMesh m;
-  const int ring = 14, tube = 8;
   for (int i = 0; i < ring; ++i)
     for (int j = 0; j < tube; ++j) {
       const double a = 2 * M_PI * i / ring, b = 2 * M_PI * j / tube, r = 0.35 + bump(rng);

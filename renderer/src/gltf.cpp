@@ -114,6 +114,13 @@ bool keep_image(tinygltf::Image* image, const int, std::string* err, std::string
   return true;
 }
 
+// Room for `more` elements, growing geometrically: a model of many primitives must not reallocate its arrays
+// once per primitive (reserving exactly each time copies them quadratically often).
+template <typename T>
+void make_room(std::vector<T>& v, std::size_t more) {
+  if (v.capacity() - v.size() < more) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+}
+
 double srgb_of_linear(double c) {
   c = std::clamp(c, 0.0, 1.0);
   return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
@@ -220,19 +227,41 @@ class AccessorView {
     }
     return 0;
   }
-  // An index: unsigned integers only, as the spec has them.
-  std::uint64_t index(std::size_t i) const {
-    const unsigned char* p = data_ + i * stride_;
+  // f(i, x, y, z) for each element of a VEC3 accessor, the component type dispatched once, not per value.
+  template <typename F>
+  void each_vec3(F&& f) const {
+    if (component_ == TINYGLTF_COMPONENT_TYPE_FLOAT && !normalized_) {
+      for (std::size_t i = 0; i < count_; ++i) {
+        float v[3];
+        std::memcpy(v, data_ + i * stride_, sizeof v);
+        f(i, double{v[0]}, double{v[1]}, double{v[2]});
+      }
+      return;
+    }
+    for (std::size_t i = 0; i < count_; ++i) f(i, get(i, 0), get(i, 1), get(i, 2));
+  }
+
+  // Every index, offset by `base`, into `out`; the first one >= `limit` throws, naming its element.
+  void indices(std::uint32_t base, std::uint64_t limit, std::vector<std::uint32_t>& out) const {
+    out.resize(count_);
+    auto all = [&]<typename T>(T) {
+      for (std::size_t i = 0; i < count_; ++i) {
+        T v;
+        std::memcpy(&v, data_ + i * stride_, sizeof v);
+        if (v >= limit)
+          gltf_error(what_ + " element " + std::to_string(i) + " is " + std::to_string(v) + ", but the primitive has " +
+                     std::to_string(limit) + " vertices");
+        out[i] = base + static_cast<std::uint32_t>(v);
+      }
+    };
     switch (component_) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return static_cast<std::uint64_t>(load<std::uint8_t>(p, 0));
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return static_cast<std::uint64_t>(load<std::uint16_t>(p, 0));
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return static_cast<std::uint64_t>(load<std::uint32_t>(p, 0));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return all(std::uint8_t{});
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return all(std::uint16_t{});
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return all(std::uint32_t{});
     }
     gltf_error(what_ + " holds indices of a type that is not an unsigned integer");
   }
+
 
  private:
   template <typename T>
@@ -301,11 +330,16 @@ class Reader {
           "points)");
     if (!all_normals_ || mesh_.normals.size() != mesh_.positions.size()) mesh_.normals.clear();
     if (!mesh_.normals.empty()) mesh_.normal_triangles = mesh_.triangles;
-    if (mesh_.textures.empty()) {
-      mesh_.uvs.clear(), mesh_.uv_triangles.clear(), mesh_.face_textures.clear();
+    if (!textured_) {
+      mesh_.textures.clear(), mesh_.uvs.clear(), mesh_.face_textures.clear();
     } else {
+      mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
       mesh_.uv_triangles = mesh_.triangles;
     }
+    // One colour for the whole mesh when every vertex has the same (a model of one material).
+    if (!mesh_.colors.empty() &&
+        std::all_of(mesh_.colors.begin(), mesh_.colors.end(), [&](Rgba8 c) { return c == mesh_.colors.front(); }))
+      mesh_.colors.erase(mesh_.colors.begin() + 1, mesh_.colors.end());
     if (any_lit_ == false && any_unlit_) mesh_.shading = Shading::unlit;
     return std::move(mesh_);
   }
@@ -334,15 +368,20 @@ class Reader {
       if (base + positions.count() > 3 * static_cast<std::size_t>(limits_.max_obj_faces) + 3)
         throw SceneError(ErrorKind::limit, "the model has more than " +
                                                std::to_string(3 * limits_.max_obj_faces) + " vertices");
-      mesh_.positions.reserve(base + positions.count());
-      for (std::size_t i = 0; i < positions.count(); ++i) {
-        const double x = positions.get(i, 0), y = positions.get(i, 1), z = positions.get(i, 2);
+      make_room(mesh_.positions, positions.count());
+      mesh_.positions.resize(base + positions.count());
+      Vec3* out = mesh_.positions.data() + base;
+      double sum = 0;  // a NaN or an infinity anywhere makes the sum one: checked once, found after
+      positions.each_vec3([&](std::size_t i, double x, double y, double z) {
         const Vec3 w{m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13],
                      m[2] * x + m[6] * y + m[10] * z + m[14]};
-        if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
-          gltf_error(positions.what() + " element " + std::to_string(i) + " is not a finite point");
-        mesh_.positions.push_back(w);
-      }
+        sum += w.x * 0 + w.y * 0 + w.z * 0;
+        out[i] = w;
+      });
+      if (!std::isfinite(sum))
+        for (std::size_t i = 0; i < positions.count(); ++i)
+          if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
+            gltf_error(positions.what() + " element " + std::to_string(i) + " is not a finite point");
       const std::size_t count = positions.count();
       add_normals(p, where, count, n);
       const Material material = material_of(p.material, where);
@@ -350,17 +389,9 @@ class Reader {
       add_uvs(p, where, count, material);
 
       // The primitive's corner order: its indices, or 0..count-1.
-      std::vector<std::uint32_t> corners;
+      std::vector<std::uint32_t>& corners = corners_;
       if (p.indices >= 0) {
-        const AccessorView idx(model_, p.indices, where + " indices");
-        corners.resize(idx.count());
-        for (std::size_t i = 0; i < idx.count(); ++i) {
-          const std::uint64_t v = idx.index(i);
-          if (v >= count)
-            gltf_error(idx.what() + " element " + std::to_string(i) + " is " + std::to_string(v) +
-                       ", but the primitive has " + std::to_string(count) + " vertices");
-          corners[i] = static_cast<std::uint32_t>(base + v);
-        }
+        AccessorView(model_, p.indices, where + " indices").indices(static_cast<std::uint32_t>(base), count, corners);
       } else {
         corners.resize(count);
         for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(base + i);
@@ -381,12 +412,11 @@ class Reader {
       all_normals_ = false;
       return;
     }
-    mesh_.normals.reserve(mesh_.positions.size());
-    for (std::size_t i = 0; i < count; ++i) {
-      const double x = normals.get(i, 0), y = normals.get(i, 1), z = normals.get(i, 2);
+    make_room(mesh_.normals, count);
+    normals.each_vec3([&](std::size_t, double x, double y, double z) {
       mesh_.normals.push_back(
           {n[0] * x + n[1] * y + n[2] * z, n[3] * x + n[4] * y + n[5] * z, n[6] * x + n[7] * y + n[8] * z});
-    }
+    });
   }
 
   void add_colours(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
@@ -399,13 +429,19 @@ class Reader {
         gltf_error(colours->what() + " is not one VEC3 or VEC4 per vertex");
     }
     // glTF colours are linear; the 8-bit colours lit here are sRGB-encoded, as texels are.
-    mesh_.colors.reserve(mesh_.positions.size());
+    auto encoded = [](const double* c) -> Rgba8 {
+      return {unit_byte(srgb_of_linear(c[0])), unit_byte(srgb_of_linear(c[1])), unit_byte(srgb_of_linear(c[2])),
+              unit_byte(c[3])};
+    };
+    if (!colours) {  // one colour for the primitive, encoded once
+      mesh_.colors.insert(mesh_.colors.end(), count, encoded(factor.data()));
+      return;
+    }
+    make_room(mesh_.colors, count);
     for (std::size_t i = 0; i < count; ++i) {
       double c[4] = {factor[0], factor[1], factor[2], factor[3]};
-      if (colours)
-        for (int k = 0; k < colours->components(); ++k) c[k] *= colours->get(i, k);
-      mesh_.colors.push_back({unit_byte(srgb_of_linear(c[0])), unit_byte(srgb_of_linear(c[1])),
-                              unit_byte(srgb_of_linear(c[2])), unit_byte(c[3])});
+      for (int k = 0; k < colours->components(); ++k) c[k] *= colours->get(i, k);
+      mesh_.colors.push_back(encoded(c));
     }
   }
 
@@ -471,16 +507,18 @@ class Reader {
 
   void add_uvs(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
                const Material& material) {
-    // One uv per position whatever the primitive; (0, 0) where it has none.
-    const std::size_t base = mesh_.uvs.size();
-    mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
+    // Once a primitive is textured, one uv per position and a texture per triangle: (0, 0) and -1 where a
+    // primitive has none. Before that, neither is kept.
+    const std::size_t base = mesh_.positions.size() - count;
     primitive_texture_ = material.texture;
-    if (material.texture < 0) return;
     const auto it = p.attributes.find("TEXCOORD_" + std::to_string(material.texcoord));
-    if (it == p.attributes.end()) {
-      primitive_texture_ = -1;
-      return;
+    if (material.texture >= 0 && it == p.attributes.end()) primitive_texture_ = -1;
+    if (primitive_texture_ >= 0 && !textured_) {
+      textured_ = true;
+      mesh_.face_textures.assign(mesh_.triangles.size(), -1);
     }
+    if (textured_) mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
+    if (primitive_texture_ < 0) return;
     const AccessorView uv(model_, it->second, where + " TEXCOORD_" + std::to_string(material.texcoord));
     if (uv.components() != 2 || uv.count() != count) gltf_error(uv.what() + " is not one VEC2 per vertex");
     for (std::size_t i = 0; i < count;
@@ -488,25 +526,34 @@ class Reader {
       mesh_.uvs[base + i] = {static_cast<float>(uv.get(i, 0)), static_cast<float>(1 - uv.get(i, 1))};
   }
 
-  void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, bool mirrored) {
-    if (mesh_.triangles.size() >= static_cast<std::size_t>(limits_.max_obj_faces))
+  // `more` triangles to come: refused over the face limit, else room made for them.
+  void make_room_for_triangles(std::size_t more) {
+    if (mesh_.triangles.size() + more > static_cast<std::size_t>(limits_.max_obj_faces))
       throw SceneError(ErrorKind::limit,
                        "the model has more than " + std::to_string(limits_.max_obj_faces) + " faces");
+    make_room(mesh_.triangles, more);
+    if (textured_) make_room(mesh_.face_textures, more);
+  }
+
+  void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, bool mirrored) {
     mesh_.triangles.push_back(mirrored ? std::array{a, c, b} : std::array{a, b, c});
-    mesh_.face_textures.push_back(primitive_texture_);
+    if (textured_) mesh_.face_textures.push_back(primitive_texture_);
   }
 
   void add_faces(int mode, const std::vector<std::uint32_t>& v, bool mirrored, const std::string& where) {
     const std::size_t n = v.size();
     switch (mode) {
       case TINYGLTF_MODE_TRIANGLES:
+        make_room_for_triangles(n / 3);
         for (std::size_t i = 0; i + 2 < n; i += 3) add_triangle(v[i], v[i + 1], v[i + 2], mirrored);
         break;
       case TINYGLTF_MODE_TRIANGLE_STRIP:  // every other triangle turned back to the strip's winding
+        make_room_for_triangles(n < 2 ? 0 : n - 2);
         for (std::size_t i = 0; i + 2 < n; ++i)
           add_triangle(v[i], v[i + 1 + (i & 1)], v[i + 2 - (i & 1)], mirrored);
         break;
       case TINYGLTF_MODE_TRIANGLE_FAN:
+        make_room_for_triangles(n < 2 ? 0 : n - 2);
         for (std::size_t i = 1; i + 1 < n; ++i) add_triangle(v[0], v[i], v[i + 1], mirrored);
         break;
       case TINYGLTF_MODE_LINE:
@@ -534,6 +581,8 @@ class Reader {
   std::int64_t texel_budget_ = limits_.max_texture_pixels;
   std::int32_t primitive_texture_ = -1;
   bool all_normals_ = true, any_lit_ = false, any_unlit_ = false;
+  bool textured_ = false;  ///< a primitive so far had a texture and its coordinates
+  std::vector<std::uint32_t> corners_;  ///< the current primitive's vertex order, kept for its capacity
 };
 
 }  // namespace
