@@ -243,6 +243,54 @@ TEST(Models, GltfNodesAndMaterialsAreRead) {
   EXPECT_EQ(mesh.colors, std::vector<raster::Rgba8>{(raster::Rgba8{153, 255, 0, 255})});
 }
 
+// A textured model: the test box (OBJ + MTL + PNG) written as a glTF whose image is an uploaded part named by
+// its URI renders the pixels the OBJ does: the image is found, decoded and sampled with v turned over.
+TEST(Models, ATexturedGltfRendersAsTheSameObjDoes) {
+  const std::string dir = RASTERD_TESTS_DIR "/data/textured/";
+  const raster::Uploads obj_files{{"box.mtl", test::read_file(dir + "box.mtl")},
+                                  {"box_diffuse.png", test::read_file(dir + "box_diffuse.png")}};
+  const std::string obj = test::read_file(dir + "box.obj");
+  const raster::Mesh box = raster::parse_obj(obj, {}, {}, obj_files);
+  ASSERT_EQ(box.textures.size(), 1u);
+  // One vertex per corner (glTF has one index for position and uv), the triangles in OBJ's order.
+  std::string buffer;
+  for (std::size_t t = 0; t < box.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const raster::Vec3& p = box.positions[box.triangles[t][k]];
+      for (double c : {p.x, p.y, p.z}) test::put<float>(buffer, static_cast<float>(c));
+    }
+  const std::size_t positions = buffer.size();
+  for (std::size_t t = 0; t < box.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto& uv = box.uvs[box.uv_triangles[t][k]];
+      test::put<float>(buffer, uv[0]);
+      test::put<float>(buffer, 1 - uv[1]);  // glTF's v runs down from the image's top
+    }
+  const std::string n = std::to_string(box.triangles.size() * 3);
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "material": 0}]}],
+    "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+    "textures": [{"source": 0}], "images": [{"uri": "maps/box_diffuse.png"}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" + n + R"(, "type": "VEC3"},
+                  {"bufferView": 1, "componentType": 5126, "count": )" + n + R"(, "type": "VEC2"}],
+    "bufferViews": [{"buffer": 0, "byteLength": )" + std::to_string(positions) + R"(},
+                    {"buffer": 0, "byteOffset": )" + std::to_string(positions) + R"(, "byteLength": )" +
+                           std::to_string(buffer.size() - positions) + R"(}],
+    "buffers": [{"byteLength": )" + std::to_string(buffer.size()) + R"(, "uri": "box.bin"}]})";
+  const raster::Image from_obj = render_model(obj, "unlit", obj_files);
+  const raster::Image from_gltf = render_model(
+      gltf, "unlit", {{"box.bin", buffer}, {"box_diffuse.png", obj_files.at("box_diffuse.png")}});
+  ASSERT_GT(test::count_not(from_obj, test::kBlack), 1000);
+  EXPECT_EQ(from_gltf.pixels, from_obj.pixels);
+  // Without the image the model is refused, naming the file and what was sent.
+  try {
+    render_model(gltf, "unlit", {{"box.bin", buffer}});
+    ADD_FAILURE() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"box_diffuse.png\", which was not sent"), std::string::npos) << e.what();
+  }
+}
+
 // The corpus: every STL, PLY and glTF model of assimp's test files (real files from many exporters,
 // broken ones among them) either renders or is refused with a SceneError; nothing else, no crash.
 TEST(Models, AssimpTestModelsRenderOrGetASceneError) {
