@@ -44,7 +44,7 @@ DOCUMENTED_RULES = [
      lambda c: c["verdict"] == "limit" or "nested deeper than" in c["message"]),
 ]
 
-README_SECTIONS = ("## Scene format v1", "## 3D scenes and OBJ models")
+README_SECTIONS = ("## Scene format v1", "## 3D scenes and models")
 
 
 class Result:
