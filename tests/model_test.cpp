@@ -189,6 +189,14 @@ TEST(Models, DeclaredCountsAreCheckedAgainstTheBytesFirst) {
   model_error([&] { raster::parse_gltf(write_glb(bad_view)); }, "lies outside its buffer");
 }
 
+// ply_fuzzer: an element of 6e9 entries and no properties holds no bytes; it is passed over, not counted.
+TEST(Models, PlyElementsWithoutPropertiesAreSkipped) {
+  std::string ply = write_ply_ascii(make_mesh(1));
+  ply.replace(ply.find("element face"), 0, "element nothing 6000000000\n");
+  EXPECT_EQ(raster::parse_ply(ply).triangles.size(),
+            raster::parse_ply(write_ply_ascii(make_mesh(1))).triangles.size());
+}
+
 TEST(Models, TheFaceLimitHoldsForEveryFormat) {
   raster::Limits limits;
   limits.max_obj_faces = 10;
