@@ -247,8 +247,12 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   // so every byte offset in an error still counts from the start of what was sent.
   if (body.starts_with(kUtf8Bom)) body.replace(0, kUtf8Bom.size(), kUtf8Bom.size(), ' ');
   // A glTF document is JSON too (model/gltf+json ends in "+json"): its first key tells it from a scene.
+  // A binary STL's header may start with '{' too; a file name or Content-Type that says glTF decides a JSON
+  // document whose first key is not one sniff_model knows.
   const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(body);
-  if ((declared_json || is_scene_text(body)) && sniffed != raster::ModelFormat::gltf) {
+  const bool named_gltf =
+      named_format == raster::ModelFormat::gltf || named_format == raster::ModelFormat::glb;
+  if ((declared_json || is_scene_text(body)) && !sniffed && !named_gltf) {
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {
       if (name == "explain") continue;

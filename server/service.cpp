@@ -651,7 +651,7 @@ constexpr Flag kFlags[] = {
     {"max-pixels", "width x height limit, 422 above (default 40000000)"},
     {"max-primitives", "primitives (and mesh triangles) limit, 422 above (default 2000000)"},
     {"max-obj-faces",
-     "faces of one model (OBJ and PLY faces, STL and glTF triangles), 422 above (default 5000000)"},
+     "faces of one model (OBJ faces; STL, PLY and glTF triangles), 422 above (default 5000000)"},
     {"max-json-depth", "JSON nesting limit, 400 above (default 64)"},
     {"render-deadline-ms", "parse + render + encode deadline, 503 past it (default 10000)"},
     {"body-deadline-ms", "time for the whole request body to arrive, 408 past it (default 10000)"},

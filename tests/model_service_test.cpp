@@ -30,12 +30,15 @@ TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
     const char* type;
     bool flat;
   };
-  const Body bodies[] = {{"binary STL", test::write_stl_binary(m), "application/octet-stream", true},
-                         {"ASCII STL", test::write_stl_ascii(m), "text/plain", true},
-                         {"binary STL with no type", test::write_stl_binary(m), "", true},
-                         {"OBJ", test::write_obj(m), "model/obj", false},
-                         {"PLY", test::write_ply_binary(m, false), "application/octet-stream", false},
-                         {"GLB", test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary", false}};
+  const Body bodies[] = {
+      {"binary STL", test::write_stl_binary(m), "application/octet-stream", true},
+      {"ASCII STL", test::write_stl_ascii(m), "text/plain", true},
+      {"binary STL with no type", test::write_stl_binary(m), "", true},
+      // A header that starts like a scene: the size tells a binary STL first.
+      {"binary STL, header \"{\"", test::write_stl_binary(m, "{ binary"), "application/octet-stream", true},
+      {"OBJ", test::write_obj(m), "model/obj", false},
+      {"PLY", test::write_ply_binary(m, false), "application/octet-stream", false},
+      {"GLB", test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary", false}};
   std::string flat, smooth;
   for (const Body& b : bodies) {
     SCOPED_TRACE(b.name);

@@ -251,6 +251,97 @@ TEST(Models, GltfNodesAndMaterialsAreRead) {
   EXPECT_EQ(mesh.colors, std::vector<raster::Rgba8>{(raster::Rgba8{153, 255, 0, 255})});
 }
 
+// Review findings (issue 32): normals turn with their node as positions do, also under a mirror; an opaque
+// material is opaque whatever COLOR_0's alpha; '+' in a buffer URI finds its upload.
+TEST(Models, GltfNormalsFollowRotationsAndMirrors) {
+  std::string buffer;
+  for (float v : {0.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f}) test::put<float>(buffer, v);  // positions
+  for (int i = 0; i < 3; ++i)
+    for (float v : {1.f, 0.f, 0.f}) test::put<float>(buffer, v);  // normals: +x
+  for (int i = 0; i < 3; ++i)
+    for (float v : {1.f, 1.f, 1.f, 0.25f}) test::put<float>(buffer, v);  // COLOR_0 with alpha 0.25
+  auto doc = [&](const std::string& node, const std::string& material) {
+    return R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, )" + node +
+           R"(}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "COLOR_0": 2}, "material": 0}]}],
+      "materials": [{)" +
+           material + R"(}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                    {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+                    {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC4"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+                      {"buffer": 0, "byteOffset": 72, "byteLength": 48}],
+      "buffers": [{"byteLength": 120, "uri": "a+b.bin"}]})";
+  };
+  const raster::Uploads files{{"a+b.bin", buffer}};
+  // A quarter turn about z takes +x to +y.
+  const raster::Mesh turned =
+      raster::parse_gltf(doc(R"("rotation": [0, 0, 0.70710678, 0.70710678])", ""), {}, files);
+  ASSERT_EQ(turned.normals.size(), 3u);
+  EXPECT_NEAR(turned.normals[0].x, 0, 1e-6);
+  EXPECT_NEAR(turned.normals[0].y, 1, 1e-6);
+  EXPECT_EQ(turned.colors, std::vector<raster::Rgba8>{(raster::Rgba8{255, 255, 255, 255})});  // opaque
+  // A non-uniform scale: the normal goes through the inverse transpose (x scaled by 2: the normal stays +x).
+  const raster::Mesh stretched = raster::parse_gltf(doc(R"("scale": [2, 1, 1])", ""), {}, files);
+  EXPECT_GT(stretched.normals[0].x, 0);
+  // A mirror in x: the normal is mirrored, the winding turned.
+  const raster::Mesh mirrored = raster::parse_gltf(doc(R"("scale": [-1, 1, 1])", ""), {}, files);
+  EXPECT_LT(mirrored.normals[0].x, 0);
+  EXPECT_EQ(mirrored.triangles[0], (std::array<std::uint32_t, 3>{0, 2, 1}));
+  // Blended, the vertex alpha is kept.
+  const raster::Mesh blended =
+      raster::parse_gltf(doc(R"("translation": [0, 0, 0])", R"("alphaMode": "BLEND")"), {}, files);
+  EXPECT_EQ(blended.colors[0].a, 64);
+}
+
+// Documents that would drive tinygltf 2.7.0 into a crash, a read past the input, an exception or a huge
+// allocation are refused before it runs.
+TEST(Models, GltfDocumentsThatWouldHurtTinygltfAreRefusedFirst) {
+  auto refused = [](const std::string& bytes, ErrorKind kind, const std::string& words) {
+    try {
+      raster::parse_gltf(bytes);
+      ADD_FAILURE() << "accepted; expected: " << words;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.kind(), kind) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  const std::string head = R"({"asset": {"version": "2.0"}, )";
+  // tinygltf reads "extras" recursively: 50,000 nested arrays overflowed the stack.
+  refused(head + R"("extras": )" + std::string(50000, '[') + "1" + std::string(50000, ']') + "}",
+          ErrorKind::model, "not JSON");
+  // A million empty materials: three bytes of text, a tinygltf::Material each.
+  std::string materials = head + R"("materials": [{})";
+  for (int i = 0; i < 1000000; ++i) materials += ",{}";
+  refused(materials + "]}", ErrorKind::limit, "MB of nodes, meshes, materials");
+  // Buffers larger than everything sent.
+  refused(head + R"("buffers": [{"byteLength": 4000000000, "uri": "data:,"}]})", ErrorKind::model,
+          "bytes sent");
+  // GLB: a binary chunk whose length runs 8 bytes past the file (tinygltf's bounds check misses its head),
+  // two buffers backed by one chunk, and a buffer of 0 bytes (tinygltf's at(0) threw).
+  const test::TestMesh m = test::make_mesh(1);
+  std::string glb = test::write_glb(test::make_gltf(m, "", false));
+  const std::size_t json = static_cast<unsigned char>(glb[12]) | static_cast<unsigned char>(glb[13]) << 8;
+  glb[20 + json] = static_cast<char>(glb[20 + json] + 8);
+  refused(glb, ErrorKind::model, "runs past");
+  test::Gltf two = test::make_gltf(m, "", false);
+  two.json.replace(two.json.find(R"("buffers": [)"), 12, R"("buffers": [{"byteLength": 4}, )");
+  refused(test::write_glb(two), ErrorKind::model, "more than one buffer has no URI");
+  test::Gltf empty = test::make_gltf(m, "", false);
+  empty.buffer.clear();
+  empty.json.replace(empty.json.find(R"("buffers": [{"byteLength": )"), 27,
+                     R"("buffers": [{"byteLength": 0, "x": )");
+  refused(test::write_glb(empty), ErrorKind::model, "glTF");
+}
+
+// STL writers put "nan" in the facet normal of a sliver; the normal is not read, so the facet is drawn.
+TEST(Models, AsciiStlFacetNormalsAreNotRead) {
+  const std::string stl =
+      "solid s\nfacet normal nan -nan(ind) inf\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+      "vertex 0 1 0\nendloop\nendfacet\nendsolid s\n";
+  EXPECT_EQ(raster::parse_stl(stl).triangles.size(), 1u);
+}
+
 // A textured model: the test box (OBJ + MTL + PNG) written as a glTF whose image is an uploaded part named by
 // its URI renders the pixels the OBJ does: the image is found, decoded and sampled with v turned over.
 TEST(Models, ATexturedGltfRendersAsTheSameObjDoes) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "json_cursor.h"
 #include "raster/model.h"
 
 #define TINYGLTF_IMPLEMENTATION
@@ -60,14 +61,47 @@ bool iequals(std::string_view a, std::string_view b) {
          });
 }
 
-// An uploaded file by a URI's file name, exactly or else differing only in ASCII case.
-const std::string* find_upload(const Uploads& files, const std::string& uri) {
-  const std::string name = file_name_of_uri(uri);
+// An uploaded file by a file name, exactly or else differing only in ASCII case, or in '+' for ' ' (tinygltf
+// decodes a buffer's URI as a query string, '+' as a space, before it asks for the file).
+const std::string* find_file(const Uploads& files, std::string_view name) {
   if (const auto it = files.find(name); it != files.end()) return &it->second;
   for (const auto& [key, bytes] : files)
     if (iequals(key, name)) return &bytes;
+  for (const auto& [key, bytes] : files)
+    if (key.size() == name.size() && std::equal(key.begin(), key.end(), name.begin(), [](char x, char y) {
+          x = x == '+' ? ' ' : x, y = y == '+' ? ' ' : y;
+          return (x >= 'A' && x <= 'Z' ? x + 32 : x) == (y >= 'A' && y <= 'Z' ? y + 32 : y);
+        }))
+      return &bytes;
   return nullptr;
 }
+
+// An uploaded file by a URI as the document writes it (percent-encoded, perhaps with folders).
+const std::string* find_upload(const Uploads& files, const std::string& uri) {
+  return find_file(files, file_name_of_uri(uri));
+}
+
+// A path as tinygltf passes it to the file callbacks: already decoded; only its folders are dropped.
+std::string_view base_name(std::string_view path) {
+  const std::size_t slash = path.find_last_of("/\\");
+  return slash == std::string_view::npos ? path : path.substr(slash + 1);
+}
+
+// What tinygltf's callbacks may copy: the bytes of the request (the model and its uploads) once over. A
+// document can name one large upload or buffer view from many buffers or images; each copy is counted.
+struct CopyBudget {
+  const tinygltf::Model* model;  ///< the model being read, for an image's buffer view
+  const Uploads* files;
+  std::uint64_t bytes_left;  ///< bytes, what further copies may take
+  bool take(std::uint64_t n, std::string* err) {
+    if (n > bytes_left) {
+      if (err) *err += "the document copies its buffers or images more often than its bytes allow\n";
+      return false;
+    }
+    bytes_left -= n;
+    return true;
+  }
+};
 
 std::string upload_names(const Uploads& files) {
   std::string names;
@@ -76,18 +110,20 @@ std::string upload_names(const Uploads& files) {
 }
 
 // tinygltf's file system: the uploads, read-only.
-bool upload_exists(const std::string& path, void* files) {
-  return find_upload(*static_cast<const Uploads*>(files), path) != nullptr;
+bool upload_exists(const std::string& path, void* budget) {
+  return find_file(*static_cast<CopyBudget*>(budget)->files, base_name(path)) != nullptr;
 }
 std::string same_path(const std::string& path, void*) {
   return path;
 }
-bool read_upload(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* files) {
-  const std::string* bytes = find_upload(*static_cast<const Uploads*>(files), path);
+bool read_upload(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* budget) {
+  auto& b = *static_cast<CopyBudget*>(budget);
+  const std::string* bytes = find_file(*b.files, base_name(path));
   if (!bytes) {
-    if (err) *err += "no uploaded part named \"" + file_name_of_uri(path) + "\"\n";
+    if (err) *err += "no uploaded part named \"" + std::string(base_name(path)) + "\"\n";
     return false;
   }
+  if (!b.take(bytes->size(), err)) return false;
   out->assign(bytes->begin(), bytes->end());
   return true;
 }
@@ -98,8 +134,9 @@ bool write_nothing(std::string*, const std::string&, const std::vector<unsigned 
 // tinygltf's image callback: the encoded bytes are kept (width 0 marks them so) and decoded only if a
 // material uses the image. Called for data: URIs and for buffer views, whose range tinygltf does not check.
 bool keep_image(tinygltf::Image* image, const int, std::string* err, std::string*, int, int,
-                const unsigned char* bytes, int size, void* model_being_read) {
-  const auto* model = static_cast<const tinygltf::Model*>(model_being_read);
+                const unsigned char* bytes, int size, void* budget) {
+  auto& b = *static_cast<CopyBudget*>(budget);
+  const tinygltf::Model* model = b.model;
   if (image->bufferView >= 0) {
     const tinygltf::BufferView& view = model->bufferViews[static_cast<std::size_t>(image->bufferView)];
     const std::size_t buffer_size = model->buffers[static_cast<std::size_t>(view.buffer)].data.size();
@@ -108,7 +145,7 @@ bool keep_image(tinygltf::Image* image, const int, std::string* err, std::string
       return false;
     }
   }
-  if (size < 0) return false;
+  if (size < 0 || !b.take(static_cast<std::uint64_t>(size), err)) return false;
   image->image.assign(bytes, bytes + size);
   image->width = image->height = 0;
   return true;
@@ -119,6 +156,135 @@ bool keep_image(tinygltf::Image* image, const int, std::string* err, std::string
 template <typename T>
 void make_room(std::vector<T>& v, std::size_t more) {
   if (v.capacity() - v.size() < more) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+}
+
+// --- Before tinygltf: what the document would make it build -------------------------------------------
+
+// tinygltf makes a struct per element of each top-level array and a Value (or a struct of similar size)
+// for every other object and array, extras included; three bytes of text ("{},") can ask for a kilobyte.
+// Its structures are bounded by this many bytes, counted from the text before it runs.
+constexpr std::uint64_t kMaxStructureBytes = 256ull << 20;
+
+std::uint64_t struct_bytes(std::string_view array) {
+  static constexpr std::pair<std::string_view, std::size_t> kSizes[] = {
+      {"accessors", sizeof(tinygltf::Accessor)}, {"animations", sizeof(tinygltf::Animation)},
+      {"buffers", sizeof(tinygltf::Buffer)},     {"bufferViews", sizeof(tinygltf::BufferView)},
+      {"cameras", sizeof(tinygltf::Camera)},     {"images", sizeof(tinygltf::Image)},
+      {"materials", sizeof(tinygltf::Material)}, {"meshes", sizeof(tinygltf::Mesh)},
+      {"nodes", sizeof(tinygltf::Node)},         {"samplers", sizeof(tinygltf::Sampler)},
+      {"scenes", sizeof(tinygltf::Scene)},       {"skins", sizeof(tinygltf::Skin)},
+      {"textures", sizeof(tinygltf::Texture)}};
+  for (const auto& [name, size] : kSizes)
+    if (name == array) return size;
+  return 0;
+}
+
+constexpr std::uint64_t kContainerBytes = std::max(
+    {sizeof(tinygltf::Value) + 64, sizeof(tinygltf::Primitive) + 64, sizeof(tinygltf::TextureInfo) + 64});
+
+struct Shape {
+  std::uint64_t structure_bytes = 0;  ///< what tinygltf would build, estimated from above
+  std::uint64_t buffer_bytes = 0;     ///< the buffers' byteLength, summed
+  int buffers_without_uri = 0;        ///< a GLB's chunk may back one
+  std::string missing;                ///< the file name of the first buffer URI no upload holds
+};
+
+// Passes over one value, counting its objects and arrays; without recursion (the cursor bounds the depth).
+std::uint64_t containers(JsonCursor& in) {
+  using Kind = JsonCursor::Kind;
+  std::uint64_t n = 0;
+  std::vector<bool> in_object;  // the open containers, innermost last
+  auto enter = [&]() -> bool {  // reads a value's start: true when it opened a non-empty container
+    const Kind k = in.peek();
+    if (k == Kind::object || k == Kind::array) {
+      ++n;
+      const bool object = k == Kind::object;
+      if (!(object ? in.object_begin() : in.array_begin())) return false;
+      if (object) in.key();
+      in_object.push_back(object);
+      return true;
+    }
+    in.skip();
+    return false;
+  };
+  if (!enter()) return n;
+  while (!in_object.empty()) {
+    if (enter()) continue;
+    while (!in_object.empty()) {  // the value ended: on to the next member or element, or close
+      const bool object = in_object.back();
+      if (object ? in.object_next() : in.array_next()) {
+        if (object) in.key();
+        break;
+      }
+      in_object.pop_back();
+    }
+  }
+  return n;
+}
+
+Shape shape_of(std::string_view json, int max_depth, const Uploads& files) {
+  using Kind = JsonCursor::Kind;
+  JsonCursor in(json, max_depth);
+  Shape shape;
+  if (in.peek() != Kind::object) in.fail("expected a glTF document, an object");
+  for (bool more = in.object_begin(); more; more = in.object_next()) {
+    const std::string_view key = in.key();
+    const std::uint64_t size = struct_bytes(key);
+    if (size == 0 || in.peek() != Kind::array) {
+      shape.structure_bytes += containers(in) * kContainerBytes;
+      continue;
+    }
+    const bool buffers = key == "buffers";
+    for (bool item = in.array_begin(); item; item = in.array_next()) {
+      if (!buffers || in.peek() != Kind::object) {
+        shape.structure_bytes += size + containers(in) * kContainerBytes;
+        continue;
+      }
+      shape.structure_bytes += size;
+      bool uri = false;
+      for (bool member = in.object_begin(); member; member = in.object_next()) {
+        const std::string_view field = in.key();
+        if (field == "byteLength" && in.peek() == Kind::number) {
+          const double length = in.number();
+          shape.buffer_bytes += length > 0 && length < 1e18 ? static_cast<std::uint64_t>(length) : 0;
+        } else if (field == "uri" && in.peek() == Kind::string) {
+          uri = true;
+          const std::string name(in.string());
+          if (shape.missing.empty() && !name.starts_with("data:") && !find_upload(files, name))
+            shape.missing = file_name_of_uri(name);
+        } else {
+          shape.structure_bytes += containers(in) * kContainerBytes;
+        }
+      }
+      shape.buffers_without_uri += !uri;
+    }
+  }
+  in.finish();
+  return shape;
+}
+
+// The GLB container: a 12-byte header, a JSON chunk and an optional BIN chunk, each within the file.
+// (tinygltf 2.7.0 leaves the BIN chunk's 8-byte head out of its bounds check and could copy 8 bytes past
+// the end of the input.) Returns the JSON chunk.
+std::string_view glb_json(std::string_view bytes) {
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for (int k = 3; k >= 0; --k) v = v << 8 | static_cast<unsigned char>(bytes[at + k]);
+    return std::uint64_t{v};
+  };
+  if (bytes.size() < 20)
+    gltf_error("the GLB is " + std::to_string(bytes.size()) + " bytes, shorter than its headers");
+  const std::uint64_t length = u32(8), json = u32(12);
+  if (length > bytes.size())
+    gltf_error("the GLB's header says " + std::to_string(length) + " bytes; the file has " +
+               std::to_string(bytes.size()));
+  if (bytes.substr(16, 4) != "JSON" || 20 + json > length)
+    gltf_error("the GLB's first chunk is not a JSON chunk within the file");
+  const std::uint64_t bin = 20 + ((json + 3) & ~std::uint64_t{3});
+  if (bin + 8 <= length && bin + 8 + u32(bin) > length)
+    gltf_error("the GLB's binary chunk of " + std::to_string(u32(bin)) + " bytes runs past the file's " +
+               std::to_string(length));
+  return bytes.substr(20, static_cast<std::size_t>(json));
 }
 
 double srgb_of_linear(double c) {
@@ -348,13 +514,15 @@ class Reader {
   void add_mesh(int index, const Mat& m) {
     if (static_cast<std::size_t>(index) >= model_.meshes.size())
       gltf_error("a node names mesh " + std::to_string(index) + ", which does not exist");
-    // Normals go through the inverse transpose of the upper 3x3; a mirroring transform turns the winding.
+    // Normals go through the inverse transpose of the upper 3x3 (a, b, c / d, e, f / g, h, k, by rows): the
+    // cofactor matrix, which is det x that, times the sign of det. A mirroring transform turns the winding.
     const double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6], k = m[10];
     const double det = a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
-    const double n[9] = {e * k - f * h, c * h - b * k, b * f - c * e,  // rows of the cofactor matrix
-                         f * g - d * k, a * k - c * g, c * d - a * f,  // = det x the inverse transpose
-                         d * h - e * g, b * g - a * h, a * e - b * d};
     const bool mirrored = det < 0;
+    const double sign = mirrored ? -1 : 1;
+    const double n[9] = {sign * (e * k - f * h), sign * (f * g - d * k), sign * (d * h - e * g),
+                         sign * (c * h - b * k), sign * (a * k - c * g), sign * (b * g - a * h),
+                         sign * (b * f - c * e), sign * (c * d - a * f), sign * (a * e - b * d)};
     const auto& primitives = model_.meshes[static_cast<std::size_t>(index)].primitives;
     for (std::size_t pi = 0; pi < primitives.size(); ++pi) {
       const tinygltf::Primitive& p = primitives[pi];
@@ -385,7 +553,7 @@ class Reader {
       const std::size_t count = positions.count();
       add_normals(p, where, count, n);
       const Material material = material_of(p.material, where);
-      add_colours(p, where, count, material.colour);
+      add_colours(p, where, count, material.colour, material.blend);
       add_uvs(p, where, count, material);
 
       // The primitive's corner order: its indices, or 0..count-1.
@@ -420,7 +588,7 @@ class Reader {
   }
 
   void add_colours(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
-                   const std::array<double, 4>& factor) {
+                   const std::array<double, 4>& factor, bool blend) {
     const auto it = p.attributes.find("COLOR_0");
     std::optional<AccessorView> colours;
     if (it != p.attributes.end()) {
@@ -441,6 +609,7 @@ class Reader {
     for (std::size_t i = 0; i < count; ++i) {
       double c[4] = {factor[0], factor[1], factor[2], factor[3]};
       for (int k = 0; k < colours->components(); ++k) c[k] *= colours->get(i, k);
+      if (!blend) c[3] = 1;  // an opaque material is opaque whatever its vertices' alpha
       mesh_.colors.push_back(encoded(c));
     }
   }
@@ -449,6 +618,7 @@ class Reader {
     std::array<double, 4> colour{0.8, 0.8, 0.8, 1};  ///< linear RGBA: baseColorFactor, or the default grey
     std::int32_t texture = -1;                       ///< index into mesh_.textures, or -1
     int texcoord = 0;                                ///< which TEXCOORD_n the texture reads
+    bool blend = false;                              ///< alphaMode BLEND: alpha is kept; else opaque
   };
 
   Material material_of(int index, const std::string& where) {
@@ -464,7 +634,8 @@ class Reader {
     const auto& pbr = mat.pbrMetallicRoughness;
     for (std::size_t k = 0; k < 4 && k < pbr.baseColorFactor.size(); ++k)
       out.colour[k] = pbr.baseColorFactor[k];
-    if (mat.alphaMode != "BLEND") out.colour[3] = 1;
+    out.blend = mat.alphaMode == "BLEND";
+    if (!out.blend) out.colour[3] = 1;
     (mat.extensions.count("KHR_materials_unlit") ? any_unlit_ : any_lit_) = true;
     if (pbr.baseColorTexture.index >= 0) {
       out.texture = texture_of(pbr.baseColorTexture.index, where);
@@ -613,21 +784,54 @@ std::vector<std::string> gltf_files(std::string_view bytes) {
 
 Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& files) {
   if (bytes.size() > 0xFFFFFFFFu) gltf_error("the model is over 4 GB", ErrorKind::limit);
-  tinygltf::Model model;
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&keep_image, &model);
-  loader.SetFsCallbacks({&upload_exists, &same_path, &read_upload, &write_nothing,
-                         const_cast<Uploads*>(&files)});  // read only: the callbacks never write
-  std::string err, warn;
   const bool binary = bytes.starts_with("glTF");
   if (binary && bytes.size() >= 8 && bytes[4] != 2)
     gltf_error("the file is a GLB of version " + std::to_string(static_cast<unsigned char>(bytes[4])) +
                "; rasterd reads glTF 2.0 (Blender and the glTF tools convert older files)");
-  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                                       reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                       static_cast<unsigned int>(bytes.size()))
-                         : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
-                                                      static_cast<unsigned int>(bytes.size()), "");
+  // Checked before tinygltf sees the document: it is JSON within the depth limit (tinygltf turns "extras"
+  // into Values recursively: 50,000 nested '[' overflowed the stack), what it would build is bounded, and
+  // the buffers it would copy fit in the bytes sent.
+  std::uint64_t sent = bytes.size();
+  for (const auto& [name, file] : files) sent += file.size();
+  Shape shape;
+  try {
+    shape = shape_of(binary ? glb_json(bytes) : bytes, limits.max_json_depth, files);
+  } catch (const SceneError& e) {
+    gltf_error(std::string("the document is not JSON: ") + e.what() +
+               (e.where().byte ? " (byte " + std::to_string(e.where().byte) + " of the JSON)" : ""));
+  }
+  if (shape.structure_bytes > kMaxStructureBytes)
+    gltf_error("the document describes about " + std::to_string(shape.structure_bytes >> 20) +
+                   " MB of nodes, meshes, materials and other objects; rasterd reads at most " +
+                   std::to_string(kMaxStructureBytes >> 20) + " MB",
+               ErrorKind::limit);
+  if (!shape.missing.empty())
+    gltf_error("the model asks for buffer \"" + shape.missing +
+               "\", which was not sent; sent: " + upload_names(files) +
+               ". Send it as a multipart part with that file name (curl -F 'file=@" + shape.missing + "')");
+  if (shape.buffer_bytes > sent)
+    gltf_error("the buffers declare " + std::to_string(shape.buffer_bytes) + " bytes, more than the " +
+               std::to_string(sent) + " bytes sent");
+  if (binary && shape.buffers_without_uri > 1)
+    gltf_error("more than one buffer has no URI; only the first may be a GLB's binary chunk");
+
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  CopyBudget budget{&model, &files, sent};
+  loader.SetImageLoader(&keep_image, &budget);
+  loader.SetFsCallbacks({&upload_exists, &same_path, &read_upload, &write_nothing, &budget});
+  std::string err, warn;
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                              reinterpret_cast<const unsigned char*>(bytes.data()),
+                                              static_cast<unsigned int>(bytes.size()))
+                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                             static_cast<unsigned int>(bytes.size()), "");
+  } catch (const std::exception&
+               e) {  // tinygltf 2.7.0 indexes some vectors with at(): e.g. a GLB buffer of 0 bytes
+    err = e.what();
+  }
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     for (char& c : err)

@@ -356,8 +356,13 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
                         in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
             corners.push_back(static_cast<std::uint32_t>(v));
           }
-          // The face count was checked against the limit; the triangles of its lists, by the bytes they fill.
-          if (corners.size() >= 3) triangulate(corners, mesh.positions, mesh.triangles);
+          // The limit counts triangles, as for STL and glTF: one face of a million corners is a million.
+          if (corners.size() >= 3) {
+            if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_obj_faces))
+              throw SceneError(ErrorKind::limit,
+                               "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+            triangulate(corners, mesh.positions, mesh.triangles);
+          }
           continue;
         }
         const double v = in.read(p.type);

@@ -40,10 +40,11 @@ float le_float(const char* p) {
 
 Mesh read_binary(std::string_view bytes, const Limits& limits) {
   const std::uint32_t count = le_u32(bytes.data() + 80);
-  // sniff_model matched the size to the count already; a caller naming the format did not.
-  if (bytes.size() != 84 + 50 * std::uint64_t{count})
+  // sniff_model matched the size to the count already; a caller naming the format did not. Bytes after the
+  // triangles (some writers pad the file) are left unread; triangles the bytes do not hold are an error.
+  if (bytes.size() < 84 + 50 * std::uint64_t{count})
     stl_error("a binary STL of " + std::to_string(count) + " triangles is " +
-                  std::to_string(84 + 50 * std::uint64_t{count}) + " bytes; this one is " +
+                  std::to_string(84 + 50 * std::uint64_t{count}) + " bytes; this one has only " +
                   std::to_string(bytes.size()),
               0, 81);
   if (count == 0) stl_error("the model has no triangles");
@@ -155,7 +156,7 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
     }
     if (!iequal(w, "facet")) stl_error("expected \"facet\" or \"endsolid\", got " + quoted(w), in.line());
     expect(in, "normal");
-    for (int k = 0; k < 3; ++k) number(in);  // not used: see parse_stl
+    for (int k = 0; k < 3; ++k) in.next();  // not read (see parse_stl): writers put "nan" here for slivers
     expect(in, "outer");
     expect(in, "loop");
     const std::size_t first = mesh.positions.size();
@@ -185,14 +186,15 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
 }  // namespace
 
 Mesh parse_stl(std::string_view bytes, const Limits& limits) {
-  // ASCII when it starts with "solid", unless its size is a binary STL's and its second line is not a
-  // facet: some binary writers start their header with "solid" too.
+  // ASCII when it starts with "solid", unless its second line is not a facet and its size holds the
+  // triangles its header counts: some binary writers start the header with "solid" too (and some pad the
+  // file). Text's bytes 80..83 count at least 0x09090909 triangles, which no text is long enough to hold.
   Words words(bytes);
   const bool solid = iequal(words.next(), "solid");
   words.skip_line();
   const std::string_view second = words.next();
   const bool binary_size =
-      bytes.size() >= 84 && bytes.size() == 84 + 50 * std::uint64_t{le_u32(bytes.data() + 80)};
+      bytes.size() >= 84 && bytes.size() >= 84 + 50 * std::uint64_t{le_u32(bytes.data() + 80)};
   if (solid && (!binary_size || iequal(second, "facet") || iequal(second, "endsolid")))
     return read_ascii(bytes, limits);
   if (bytes.size() < 84)
