@@ -247,12 +247,13 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   // so every byte offset in an error still counts from the start of what was sent.
   if (body.starts_with(kUtf8Bom)) body.replace(0, kUtf8Bom.size(), kUtf8Bom.size(), ' ');
   // A glTF document is JSON too (model/gltf+json ends in "+json"): its first key tells it from a scene.
-  // A binary STL's header may start with '{' too; a file name or Content-Type that says glTF decides a JSON
-  // document whose first key is not one sniff_model knows.
+  // A glTF document is JSON too: its bytes, its file name or a model Content-Type make it a model. A body the
+  // request calls JSON is otherwise a scene (an OBJ sent so gets a hint below); an undeclared one is a scene
+  // by its first byte unless its bytes are a model's (a binary STL's header may start with '{').
   const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(body);
-  const bool named_gltf =
-      named_format == raster::ModelFormat::gltf || named_format == raster::ModelFormat::glb;
-  if ((declared_json || is_scene_text(body)) && !sniffed && !named_gltf) {
+  const bool gltf = sniffed == raster::ModelFormat::gltf || named_format == raster::ModelFormat::gltf ||
+                    named_format == raster::ModelFormat::glb;
+  if (!gltf && (declared_json || (is_scene_text(body) && !sniffed))) {
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {
       if (name == "explain") continue;
