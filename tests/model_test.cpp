@@ -294,6 +294,49 @@ TEST(Models, GltfNormalsFollowRotationsAndMirrors) {
   EXPECT_EQ(blended.colors[0].a, 64);
 }
 
+// Primitives of one mesh share its arrays: the second one's indices are offset by the first one's vertices;
+// the mesh keeps one colour while every primitive has the same, and one per vertex, in order, once they
+// differ; an index past the primitive's vertices is reported with its element.
+TEST(Models, GltfPrimitivesShareTheMeshAndIndicesAreChecked) {
+  std::string buffer;
+  for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) test::put<float>(buffer, v);
+  for (std::uint16_t i : {0, 1, 2, 0}) test::put<std::uint16_t>(buffer, i);  // 0, 1, 2 and padding
+  for (std::uint8_t i : {0, 1, 3, 0}) buffer.push_back(static_cast<char>(i));  // 3: past the vertices
+  auto doc = [&](int second_material, int second_indices) {
+    return R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [
+        {"attributes": {"POSITION": 0}, "indices": 1, "material": 0},
+        {"attributes": {"POSITION": 0}, "indices": )" +
+           std::to_string(second_indices) + R"(, "material": )" + std::to_string(second_material) + R"(}]}],
+      "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1]}},
+                    {"pbrMetallicRoughness": {"baseColorFactor": [0, 1, 0, 1]}}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
+                    {"bufferView": 2, "componentType": 5121, "count": 3, "type": "SCALAR"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 8},
+                      {"buffer": 0, "byteOffset": 44, "byteLength": 4}],
+      "buffers": [{"byteLength": 48, "uri": "b.bin"}]})";
+  };
+  const raster::Uploads files{{"b.bin", buffer}};
+  const raster::Rgba8 red{255, 0, 0, 255}, green{0, 255, 0, 255};
+  const raster::Mesh two = raster::parse_gltf(doc(1, 1), {}, files);
+  ASSERT_EQ(two.positions.size(), 6u);
+  EXPECT_EQ(two.triangles, (std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {3, 4, 5}}));
+  EXPECT_EQ(two.colors, (std::vector<raster::Rgba8>{red, red, red, green, green, green}));
+  const raster::Mesh one = raster::parse_gltf(doc(0, 1), {}, files);
+  EXPECT_EQ(one.triangles.size(), 2u);
+  EXPECT_EQ(one.colors, std::vector<raster::Rgba8>{red});
+  try {
+    raster::parse_gltf(doc(0, 2), {}, files);
+    ADD_FAILURE() << "an index past the vertices was read";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::model);
+    EXPECT_NE(std::string(e.what()).find("mesh 0 primitive 1 indices (accessor 2) element 2 is 3, but the "
+                                         "primitive has 3 vertices"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // Documents that would drive tinygltf 2.7.0 into a crash, a read past the input, an exception or a huge
 // allocation are refused before it runs.
 TEST(Models, GltfDocumentsThatWouldHurtTinygltfAreRefusedFirst) {

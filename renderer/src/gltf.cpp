@@ -407,18 +407,32 @@ class AccessorView {
     for (std::size_t i = 0; i < count_; ++i) f(i, get(i, 0), get(i, 1), get(i, 2));
   }
 
-  // Every index, offset by `base`, into `out`; the first one >= `limit` throws, naming its element.
+  // Every index, offset by `base`, into `out`; the first one >= `limit` throws, naming its element. One
+  // branch-free pass that the compiler vectorizes when the indices are packed (as writers store them): the
+  // largest index is checked once at the end, and only then is the bad one looked for, for its element.
   void indices(std::uint32_t base, std::uint64_t limit, std::vector<std::uint32_t>& out) const {
     out.resize(count_);
     auto all = [&]<typename T>(T) {
-      for (std::size_t i = 0; i < count_; ++i) {
+      auto at = [&](std::size_t i, std::size_t stride) {
         T v;
-        std::memcpy(&v, data_ + i * stride_, sizeof v);
-        if (v >= limit)
-          gltf_error(what_ + " element " + std::to_string(i) + " is " + std::to_string(v) + ", but the primitive has " +
-                     std::to_string(limit) + " vertices");
-        out[i] = base + static_cast<std::uint32_t>(v);
-      }
+        std::memcpy(&v, data_ + i * stride, sizeof v);
+        return v;
+      };
+      std::uint32_t* o = out.data();
+      T largest = 0;
+      auto copy = [&](std::size_t stride) {
+        for (std::size_t i = 0; i < count_; ++i) {
+          const T v = at(i, stride);
+          largest = std::max(largest, v);
+          o[i] = base + v;  // wraps only for an index past the vertices, which throws below
+        }
+      };
+      stride_ == sizeof(T) ? copy(sizeof(T)) : copy(stride_);
+      if (count_ == 0 || largest < limit) return;
+      for (std::size_t i = 0; i < count_; ++i)
+        if (const T v = at(i, stride_); v >= limit)
+          gltf_error(what_ + " element " + std::to_string(i) + " is " + std::to_string(v) +
+                     ", but the primitive has " + std::to_string(limit) + " vertices");
     };
     switch (component_) {
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return all(std::uint8_t{});
@@ -502,8 +516,8 @@ class Reader {
       mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
       mesh_.uv_triangles = mesh_.triangles;
     }
-    // One colour for the whole mesh when every vertex has the same (a model of one material).
-    if (!mesh_.colors.empty() &&
+    // One colour for the whole mesh when every vertex has the same (COLOR_0 of one value).
+    if (!one_colour_ &&
         std::all_of(mesh_.colors.begin(), mesh_.colors.end(), [&](Rgba8 c) { return c == mesh_.colors.front(); }))
       mesh_.colors.erase(mesh_.colors.begin() + 1, mesh_.colors.end());
     if (any_lit_ == false && any_unlit_) mesh_.shading = Shading::unlit;
@@ -539,14 +553,14 @@ class Reader {
       make_room(mesh_.positions, positions.count());
       mesh_.positions.resize(base + positions.count());
       Vec3* out = mesh_.positions.data() + base;
-      double sum = 0;  // a NaN or an infinity anywhere makes the sum one: checked once, found after
+      bool finite = true;  // checked once, without a branch (or a chain of additions) per vertex
       positions.each_vec3([&](std::size_t i, double x, double y, double z) {
         const Vec3 w{m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13],
                      m[2] * x + m[6] * y + m[10] * z + m[14]};
-        sum += w.x * 0 + w.y * 0 + w.z * 0;
+        finite &= std::isfinite(w.x) & std::isfinite(w.y) & std::isfinite(w.z);
         out[i] = w;
       });
-      if (!std::isfinite(sum))
+      if (!finite)
         for (std::size_t i = 0; i < positions.count(); ++i)
           if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
             gltf_error(positions.what() + " element " + std::to_string(i) + " is not a finite point");
@@ -601,10 +615,18 @@ class Reader {
       return {unit_byte(srgb_of_linear(c[0])), unit_byte(srgb_of_linear(c[1])), unit_byte(srgb_of_linear(c[2])),
               unit_byte(c[3])};
     };
-    if (!colours) {  // one colour for the primitive, encoded once
-      mesh_.colors.insert(mesh_.colors.end(), count, encoded(factor.data()));
+    const std::size_t base = mesh_.positions.size() - count;
+    if (!colours) {  // one colour for the primitive, encoded once, and stored once while the mesh has one
+      const Rgba8 c = encoded(factor.data());
+      if (one_colour_ && (base == 0 || mesh_.colors.front() == c)) {
+        mesh_.colors.assign(1, c);
+        return;
+      }
+      colour_each_vertex(base);
+      mesh_.colors.insert(mesh_.colors.end(), count, c);
       return;
     }
+    colour_each_vertex(base);
     make_room(mesh_.colors, count);
     for (std::size_t i = 0; i < count; ++i) {
       double c[4] = {factor[0], factor[1], factor[2], factor[3]};
@@ -612,6 +634,15 @@ class Reader {
       if (!blend) c[3] = 1;  // an opaque material is opaque whatever its vertices' alpha
       mesh_.colors.push_back(encoded(c));
     }
+  }
+
+  // From one colour for the mesh to one for each of the `vertices` read so far.
+  void colour_each_vertex(std::size_t vertices) {
+    if (!one_colour_) return;
+    one_colour_ = false;
+    if (vertices == 0) return;
+    const Rgba8 c = mesh_.colors.front();
+    mesh_.colors.assign(vertices, c);
   }
 
   struct Material {
@@ -714,10 +745,17 @@ class Reader {
   void add_faces(int mode, const std::vector<std::uint32_t>& v, bool mirrored, const std::string& where) {
     const std::size_t n = v.size();
     switch (mode) {
-      case TINYGLTF_MODE_TRIANGLES:
-        make_room_for_triangles(n / 3);
-        for (std::size_t i = 0; i + 2 < n; i += 3) add_triangle(v[i], v[i + 1], v[i + 2], mirrored);
+      case TINYGLTF_MODE_TRIANGLES: {  // the common case, in straight loops rather than one call a triangle
+        const std::size_t count = n / 3, first = mesh_.triangles.size();
+        make_room_for_triangles(count);
+        mesh_.triangles.resize(first + count);
+        std::array<std::uint32_t, 3>* t = mesh_.triangles.data() + first;
+        for (std::size_t i = 0; i < count; ++i) t[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        if (mirrored)
+          for (std::size_t i = 0; i < count; ++i) std::swap(t[i][1], t[i][2]);
+        if (textured_) mesh_.face_textures.insert(mesh_.face_textures.end(), count, primitive_texture_);
         break;
+      }
       case TINYGLTF_MODE_TRIANGLE_STRIP:  // every other triangle turned back to the strip's winding
         make_room_for_triangles(n < 2 ? 0 : n - 2);
         for (std::size_t i = 0; i + 2 < n; ++i)
@@ -753,6 +791,7 @@ class Reader {
   std::int32_t primitive_texture_ = -1;
   bool all_normals_ = true, any_lit_ = false, any_unlit_ = false;
   bool textured_ = false;  ///< a primitive so far had a texture and its coordinates
+  bool one_colour_ = true;  ///< every vertex so far has mesh_.colors[0]: it is stored once
   std::vector<std::uint32_t> corners_;  ///< the current primitive's vertex order, kept for its capacity
 };
 
