@@ -116,6 +116,57 @@ TEST(Models, PlyQuadsAreSplitAsObjQuadsAre) {
   EXPECT_NE(raster::parse_ply(write_ply_ascii(bent)).triangles, ply.triangles);
 }
 
+// Normals, uchar colours and properties rasterd does not use, beside an element of its own before the
+// vertices: ASCII and binary of both byte orders read alike, each value from its own property.
+TEST(Models, PlyVertexPropertiesAreReadInEveryEncoding) {
+  auto header = [](const std::string& format) {
+    return "ply\nformat " + format +
+           " 1.0\nelement camera 2\nproperty float view\nproperty uchar red\nelement vertex 3\n"
+           "property short quality\nproperty float x\nproperty float y\nproperty float z\n"
+           "property float nx\nproperty float ny\nproperty float nz\nproperty uchar red\n"
+           "property uchar green\nproperty uchar blue\nproperty double confidence\n"
+           "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+  };
+  const float position[3][3] = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0.5f}};
+  std::string ascii = header("ascii") + "1 9\n2 9\n";
+  for (int i = 0; i < 3; ++i)
+    ascii += "-7 " + std::to_string(position[i][0]) + " " + std::to_string(position[i][1]) + " " +
+             std::to_string(position[i][2]) + " 0 0 1 " + std::to_string(10 * i) + " 128 255 0.5\n";
+  ascii += "3 0 1 2\n";
+  auto binary = [&](bool big) {
+    std::string s = header(big ? "binary_big_endian" : "binary_little_endian");
+    for (int k = 0; k < 2; ++k) put<float>(s, 1.f + k, big), put<std::uint8_t>(s, 9);
+    for (int i = 0; i < 3; ++i) {
+      put<std::int16_t>(s, -7, big);
+      for (float v : position[i]) put<float>(s, v, big);
+      for (float v : {0.f, 0.f, 1.f}) put<float>(s, v, big);
+      for (int c : {10 * i, 128, 255}) put<std::uint8_t>(s, static_cast<std::uint8_t>(c));
+      put<double>(s, 0.5, big);
+    }
+    put<std::uint8_t>(s, 3);
+    for (std::uint32_t v : {0u, 1u, 2u}) put<std::uint32_t>(s, v, big);
+    return s;
+  };
+  const raster::Mesh mesh = raster::parse_ply(ascii);
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.positions[2], (raster::Vec3{0, 3, 0.5}));
+  EXPECT_EQ(mesh.normals, std::vector<raster::Vec3>(3, raster::Vec3{0, 0, 1}));
+  EXPECT_EQ(mesh.colors,
+            (std::vector<raster::Rgba8>{{0, 128, 255, 255}, {10, 128, 255, 255}, {20, 128, 255, 255}}));
+  EXPECT_EQ(mesh.triangles, (std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}}));
+  EXPECT_EQ(raster::parse_ply(binary(false)), mesh);
+  EXPECT_EQ(raster::parse_ply(binary(true)), mesh);
+  // One byte short of the vertices (3 x 37 bytes after the cameras' 2 x 5): the element is refused.
+  const std::string cut = binary(false).substr(0, header("binary_little_endian").size() + 10 + 3 * 37 - 1);
+  try {
+    raster::parse_ply(cut);
+    ADD_FAILURE() << "a cut vertex element was read";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("element \"vertex\" ends after the data"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Models, FormatsAreToldByTheirBytesThenByName) {
   EXPECT_EQ(raster::sniff_model("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), ModelFormat::obj);
   EXPECT_EQ(raster::sniff_model("# only a comment\n\n# and another\no box\nv 0 0 0\n"), ModelFormat::obj);
@@ -300,7 +351,7 @@ TEST(Models, GltfNormalsFollowRotationsAndMirrors) {
 TEST(Models, GltfPrimitivesShareTheMeshAndIndicesAreChecked) {
   std::string buffer;
   for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) test::put<float>(buffer, v);
-  for (std::uint16_t i : {0, 1, 2, 0}) test::put<std::uint16_t>(buffer, i);  // 0, 1, 2 and padding
+  for (std::uint16_t i : {0, 1, 2, 0}) test::put<std::uint16_t>(buffer, i);    // 0, 1, 2 and padding
   for (std::uint8_t i : {0, 1, 3, 0}) buffer.push_back(static_cast<char>(i));  // 3: past the vertices
   auto doc = [&](int second_material, int second_indices) {
     return R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [
@@ -409,16 +460,21 @@ TEST(Models, ATexturedGltfRendersAsTheSameObjDoes) {
       test::put<float>(buffer, 1 - uv[1]);  // glTF's v runs down from the image's top
     }
   const std::string n = std::to_string(box.triangles.size() * 3);
-  const std::string gltf = R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "material": 0}]}],
     "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
     "textures": [{"source": 0}], "images": [{"uri": "maps/box_diffuse.png"}],
-    "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" + n + R"(, "type": "VEC3"},
-                  {"bufferView": 1, "componentType": 5126, "count": )" + n + R"(, "type": "VEC2"}],
-    "bufferViews": [{"buffer": 0, "byteLength": )" + std::to_string(positions) + R"(},
-                    {"buffer": 0, "byteOffset": )" + std::to_string(positions) + R"(, "byteLength": )" +
-                           std::to_string(buffer.size() - positions) + R"(}],
-    "buffers": [{"byteLength": )" + std::to_string(buffer.size()) + R"(, "uri": "box.bin"}]})";
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
+      n + R"(, "type": "VEC3"},
+                  {"bufferView": 1, "componentType": 5126, "count": )" +
+      n + R"(, "type": "VEC2"}],
+    "bufferViews": [{"buffer": 0, "byteLength": )" +
+      std::to_string(positions) + R"(},
+                    {"buffer": 0, "byteOffset": )" +
+      std::to_string(positions) + R"(, "byteLength": )" + std::to_string(buffer.size() - positions) + R"(}],
+    "buffers": [{"byteLength": )" +
+      std::to_string(buffer.size()) + R"(, "uri": "box.bin"}]})";
   const raster::Image from_obj = render_model(obj, "unlit", obj_files);
   const raster::Image from_gltf = render_model(
       gltf, "unlit", {{"box.bin", buffer}, {"box_diffuse.png", obj_files.at("box_diffuse.png")}});
@@ -429,7 +485,8 @@ TEST(Models, ATexturedGltfRendersAsTheSameObjDoes) {
     render_model(gltf, "unlit", {{"box.bin", buffer}});
     ADD_FAILURE() << "accepted";
   } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("\"box_diffuse.png\", which was not sent"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"box_diffuse.png\", which was not sent"), std::string::npos)
+        << e.what();
   }
 }
 

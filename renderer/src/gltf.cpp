@@ -435,13 +435,15 @@ class AccessorView {
                      ", but the primitive has " + std::to_string(limit) + " vertices");
     };
     switch (component_) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return all(std::uint8_t{});
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return all(std::uint16_t{});
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return all(std::uint32_t{});
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return all(std::uint8_t{});
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return all(std::uint16_t{});
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return all(std::uint32_t{});
     }
     gltf_error(what_ + " holds indices of a type that is not an unsigned integer");
   }
-
 
  private:
   template <typename T>
@@ -517,8 +519,8 @@ class Reader {
       mesh_.uv_triangles = mesh_.triangles;
     }
     // One colour for the whole mesh when every vertex has the same (COLOR_0 of one value).
-    if (!one_colour_ &&
-        std::all_of(mesh_.colors.begin(), mesh_.colors.end(), [&](Rgba8 c) { return c == mesh_.colors.front(); }))
+    if (!one_colour_ && std::all_of(mesh_.colors.begin(), mesh_.colors.end(),
+                                    [&](Rgba8 c) { return c == mesh_.colors.front(); }))
       mesh_.colors.erase(mesh_.colors.begin() + 1, mesh_.colors.end());
     if (any_lit_ == false && any_unlit_) mesh_.shading = Shading::unlit;
     return std::move(mesh_);
@@ -573,7 +575,8 @@ class Reader {
       // The primitive's corner order: its indices, or 0..count-1.
       std::vector<std::uint32_t>& corners = corners_;
       if (p.indices >= 0) {
-        AccessorView(model_, p.indices, where + " indices").indices(static_cast<std::uint32_t>(base), count, corners);
+        AccessorView(model_, p.indices, where + " indices")
+            .indices(static_cast<std::uint32_t>(base), count, corners);
       } else {
         corners.resize(count);
         for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(base + i);
@@ -612,8 +615,8 @@ class Reader {
     }
     // glTF colours are linear; the 8-bit colours lit here are sRGB-encoded, as texels are.
     auto encoded = [](const double* c) -> Rgba8 {
-      return {unit_byte(srgb_of_linear(c[0])), unit_byte(srgb_of_linear(c[1])), unit_byte(srgb_of_linear(c[2])),
-              unit_byte(c[3])};
+      return {unit_byte(srgb_of_linear(c[0])), unit_byte(srgb_of_linear(c[1])),
+              unit_byte(srgb_of_linear(c[2])), unit_byte(c[3])};
     };
     const std::size_t base = mesh_.positions.size() - count;
     if (!colours) {  // one colour for the primitive, encoded once, and stored once while the mesh has one
@@ -790,8 +793,8 @@ class Reader {
   std::int64_t texel_budget_ = limits_.max_texture_pixels;
   std::int32_t primitive_texture_ = -1;
   bool all_normals_ = true, any_lit_ = false, any_unlit_ = false;
-  bool textured_ = false;  ///< a primitive so far had a texture and its coordinates
-  bool one_colour_ = true;  ///< every vertex so far has mesh_.colors[0]: it is stored once
+  bool textured_ = false;               ///< a primitive so far had a texture and its coordinates
+  bool one_colour_ = true;              ///< every vertex so far has mesh_.colors[0]: it is stored once
   std::vector<std::uint32_t> corners_;  ///< the current primitive's vertex order, kept for its capacity
 };
 

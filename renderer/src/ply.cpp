@@ -159,6 +159,37 @@ Header read_header(std::string_view bytes) {
   return h;
 }
 
+template <typename T>
+T load_as(const unsigned char* p, bool swapped) {
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, p, sizeof b);
+  if (swapped) std::reverse(b, b + sizeof b);
+  return std::bit_cast<T>(b);
+}
+
+// One binary value of type t at p, in the file's byte order (swapped: not this machine's).
+double load(const unsigned char* p, Type t, bool swapped) {
+  switch (t) {
+    case Type::i8:
+      return static_cast<std::int8_t>(p[0]);
+    case Type::u8:
+      return p[0];
+    case Type::i16:
+      return load_as<std::int16_t>(p, swapped);
+    case Type::u16:
+      return load_as<std::uint16_t>(p, swapped);
+    case Type::i32:
+      return load_as<std::int32_t>(p, swapped);
+    case Type::u32:
+      return load_as<std::uint32_t>(p, swapped);
+    case Type::f32:
+      return load_as<float>(p, swapped);
+    case Type::f64:
+      return load_as<double>(p, swapped);
+  }
+  return 0;
+}
+
 // The data of the elements, one value at a time, in the file's encoding.
 class Values {
  public:
@@ -172,6 +203,14 @@ class Values {
 
   double read(Type t) { return ascii() ? read_text() : read_binary(t); }
 
+  // Binary: the next n bytes, which the caller checked are there (n <= left()).
+  const unsigned char* take(std::size_t n) {
+    const unsigned char* p = reinterpret_cast<const unsigned char*>(bytes_.data()) + at_;
+    at_ += n;
+    return p;
+  }
+  bool swapped() const { return (enc_ == Encoding::big) != (std::endian::native == std::endian::big); }
+
   // Skips n values of type t (binary: without looking at them).
   void skip(Type t, std::uint64_t n) {
     if (!ascii()) {
@@ -184,37 +223,9 @@ class Values {
 
  private:
   double read_binary(Type t) {
-    const int size = kSize[static_cast<int>(t)];
-    if (left() < static_cast<std::size_t>(size)) ply_error("the data ends early", 0, bytes_.size());
-    unsigned char b[8];
-    std::memcpy(b, bytes_.data() + at_, size);
-    at_ += size;
-    if ((enc_ == Encoding::big) != (std::endian::native == std::endian::big)) std::reverse(b, b + size);
-    switch (t) {
-      case Type::i8:
-        return static_cast<std::int8_t>(b[0]);
-      case Type::u8:
-        return b[0];
-      case Type::i16:
-        return load<std::int16_t>(b);
-      case Type::u16:
-        return load<std::uint16_t>(b);
-      case Type::i32:
-        return load<std::int32_t>(b);
-      case Type::u32:
-        return load<std::uint32_t>(b);
-      case Type::f32:
-        return load<float>(b);
-      case Type::f64:
-        return load<double>(b);
-    }
-    return 0;
-  }
-  template <typename T>
-  static double load(const unsigned char* b) {
-    T v;
-    std::memcpy(&v, b, sizeof v);
-    return static_cast<double>(v);
+    if (left() < static_cast<std::size_t>(kSize[static_cast<int>(t)]))
+      ply_error("the data ends early", 0, bytes_.size());
+    return load(take(kSize[static_cast<int>(t)]), t, swapped());
   }
   double read_text() {
     while (at_ < bytes_.size()) {
@@ -331,6 +342,85 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
         ply_error("the face element comes before the vertex element; write the vertices first", e.line);
       mesh.triangles.reserve(e.count);
     }
+    // What the vertex element's value of property p sets.
+    auto set = [](Role role, double v, Type type, Vec3& pos, Vec3& normal, Rgba8& colour) {
+      switch (role) {
+        case Role::x:
+          pos.x = v;
+          break;
+        case Role::y:
+          pos.y = v;
+          break;
+        case Role::z:
+          pos.z = v;
+          break;
+        case Role::nx:
+          normal.x = v;
+          break;
+        case Role::ny:
+          normal.y = v;
+          break;
+        case Role::nz:
+          normal.z = v;
+          break;
+        case Role::red:
+          colour.r = colour_byte(v, type);
+          break;
+        case Role::green:
+          colour.g = colour_byte(v, type);
+          break;
+        case Role::blue:
+          colour.b = colour_byte(v, type);
+          break;
+        case Role::alpha:
+          colour.a = colour_byte(v, type);
+          break;
+        default:
+          break;
+      }
+    };
+    auto store = [&](std::uint64_t i, const Vec3& pos, const Vec3& normal, Rgba8 colour) {
+      if (!std::isfinite(pos.x) || !std::isfinite(pos.y) || !std::isfinite(pos.z))
+        ply_error("vertex " + std::to_string(i) + " has a coordinate that is not a finite number",
+                  in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
+      mesh.positions[i] = pos;
+      if (normals) mesh.normals[i] = normal;
+      if (colours) mesh.colors[i] = colour;
+    };
+    const bool fixed =
+        std::none_of(e.properties.begin(), e.properties.end(), [](const Property& p) { return p.list; });
+    if (!in.ascii() && fixed) {
+      // Binary entries of one size (no lists): checked once for the whole element, then each property read
+      // at its offset, the others passed over, rather than value by value.
+      const std::uint64_t stride = min_bytes(e, h.encoding);
+      if (e.count * stride > in.left())  // e.count <= data bytes / stride: no overflow
+        ply_error("element \"" + e.name + "\" ends after the data", e.line, bytes.size());
+      if (&e != vertex) {
+        in.take(static_cast<std::size_t>(e.count * stride));
+        continue;
+      }
+      struct Field {
+        std::size_t offset;
+        Type type;
+        Role role;
+      };
+      std::vector<Field> fields;
+      std::size_t offset = 0;
+      for (const Property& p : e.properties) {
+        if (p.role != Role::none) fields.push_back({offset, p.type, p.role});
+        offset += kSize[static_cast<int>(p.type)];
+      }
+      const bool swapped = in.swapped();
+      for (std::uint64_t i = 0; i < e.count; ++i) {
+        const unsigned char* entry = in.take(static_cast<std::size_t>(stride));
+        Vec3 pos, normal;
+        Rgba8 colour;
+        for (const Field& f : fields)
+          set(f.role, load(entry + f.offset, f.type, swapped), f.type, pos, normal, colour);
+        store(i, pos, normal, colour);
+      }
+      continue;
+    }
     for (std::uint64_t i = 0; i < e.count; ++i) {
       Vec3 pos, normal;
       Rgba8 colour;
@@ -366,50 +456,9 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
           continue;
         }
         const double v = in.read(p.type);
-        if (&e != vertex) continue;
-        switch (p.role) {
-          case Role::x:
-            pos.x = v;
-            break;
-          case Role::y:
-            pos.y = v;
-            break;
-          case Role::z:
-            pos.z = v;
-            break;
-          case Role::nx:
-            normal.x = v;
-            break;
-          case Role::ny:
-            normal.y = v;
-            break;
-          case Role::nz:
-            normal.z = v;
-            break;
-          case Role::red:
-            colour.r = colour_byte(v, p.type);
-            break;
-          case Role::green:
-            colour.g = colour_byte(v, p.type);
-            break;
-          case Role::blue:
-            colour.b = colour_byte(v, p.type);
-            break;
-          case Role::alpha:
-            colour.a = colour_byte(v, p.type);
-            break;
-          default:
-            break;
-        }
+        if (&e == vertex) set(p.role, v, p.type, pos, normal, colour);
       }
-      if (&e == vertex) {
-        if (!std::isfinite(pos.x) || !std::isfinite(pos.y) || !std::isfinite(pos.z))
-          ply_error("vertex " + std::to_string(i) + " has a coordinate that is not a finite number",
-                    in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
-        mesh.positions[i] = pos;
-        if (normals) mesh.normals[i] = normal;
-        if (colours) mesh.colors[i] = colour;
-      }
+      if (&e == vertex) store(i, pos, normal, colour);
     }
   }
   if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");
