@@ -217,7 +217,11 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
     std::string bytes = std::move(uploads[p.key]);
     uploads.erase(p.key);
     if (p.part != p.key) uploads.erase(p.part);  // the copy add_part_names made under the part's name
-    if (is_scene_text(bytes) && raster::sniff_model(bytes) != raster::ModelFormat::gltf) {
+    // A part whose file name is a model's is that model, even when its bytes start like JSON (a binary STL's
+    // header may start with '{').
+    const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(bytes);
+    const bool gltf = sniffed == raster::ModelFormat::gltf || sniffed == raster::ModelFormat::glb;
+    if (!raster::format_of_file_name(p.key) && is_scene_text(bytes) && !gltf) {
       body = std::move(bytes);
     } else {
       uploads["model"] = std::move(bytes);
@@ -246,14 +250,17 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   // A byte order mark (Windows editors write one) is whitespace to the readers: blanked rather than cut,
   // so every byte offset in an error still counts from the start of what was sent.
   if (body.starts_with(kUtf8Bom)) body.replace(0, kUtf8Bom.size(), kUtf8Bom.size(), ' ');
-  // A glTF document is JSON too (model/gltf+json ends in "+json"): its first key tells it from a scene.
-  // A glTF document is JSON too: its bytes, its file name or a model Content-Type make it a model. A body the
-  // request calls JSON is otherwise a scene (an OBJ sent so gets a hint below); an undeclared one is a scene
-  // by its first byte unless its bytes are a model's (a binary STL's header may start with '{').
+  // A glTF document is JSON too (model/gltf+json ends in "+json"): its bytes, its file name or a model
+  // Content-Type make it a model, and so do a GLB's bytes whatever the request calls them. A body the request
+  // calls JSON is otherwise a scene (an OBJ sent so gets a hint below); an undeclared one is a scene by its
+  // first byte unless its bytes are a model's or a file name or Content-Type names a model format (a binary
+  // STL's header may start with '{').
   const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(body);
-  const bool gltf = sniffed == raster::ModelFormat::gltf || named_format == raster::ModelFormat::gltf ||
-                    named_format == raster::ModelFormat::glb;
-  if (!gltf && (declared_json || (is_scene_text(body) && !sniffed))) {
+  const bool gltf = sniffed == raster::ModelFormat::gltf || sniffed == raster::ModelFormat::glb ||
+                    named_format == raster::ModelFormat::gltf || named_format == raster::ModelFormat::glb;
+  // The named format is the body's only when no part carries the model (multipart: the model part's name).
+  const bool named_model = named_format && !uploads.contains("model");
+  if (!gltf && (declared_json || (is_scene_text(body) && !sniffed && !named_model))) {
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {
       if (name == "explain") continue;

@@ -23,7 +23,8 @@ std::string problem_detail(const httplib::Result& r) {
 TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
   test::TestServer server;
   const test::TestMesh m = test::make_mesh(5);
-  // STL is drawn flat; the formats whose faces share corners are drawn smooth: one picture for each group.
+  // STL is drawn flat, and so is a glTF without normals (glTF's rule); OBJ and PLY without normals are drawn
+  // smooth: one picture for each group.
   struct Body {
     const char* name;
     std::string bytes;
@@ -38,7 +39,7 @@ TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
       {"binary STL, header \"{\"", test::write_stl_binary(m, "{ binary"), "application/octet-stream", true},
       {"OBJ", test::write_obj(m), "model/obj", false},
       {"PLY", test::write_ply_binary(m, false), "application/octet-stream", false},
-      {"GLB", test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary", false}};
+      {"GLB", test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary", true}};
   std::string flat, smooth;
   for (const Body& b : bodies) {
     SCOPED_TRACE(b.name);
@@ -126,6 +127,36 @@ TEST(ModelService, TheFileNameThenTheFormatParameterNameWhatTheBytesDoNot) {
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
   EXPECT_NE(problem_detail(bad).find("query parameter \"format\""), std::string::npos) << bad->body;
+}
+
+// A binary STL whose header starts like JSON and whose writer padded it (so its size tells nothing) is still
+// the model the request names: by Content-Type, by a lone part's file name, by a scene's reference to
+// "part.stl"; a GLB is a model even when the request calls it JSON.
+TEST(ModelService, ANamedModelThatStartsLikeJsonIsStillTheModel) {
+  test::TestServer server;
+  const test::TestMesh m = test::make_mesh(5);
+  const std::string exact = test::write_stl_binary(m, "{ binary");
+  const std::string padded = exact + std::string(6, '\0');
+  auto want = server.client().Post(kQuery, exact, "application/octet-stream");
+  ASSERT_TRUE(want);
+  ASSERT_EQ(want->status, 200) << want->body;
+  const std::string scene =
+      R"({"width": 64, "height": 64, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "part.stl"}]})";
+  auto by_type = server.client().Post(kQuery, padded, "model/stl");
+  auto by_part =
+      server.client().Post(kQuery, httplib::MultipartFormDataItems{{"file", padded, "part.stl", ""}});
+  auto by_reference = server.client().Post(
+      "/render", httplib::MultipartFormDataItems{{"scene", scene, "scene.json", "application/json"},
+                                                 {"part.stl", padded, "part.stl", ""}});
+  for (const auto* r : {&by_type, &by_part, &by_reference}) {
+    ASSERT_TRUE(*r);
+    EXPECT_EQ((*r)->status, 200) << (*r)->body;
+    EXPECT_EQ((*r)->body, want->body);
+  }
+  auto glb_as_json =
+      server.client().Post(kQuery, test::write_glb(test::make_gltf(m, "", true)), "application/json");
+  ASSERT_TRUE(glb_as_json);
+  EXPECT_EQ(glb_as_json->status, 200) << glb_as_json->body;
 }
 
 }  // namespace

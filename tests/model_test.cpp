@@ -428,6 +428,129 @@ TEST(Models, GltfDocumentsThatWouldHurtTinygltfAreRefusedFirst) {
   refused(test::write_glb(empty), ErrorKind::model, "glTF");
 }
 
+// Review findings (issue 32, second review). Values under "extras" become tinygltf Values (~170 bytes for
+// two bytes of text): counted before tinygltf runs. Nodes times primitives are bounded. A primitive without
+// normals is drawn flat, as glTF says, beside one with normals. OPAQUE and MASK decide the texture's alpha.
+// A position beyond +-2^128 names its element.
+TEST(Models, GltfReviewFindingsAreRefusedOrDrawnAsGltfSays) {
+  auto refused = [](const std::string& bytes, ErrorKind kind, const std::string& words,
+                    const raster::Uploads& files = {}) {
+    try {
+      raster::parse_gltf(bytes, {}, files);
+      ADD_FAILURE() << "accepted; expected: " << words;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.kind(), kind) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  const std::string head = R"({"asset": {"version": "2.0"}, )";
+  std::string zeros = "0";
+  for (int i = 0; i < 2000000; ++i) zeros += ",0";
+  refused(head + R"("extras": [)" + zeros + "]}", ErrorKind::limit, "MB of nodes, meshes, materials");
+  // 1,100 nodes naming one mesh of 1,000 primitives: 1.1 million to read.
+  std::string many = head + R"("meshes": [{"primitives": [{"attributes": {}, "mode": 0})";
+  for (int i = 1; i < 1000; ++i) many += R"(, {"attributes": {}, "mode": 0})";
+  many += R"(]}], "nodes": [{"mesh": 0})";
+  for (int i = 1; i < 1100; ++i) many += R"(, {"mesh": 0})";
+  refused(many + "]}", ErrorKind::limit, "more than 1048576 mesh primitives");
+
+  // Two triangles side by side in z = 0, the first with a NORMAL, the second without: the first keeps its
+  // normals, the second gets its face's; a mesh without any is flat.
+  std::string buffer;
+  for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) test::put<float>(buffer, v);
+  for (int i = 0; i < 3; ++i)
+    for (float v : {0.f, 0.6f, 0.8f}) test::put<float>(buffer, v);
+  for (float v : {0.f, 0.f, 1.f, 0.f, 0.f, 1.f}) test::put<float>(buffer, v);  // uvs
+  const raster::Uploads files{{"b.bin", buffer}};
+  auto doc = [&](const std::string& primitives, const std::string& node, const std::string& material) {
+    return head + R"("nodes": [{"mesh": 0)" + node + R"(}], "meshes": [{"primitives": [)" + primitives +
+           R"(]}],
+      "materials": [{)" +
+           material + R"(}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                    {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+                    {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+                      {"buffer": 0, "byteOffset": 72, "byteLength": 24}],
+      "buffers": [{"byteLength": 96, "uri": "b.bin"}]})";
+  };
+  const std::string with = R"({"attributes": {"POSITION": 0, "NORMAL": 1}})";
+  const std::string without = R"({"attributes": {"POSITION": 0}})";
+  const raster::Mesh none = raster::parse_gltf(doc(without, "", ""), {}, files);
+  EXPECT_EQ(none.shading, raster::Shading::flat);
+  EXPECT_TRUE(none.normals.empty());
+  const raster::Mesh mixed = raster::parse_gltf(doc(with + ", " + without, "", ""), {}, files);
+  EXPECT_EQ(mixed.shading, raster::Shading::smooth);
+  ASSERT_EQ(mixed.normals.size(), 7u);  // 3 given, 3 zeros for the second primitive's corners, 1 face normal
+  ASSERT_EQ(mixed.normal_triangles.size(), 2u);
+  EXPECT_EQ(mixed.normal_triangles[0], (std::array<std::uint32_t, 3>{0, 1, 2}));
+  EXPECT_EQ(mixed.normal_triangles[1], (std::array<std::uint32_t, 3>{6, 6, 6}));
+  EXPECT_NEAR(mixed.normals[0].y, 0.6, 1e-6);
+  EXPECT_EQ(mixed.normals[6], (raster::Vec3{0, 0, 1}));  // counter-clockwise seen from +z
+  const raster::Mesh given = raster::parse_gltf(doc(with, "", ""), {}, files);
+  EXPECT_EQ(given.shading, raster::Shading::smooth);
+  EXPECT_EQ(given.normals.size(), 3u);
+
+  // A texture of alphas 255, 200, 100 and 0, under each alpha mode.
+  raster::Image texels;
+  texels.width = 4, texels.height = 1, texels.format = raster::PixelFormat::rgba8;
+  texels.pixels = {9, 9, 9, 255, 9, 9, 9, 200, 9, 9, 9, 100, 9, 9, 9, 0};
+  const auto png = raster::encode_png(texels);
+  raster::Uploads textured = files;
+  textured["t.png"] = std::string(png.begin(), png.end());
+  auto alphas = [&](const std::string& material) {
+    const std::string gltf = doc(
+        R"({"attributes": {"POSITION": 0, "TEXCOORD_0": 2}, "material": 0})", "",
+        R"("pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "baseColorFactor": [1, 1, 1, 0.5]})" +
+            material);
+    const std::string with_texture =
+        gltf.substr(0, gltf.size() - 1) + R"(, "textures": [{"source": 0}], "images": [{"uri": "t.png"}]})";
+    const raster::Mesh mesh = raster::parse_gltf(with_texture, {}, textured);
+    std::vector<int> out;
+    for (std::size_t k = 3; k < mesh.textures.at(0).rgba.size(); k += 4)
+      out.push_back(mesh.textures[0].rgba[k]);
+    return out;
+  };
+  EXPECT_EQ(alphas(""), (std::vector<int>{255, 255, 255, 255}));  // OPAQUE, the default
+  EXPECT_EQ(alphas(R"(, "alphaMode": "BLEND")"), (std::vector<int>{255, 200, 100, 0}));
+  // MASK keeps a texel where texel alpha x factor alpha (0.5) reaches the cutoff (0.25): 255 and 200 do.
+  EXPECT_EQ(alphas(R"(, "alphaMode": "MASK", "alphaCutoff": 0.25)"), (std::vector<int>{255, 255, 0, 0}));
+
+  // A node's scale of 1e30 takes 1e10 past 2^128.
+  std::string far;
+  for (float v : {0.f, 0.f, 0.f, 1e10f, 0.f, 0.f, 0.f, 1.f, 0.f}) test::put<float>(far, v);
+  refused(doc(without, R"(, "scale": [1e30, 1, 1])", ""), ErrorKind::model,
+          "POSITION (accessor 0) element 1 is not a finite point within +-2^128",
+          {{"b.bin", far + buffer.substr(36)}});
+}
+
+// Coordinates beyond +-2^128 and counts that are no whole number get the reader's own words, with the line.
+TEST(Models, StlAndPlyNameWhatIsOutOfRange) {
+  auto refused = [](auto parse, const std::string& bytes, const std::string& words) {
+    try {
+      parse(bytes);
+      ADD_FAILURE() << "accepted; expected: " << words;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::model) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  auto stl = [](const std::string& b) { return raster::parse_stl(b); };
+  auto ply = [](const std::string& b) { return raster::parse_ply(b); };
+  refused(stl,
+          "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1e39 0 0\nvertex 0 1 0\nendloop\n"
+          "endfacet\nendsolid s\n",
+          "\"1e39\" is beyond +-2^128");
+  const std::string ply_head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+      "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  refused(ply, ply_head + "0 0 0\n1e300 0 0\n0 1 0\n3 0 1 2\n",
+          "vertex 1 has a coordinate that is not a finite number within +-2^128");
+  refused(ply, ply_head + "0 0 0\n1 0 0\n0 1 0\n3.5 0 1 2\n", "is not a whole number");
+  refused(ply, "ply\nformat ascii 1.0\nelement vertex 99999999999999999999\nend_header\n",
+          "declares 99999999999999999999 entries, more than any file holds");
+}
+
 // STL writers put "nan" in the facet normal of a sliver; the normal is not read, so the facet is drawn.
 TEST(Models, AsciiStlFacetNormalsAreNotRead) {
   const std::string stl =

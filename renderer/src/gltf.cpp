@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -162,8 +163,14 @@ void make_room(std::vector<T>& v, std::size_t more) {
 
 // tinygltf makes a struct per element of each top-level array and a Value (or a struct of similar size)
 // for every other object and array, extras included; three bytes of text ("{},") can ask for a kilobyte.
-// Its structures are bounded by this many bytes, counted from the text before it runs.
+// Every value also costs a node of the JSON library's tree, and one inside "extras" or "extensions" becomes
+// a Value too: `"extras": [0,0,0,...]` asks for ~170 bytes a value from two bytes of text. Its structures are
+// bounded by this many bytes, counted from the text before it runs.
 constexpr std::uint64_t kMaxStructureBytes = 256ull << 20;
+// Mesh primitives drawn (a mesh's primitives once for each node that names it): each costs a few
+// microseconds even when empty, so this bounds a model's reading to seconds, far above real scenes'
+// thousands.
+constexpr std::size_t kMaxDrawnPrimitives = 1 << 20;
 
 std::uint64_t struct_bytes(std::string_view array) {
   static constexpr std::pair<std::string_view, std::size_t> kSizes[] = {
@@ -181,6 +188,12 @@ std::uint64_t struct_bytes(std::string_view array) {
 
 constexpr std::uint64_t kContainerBytes = std::max(
     {sizeof(tinygltf::Value) + 64, sizeof(tinygltf::Primitive) + 64, sizeof(tinygltf::TextureInfo) + 64});
+constexpr std::uint64_t kScalarBytes = 16;  // a number, string or literal in the JSON library's tree
+constexpr std::uint64_t kValueBytes = sizeof(tinygltf::Value) + kScalarBytes;  // one under extras/extensions
+
+bool holds_values(std::string_view key) {
+  return key == "extras" || key == "extensions";
+}
 
 struct Shape {
   std::uint64_t structure_bytes = 0;  ///< what tinygltf would build, estimated from above
@@ -189,37 +202,43 @@ struct Shape {
   std::string missing;                ///< the file name of the first buffer URI no upload holds
 };
 
-// Passes over one value, counting its objects and arrays; without recursion (the cursor bounds the depth).
-std::uint64_t containers(JsonCursor& in) {
+// Passes over one value, adding up what tinygltf would build for it (`values`: the value lies under
+// "extras" or "extensions"); without recursion (the cursor bounds the depth).
+std::uint64_t structure_bytes(JsonCursor& in, bool values) {
   using Kind = JsonCursor::Kind;
-  std::uint64_t n = 0;
-  std::vector<bool> in_object;  // the open containers, innermost last
-  auto enter = [&]() -> bool {  // reads a value's start: true when it opened a non-empty container
-    const Kind k = in.peek();
-    if (k == Kind::object || k == Kind::array) {
-      ++n;
-      const bool object = k == Kind::object;
-      if (!(object ? in.object_begin() : in.array_begin())) return false;
-      if (object) in.key();
-      in_object.push_back(object);
-      return true;
-    }
-    in.skip();
-    return false;
+  struct Open {
+    bool object;  ///< else an array
+    bool values;  ///< its members become Values
   };
-  if (!enter()) return n;
-  while (!in_object.empty()) {
-    if (enter()) continue;
-    while (!in_object.empty()) {  // the value ended: on to the next member or element, or close
-      const bool object = in_object.back();
-      if (object ? in.object_next() : in.array_next()) {
-        if (object) in.key();
-        break;
-      }
-      in_object.pop_back();
+  std::vector<Open> open;  // the open containers, innermost last
+  std::uint64_t bytes = 0;
+  auto enter = [&](bool value) -> bool {  // reads a value's start: true when it opened a non-empty container
+    const Kind k = in.peek();
+    if (k != Kind::object && k != Kind::array) {
+      bytes += value ? kValueBytes : kScalarBytes;
+      in.skip();
+      return false;
+    }
+    bytes += kContainerBytes;
+    const bool object = k == Kind::object;
+    if (!(object ? in.object_begin() : in.array_begin())) return false;
+    open.push_back({object, value});
+    return true;
+  };
+  // Whether the next member (its key read here) or element becomes a Value.
+  auto next_is_value = [&] {
+    const Open& o = open.back();
+    return o.object ? holds_values(in.key()) || o.values : o.values;
+  };
+  if (!enter(values)) return bytes;
+  while (!open.empty()) {
+    if (enter(next_is_value())) continue;
+    while (!open.empty()) {  // the value ended: on to the next member or element, or close
+      if (open.back().object ? in.object_next() : in.array_next()) break;
+      open.pop_back();
     }
   }
-  return n;
+  return bytes;
 }
 
 Shape shape_of(std::string_view json, int max_depth, const Uploads& files) {
@@ -231,13 +250,13 @@ Shape shape_of(std::string_view json, int max_depth, const Uploads& files) {
     const std::string_view key = in.key();
     const std::uint64_t size = struct_bytes(key);
     if (size == 0 || in.peek() != Kind::array) {
-      shape.structure_bytes += containers(in) * kContainerBytes;
+      shape.structure_bytes += structure_bytes(in, holds_values(key));
       continue;
     }
     const bool buffers = key == "buffers";
     for (bool item = in.array_begin(); item; item = in.array_next()) {
       if (!buffers || in.peek() != Kind::object) {
-        shape.structure_bytes += size + containers(in) * kContainerBytes;
+        shape.structure_bytes += size + structure_bytes(in, false);
         continue;
       }
       shape.structure_bytes += size;
@@ -253,7 +272,7 @@ Shape shape_of(std::string_view json, int max_depth, const Uploads& files) {
           if (shape.missing.empty() && !name.starts_with("data:") && !find_upload(files, name))
             shape.missing = file_name_of_uri(name);
         } else {
-          shape.structure_bytes += containers(in) * kContainerBytes;
+          shape.structure_bytes += structure_bytes(in, holds_values(field));
         }
       }
       shape.buffers_without_uri += !uri;
@@ -468,7 +487,7 @@ class AccessorView {
 class Reader {
  public:
   Reader(const tinygltf::Model& model, const Limits& limits, const Uploads& files)
-      : model_(model), limits_(limits), files_(files), texture_of_image_(model.images.size(), -2) {}
+      : model_(model), limits_(limits), files_(files) {}
 
   Mesh read() {
     std::vector<int> roots;
@@ -510,8 +529,6 @@ class Reader {
       gltf_error(
           "the default scene has no triangles or lines to draw (rasterd draws faces and lines, not "
           "points)");
-    if (!all_normals_ || mesh_.normals.size() != mesh_.positions.size()) mesh_.normals.clear();
-    if (!mesh_.normals.empty()) mesh_.normal_triangles = mesh_.triangles;
     if (!textured_) {
       mesh_.textures.clear(), mesh_.uvs.clear(), mesh_.face_textures.clear();
     } else {
@@ -523,6 +540,7 @@ class Reader {
                                     [&](Rgba8 c) { return c == mesh_.colors.front(); }))
       mesh_.colors.erase(mesh_.colors.begin() + 1, mesh_.colors.end());
     if (any_lit_ == false && any_unlit_) mesh_.shading = Shading::unlit;
+    finish_normals();
     return std::move(mesh_);
   }
 
@@ -540,10 +558,17 @@ class Reader {
                          sign * (c * h - b * k), sign * (a * k - c * g), sign * (b * g - a * h),
                          sign * (b * f - c * e), sign * (c * d - a * f), sign * (a * e - b * d)};
     const auto& primitives = model_.meshes[static_cast<std::size_t>(index)].primitives;
+    // Nodes times their meshes' primitives: 150,000 nodes naming one mesh of 150,000 primitives are a few
+    // megabytes of text and 2e10 primitives to read.
+    drawn_primitives_ += primitives.size();
+    if (drawn_primitives_ > kMaxDrawnPrimitives)
+      throw SceneError(ErrorKind::limit,
+                       "glTF: the default scene draws more than " + std::to_string(kMaxDrawnPrimitives) +
+                           " mesh primitives (each node draws every primitive of its mesh)");
     for (std::size_t pi = 0; pi < primitives.size(); ++pi) {
       const tinygltf::Primitive& p = primitives[pi];
-      const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(pi);
       if (p.mode == TINYGLTF_MODE_POINTS) continue;  // rasterd draws faces and lines
+      const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(pi);
       const auto pos_it = p.attributes.find("POSITION");
       if (pos_it == p.attributes.end()) gltf_error(where + " has no POSITION");
       const AccessorView positions(model_, pos_it->second, where + " POSITION");
@@ -555,19 +580,24 @@ class Reader {
       make_room(mesh_.positions, positions.count());
       mesh_.positions.resize(base + positions.count());
       Vec3* out = mesh_.positions.data() + base;
-      bool finite = true;  // checked once, without a branch (or a chain of additions) per vertex
+      // Every coordinate finite and within +-2^128 (what the renderer takes): checked once, without a branch
+      // (or a chain of additions) per vertex, and only then is the bad one looked for.
+      bool in_range = true;
       positions.each_vec3([&](std::size_t i, double x, double y, double z) {
         const Vec3 w{m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13],
                      m[2] * x + m[6] * y + m[10] * z + m[14]};
-        finite &= std::isfinite(w.x) & std::isfinite(w.y) & std::isfinite(w.z);
+        in_range &= (std::fabs(w.x) <= kMaxCoordinate) & (std::fabs(w.y) <= kMaxCoordinate) &
+                    (std::fabs(w.z) <= kMaxCoordinate);
         out[i] = w;
       });
-      if (!finite)
+      if (!in_range)
         for (std::size_t i = 0; i < positions.count(); ++i)
-          if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
-            gltf_error(positions.what() + " element " + std::to_string(i) + " is not a finite point");
+          if (!(std::fabs(out[i].x) <= kMaxCoordinate && std::fabs(out[i].y) <= kMaxCoordinate &&
+                std::fabs(out[i].z) <= kMaxCoordinate))
+            gltf_error(positions.what() + " element " + std::to_string(i) +
+                       " is not a finite point within +-2^128 (after its node's transform)");
       const std::size_t count = positions.count();
-      add_normals(p, where, count, n);
+      const bool has_normals = add_normals(p, where, count, n);
       const Material material = material_of(p.material, where);
       add_colours(p, where, count, material.colour, material.blend);
       add_uvs(p, where, count, material);
@@ -581,27 +611,49 @@ class Reader {
         corners.resize(count);
         for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(base + i);
       }
+      const std::size_t first_triangle = mesh_.triangles.size();
       add_faces(p.mode, corners, mirrored, where);
+      if (!has_normals) without_normals_.push_back({first_triangle, mesh_.triangles.size()});
     }
   }
 
-  void add_normals(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
+  // The primitive's NORMALs, turned with its node, after those of earlier primitives (zeros where they had
+  // none); false when it has none.
+  bool add_normals(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
                    const double* n) {
     const auto it = p.attributes.find("NORMAL");
-    if (it == p.attributes.end() || !all_normals_) {
-      all_normals_ = false;
-      return;
-    }
+    if (it == p.attributes.end()) return false;
     const AccessorView normals(model_, it->second, where + " NORMAL");
-    if (normals.components() != 3 || normals.count() != count) {
-      all_normals_ = false;
-      return;
-    }
-    make_room(mesh_.normals, count);
+    if (normals.components() != 3 || normals.count() != count) return false;
+    const std::size_t base = mesh_.positions.size() - count;
+    make_room(mesh_.normals, base + count - mesh_.normals.size());
+    mesh_.normals.resize(base);
     normals.each_vec3([&](std::size_t, double x, double y, double z) {
       mesh_.normals.push_back(
           {n[0] * x + n[1] * y + n[2] * z, n[3] * x + n[4] * y + n[5] * z, n[6] * x + n[7] * y + n[8] * z});
     });
+    return true;
+  }
+
+  // glTF draws a primitive without normals flat. A mesh with none is shaded flat; one where only some
+  // primitives have normals gets a face normal for each triangle of the others.
+  void finish_normals() {
+    if (mesh_.normals.empty()) {
+      if (mesh_.shading == Shading::smooth) mesh_.shading = Shading::flat;
+      return;
+    }
+    mesh_.normals.resize(mesh_.positions.size());
+    mesh_.normal_triangles = mesh_.triangles;
+    const auto& pos = mesh_.positions;
+    for (const auto& [first, end] : without_normals_)
+      for (std::size_t t = first; t < end; ++t) {
+        const auto& tri = mesh_.triangles[t];
+        const Vec3 a = pos[tri[0]], b = pos[tri[1]], c = pos[tri[2]];
+        const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z}, v{c.x - a.x, c.y - a.y, c.z - a.z};
+        const auto k = static_cast<std::uint32_t>(mesh_.normals.size());
+        mesh_.normals.push_back({u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x});
+        mesh_.normal_triangles[t] = {k, k, k};
+      }
   }
 
   void add_colours(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
@@ -655,6 +707,14 @@ class Reader {
     bool blend = false;                              ///< alphaMode BLEND: alpha is kept; else opaque
   };
 
+  /// What a material does with its texture's alpha: OPAQUE ignores it, MASK keeps a texel where its alpha
+  /// times the factor's reaches alphaCutoff and drops it otherwise, BLEND keeps it.
+  struct TexelAlpha {
+    enum Mode : std::uint8_t { opaque, mask, blend } mode = opaque;
+    double cutoff = 0;  ///< mask: the texel alpha (0..1) at and above which a texel is kept
+    friend auto operator<=>(const TexelAlpha&, const TexelAlpha&) = default;
+  };
+
   Material material_of(int index, const std::string& where) {
     Material out;
     if (index < 0) {
@@ -669,16 +729,22 @@ class Reader {
     for (std::size_t k = 0; k < 4 && k < pbr.baseColorFactor.size(); ++k)
       out.colour[k] = pbr.baseColorFactor[k];
     out.blend = mat.alphaMode == "BLEND";
+    TexelAlpha alpha;
+    if (out.blend)
+      alpha.mode = TexelAlpha::blend;
+    else if (mat.alphaMode == "MASK" && out.colour[3] > 0)
+      alpha = {TexelAlpha::mask, mat.alphaCutoff / out.colour[3]};
     if (!out.blend) out.colour[3] = 1;
     (mat.extensions.count("KHR_materials_unlit") ? any_unlit_ : any_lit_) = true;
     if (pbr.baseColorTexture.index >= 0) {
-      out.texture = texture_of(pbr.baseColorTexture.index, where);
+      out.texture = texture_of(pbr.baseColorTexture.index, alpha, where);
       out.texcoord = pbr.baseColorTexture.texCoord;
     }
     return out;
   }
 
-  std::int32_t texture_of(int index, const std::string& where) {
+  // The texture's index in mesh_.textures, decoded once for each way a material takes its alpha.
+  std::int32_t texture_of(int index, TexelAlpha alpha, const std::string& where) {
     if (static_cast<std::size_t>(index) >= model_.textures.size())
       gltf_error(where + "'s material names texture " + std::to_string(index) + ", which does not exist");
     const tinygltf::Texture& t = model_.textures[static_cast<std::size_t>(index)];
@@ -686,8 +752,8 @@ class Reader {
     if (static_cast<std::size_t>(t.source) >= model_.images.size())
       gltf_error("texture " + std::to_string(index) + " names image " + std::to_string(t.source) +
                  ", which does not exist");
-    std::int32_t& slot = texture_of_image_[static_cast<std::size_t>(t.source)];
-    if (slot != -2) return slot;
+    const auto [cached, is_new] = textures_.try_emplace({t.source, alpha}, -1);
+    if (!is_new) return cached->second;
     const tinygltf::Image& image = model_.images[static_cast<std::size_t>(t.source)];
     std::string_view bytes(reinterpret_cast<const char*>(image.image.data()), image.image.size());
     std::string name = image.name.empty() ? "image " + std::to_string(t.source) : image.name;
@@ -705,9 +771,12 @@ class Reader {
     if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < model_.samplers.size())
       texture.clamp =
           model_.samplers[static_cast<std::size_t>(t.sampler)].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-    slot = static_cast<std::int32_t>(mesh_.textures.size());
+    if (alpha.mode != TexelAlpha::blend)
+      for (std::size_t k = 3; k < texture.rgba.size(); k += 4)
+        texture.rgba[k] = alpha.mode == TexelAlpha::opaque || texture.rgba[k] >= alpha.cutoff * 255 ? 255 : 0;
+    cached->second = static_cast<std::int32_t>(mesh_.textures.size());
     mesh_.textures.push_back(std::move(texture));
-    return slot;
+    return cached->second;
   }
 
   void add_uvs(const tinygltf::Primitive& p, const std::string& where, std::size_t count,
@@ -726,9 +795,12 @@ class Reader {
     if (primitive_texture_ < 0) return;
     const AccessorView uv(model_, it->second, where + " TEXCOORD_" + std::to_string(material.texcoord));
     if (uv.components() != 2 || uv.count() != count) gltf_error(uv.what() + " is not one VEC2 per vertex");
-    for (std::size_t i = 0; i < count;
-         ++i)  // glTF's v runs down from the image's top; ours up from its bottom
-      mesh_.uvs[base + i] = {static_cast<float>(uv.get(i, 0)), static_cast<float>(1 - uv.get(i, 1))};
+    for (std::size_t i = 0; i < count; ++i) {
+      const double u = uv.get(i, 0), v = uv.get(i, 1);
+      if (!(std::fabs(u) <= 1e30 && std::fabs(v) <= 1e30))  // NaN, infinite, or out of a float's range
+        gltf_error(uv.what() + " element " + std::to_string(i) + " is not a finite coordinate");
+      mesh_.uvs[base + i] = {static_cast<float>(u), static_cast<float>(1 - v)};  // glTF's v runs down
+    }
   }
 
   // `more` triangles to come: refused over the face limit, else room made for them.
@@ -789,10 +861,14 @@ class Reader {
   const Uploads& files_;
   Mesh mesh_;
   std::vector<bool> visited_;
-  std::vector<std::int32_t> texture_of_image_;  ///< per image: index into mesh_.textures, -1 none, -2 not yet
+  std::map<std::pair<int, TexelAlpha>, std::int32_t>
+      textures_;  ///< (image, alpha) -> index into mesh_.textures
   std::int64_t texel_budget_ = limits_.max_texture_pixels;
   std::int32_t primitive_texture_ = -1;
-  bool all_normals_ = true, any_lit_ = false, any_unlit_ = false;
+  bool any_lit_ = false, any_unlit_ = false;
+  /// Triangles [first, end) of the primitives that had no NORMAL, for finish_normals.
+  std::vector<std::pair<std::size_t, std::size_t>> without_normals_;
+  std::size_t drawn_primitives_ = 0;    ///< primitives of every node's mesh so far, for kMaxDrawnPrimitives
   bool textured_ = false;               ///< a primitive so far had a texture and its coordinates
   bool one_colour_ = true;              ///< every vertex so far has mesh_.colors[0]: it is stored once
   std::vector<std::uint32_t> corners_;  ///< the current primitive's vertex order, kept for its capacity

@@ -126,9 +126,14 @@ Header read_header(std::string_view bytes) {
       format_seen = true;
     } else if (w[0] == "element") {
       std::uint64_t count = 0;
-      if (w.size() != 3 ||
-          std::from_chars(w[2].data(), w[2].data() + w[2].size(), count).ptr != w[2].data() + w[2].size())
-        ply_error("expected \"element <name> <count>\"", h.lines);
+      if (w.size() != 3) ply_error("expected \"element <name> <count>\"", h.lines);
+      const auto [end, ec] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
+      if (ec == std::errc::result_out_of_range)
+        ply_error("element \"" + std::string(w[1].substr(0, 40)) + "\" declares " +
+                      std::string(w[2].substr(0, 40)) + " entries, more than any file holds",
+                  h.lines);
+      if (ec != std::errc() || end != w[2].data() + w[2].size())
+        ply_error("expected \"element <name> <count>\", with a whole number as the count", h.lines);
       h.elements.push_back({std::string(w[1]), count, {}, h.lines});
     } else if (w[0] == "property") {
       if (h.elements.empty()) ply_error("a property before any element", h.lines);
@@ -380,9 +385,11 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       }
     };
     auto store = [&](std::uint64_t i, const Vec3& pos, const Vec3& normal, Rgba8 colour) {
-      if (!std::isfinite(pos.x) || !std::isfinite(pos.y) || !std::isfinite(pos.z))
-        ply_error("vertex " + std::to_string(i) + " has a coordinate that is not a finite number",
-                  in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
+      if (!(std::fabs(pos.x) <= kMaxCoordinate && std::fabs(pos.y) <= kMaxCoordinate &&
+            std::fabs(pos.z) <= kMaxCoordinate))
+        ply_error(
+            "vertex " + std::to_string(i) + " has a coordinate that is not a finite number within +-2^128",
+            in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
       mesh.positions[i] = pos;
       if (normals) mesh.normals[i] = normal;
       if (colours) mesh.colors[i] = colour;
@@ -427,6 +434,9 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       for (const Property& p : e.properties) {
         if (p.list) {
           const double n = in.read(p.count_type);
+          if (n != std::floor(n))  // ASCII: "3.5" is no length
+            ply_error("a list's length in " + e.name + " " + std::to_string(i) + " is not a whole number",
+                      in.line());
           const std::uint64_t items = n >= 0 && n < 4294967296.0 ? static_cast<std::uint64_t>(n) : UINT64_MAX;
           if (items == UINT64_MAX || (!in.ascii() && items * kSize[int(p.type)] > in.left()) ||
               (in.ascii() && items > in.left()))

@@ -840,7 +840,10 @@ void Reader::finish_obj(PrimitiveState& s, const Path& at) {
   model_limits.max_texture_pixels = texels_left(scene, limits);
   Mesh mesh;
   try {
-    const std::optional<ModelFormat> hint = type == "obj" ? ModelFormat::obj : s.format;
+    // Bytes that do not tell their format: "format", else the uploaded part's file name (a scene's
+    // "source": "part.stl"), as for a model sent alone.
+    std::optional<ModelFormat> hint = type == "obj" ? ModelFormat::obj : s.format;
+    if (!hint && (s.seen & bit("source"))) hint = format_of_file_name(s.source);
     mesh = parse_model(obj, hint, model_limits, (s.seen & bit("textures")) ? s.textures : uploads, mtl);
   } catch (const SceneError& e) {
     // An encoding error keeps its byte: the offset into the model's own text, which the message names.

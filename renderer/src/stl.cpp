@@ -123,6 +123,8 @@ double number(Words& in) {
   const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
   if (ec != std::errc() || end != w.data() + w.size() || !std::isfinite(v))
     stl_error("expected a number, got " + quoted(w), in.line());
+  if (std::fabs(v) > kMaxCoordinate)
+    stl_error("the coordinate " + quoted(w) + " is beyond +-2^128, the largest rasterd draws", in.line());
   return v;
 }
 

@@ -57,9 +57,13 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits = {});
 /// glTF 2.0 through tinygltf: a .gltf document (buffers and images as data: URIs, or as `files` named by
 /// their URI's file name) or a .glb. Every mesh of the default scene (or the first) is drawn under its
 /// node's transform; triangles, strips and fans, lines, line strips and loops; indices of every component
-/// type; POSITION, NORMAL, COLOR_0, TEXCOORD_0; a material's baseColorFactor and baseColorTexture, and
-/// KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked to lie
-/// within its buffer view and buffer before it is read. Nothing is read from disk or the network.
+/// type; POSITION, NORMAL (a primitive without normals is flat, as glTF says: face normals beside others'
+/// given ones, Shading::flat when none has any), COLOR_0, TEXCOORD_n; a material's baseColorFactor and
+/// baseColorTexture with its alphaMode (OPAQUE: texel alpha 255; MASK: 255 or 0 at alphaCutoff; BLEND:
+/// kept), and KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked
+/// to lie within its buffer view and buffer before it is read; what tinygltf would build from the document
+/// is bounded before it runs, and so are the primitives drawn (nodes x their meshes' primitives). Nothing is
+/// read from disk or the network.
 Mesh parse_gltf(std::string_view bytes, const Limits& limits = {}, const Uploads& files = {});
 
 /// The files a glTF document (or a GLB's JSON chunk) names: the URIs of its buffers and images that are not
