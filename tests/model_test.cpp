@@ -167,6 +167,26 @@ TEST(Models, PlyVertexPropertiesAreReadInEveryEncoding) {
   }
 }
 
+// A polygon of more than four corners, concave: a fan from its first corner would cover the notch of the U.
+TEST(Models, PlyPolygonsAreSplitAsObjPolygonsAre) {
+  TestMesh u;
+  u.v = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {3, 4, 0}, {3, 1, 0}, {1, 1, 0}, {1, 4, 0}, {0, 4, 0}};
+  u.faces = {{0, 1, 2, 3, 4, 5, 6, 7}};
+  const raster::Mesh obj = raster::parse_obj(write_obj(u));
+  ASSERT_EQ(obj.triangles.size(), 6u);
+  EXPECT_EQ(raster::parse_ply(write_ply_ascii(u)).triangles, obj.triangles);
+  EXPECT_EQ(raster::parse_ply(write_ply_binary(u, true)).triangles, obj.triangles);
+  // No triangle covers the notch's middle (2, 2.5).
+  for (const auto& t : obj.triangles) {
+    auto side = [&](int a, int b) {
+      const auto &p = u.v[t[a]], &q = u.v[t[b]];
+      return (q[0] - p[0]) * (2.5 - p[1]) - (q[1] - p[1]) * (2 - p[0]);
+    };
+    const double a = side(0, 1), b = side(1, 2), c = side(2, 0);
+    EXPECT_FALSE((a > 0 && b > 0 && c > 0) || (a < 0 && b < 0 && c < 0));
+  }
+}
+
 TEST(Models, FormatsAreToldByTheirBytesThenByName) {
   EXPECT_EQ(raster::sniff_model("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), ModelFormat::obj);
   EXPECT_EQ(raster::sniff_model("# only a comment\n\n# and another\no box\nv 0 0 0\n"), ModelFormat::obj);

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <istream>
 #include <map>
@@ -13,6 +14,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include "polygon.h"
 #include "raster/scene.h"
 #include "raster/utf8.h"
 
@@ -74,6 +76,9 @@ bool obj_number(std::string_view word, double& d) {
 
 struct Counts {
   std::int64_t v = 0, vt = 0, vn = 0, faces = 0, segments = 0, points = 0;
+  /// (0-based face number, corners) of each face of 256 corners or more, in file order: tinyobjloader
+  /// stores a face's corner count in a byte.
+  std::vector<std::pair<std::int64_t, std::uint32_t>> long_faces;
   std::vector<std::string_view> mtllibs;  ///< what follows each `mtllib` (one or more file names)
 };
 
@@ -139,6 +144,7 @@ Counts prescan(std::string_view text, const Limits& limits) {
         if (!ok) model_error(line_no, why);
       }
       if (key == "f") {
+        if (w.size() - 1 >= 256) n.long_faces.push_back({n.faces, static_cast<std::uint32_t>(w.size() - 1)});
         if (++n.faces > limits.max_obj_faces)
           throw SceneError(ErrorKind::limit,
                            "the model has more than " + std::to_string(limits.max_obj_faces) + " faces",
@@ -165,7 +171,7 @@ Counts prescan(std::string_view text, const Limits& limits) {
 
 /// A material's diffuse map as the MTL gives it.
 struct DiffuseMap {
-  std::string file;     ///< file name without folders
+  std::string file;      ///< file name without folders
   std::size_t line = 0;  ///< MTL line, for errors
   bool clamp = false;
   std::array<float, 2> scale{1, 1}, offset{0, 0};
@@ -255,7 +261,8 @@ DiffuseMap read_diffuse_map(std::string_view rest, std::size_t line) {
     if (iequals(w, "-clamp") || iequals(w, "-blendu") || iequals(w, "-blendv") || iequals(w, "-cc")) {
       const std::string_view v = next_word(at);
       if (!iequals(v, "on") && !iequals(v, "off"))
-        mtl_error(line, "map_Kd option " + std::string(w) + " takes on or off, got \"" + std::string(v) + "\"");
+        mtl_error(line,
+                  "map_Kd option " + std::string(w) + " takes on or off, got \"" + std::string(v) + "\"");
       if (iequals(w, "-clamp")) map.clamp = iequals(v, "on");
     } else if (iequals(w, "-s")) {
       float v[3] = {1, 1, 1};
@@ -286,9 +293,10 @@ DiffuseMap read_diffuse_map(std::string_view rest, std::size_t line) {
 MtlPass read_mtl(std::string_view mtl) {
   // Keywords tinyobjloader matches, in its spelling; any case is accepted in the file.
   static constexpr std::string_view kKeywords[] = {
-      "newmtl", "Ka", "Kd", "Ks", "Ke", "Kt", "Tf", "Ns", "Ni", "d", "Tr", "illum", "map_Ka", "map_Ks", "map_Ns",
-      "map_d", "map_bump", "bump", "disp", "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor",
-      "map_Pr", "map_Pm", "map_Ps", "map_Ke"};
+      "newmtl",   "Ka",   "Kd",    "Ks",     "Ke",     "Kt",     "Tf",     "Ns",
+      "Ni",       "d",    "Tr",    "illum",  "map_Ka", "map_Ks", "map_Ns", "map_d",
+      "map_bump", "bump", "disp",  "refl",   "norm",   "Pr",     "Pm",     "Ps",
+      "Pc",       "Pcr",  "aniso", "anisor", "map_Pr", "map_Pm", "map_Ps", "map_Ke"};
   MtlPass out;
   out.text.reserve(mtl.size());
   MaterialExtra* current = nullptr;
@@ -367,10 +375,12 @@ std::uint8_t unit_byte(double v) {
 
 }  // namespace
 
-std::vector<std::string> obj_files(std::string_view obj_text, std::string_view mtl_text, const Uploads& files) {
+std::vector<std::string> obj_files(std::string_view obj_text, std::string_view mtl_text,
+                                   const Uploads& files) {
   std::vector<std::string> names;
   auto add = [&](std::string name) {
-    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(std::move(name));
+    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end())
+      names.push_back(std::move(name));
   };
   std::vector<std::string_view> mtllibs;
   for (std::size_t pos = 0; pos <= obj_text.size();) {
@@ -382,7 +392,7 @@ std::vector<std::string> obj_files(std::string_view obj_text, std::string_view m
     if (w.size() < 2 || w[0] != "mtllib") continue;
     const std::string_view rest = line.substr(static_cast<std::size_t>(w[1].data() - line.data()));
     mtllibs.push_back(rest);
-    add(file_name_of(rest));  // one name with spaces, or
+    add(file_name_of(rest));                                             // one name with spaces, or
     for (std::size_t k = 1; k < w.size(); ++k) add(file_name_of(w[k]));  // several names
   }
   const std::string libraries = mtl_text.empty() ? named_libraries(mtllibs, files) : std::string();
@@ -408,7 +418,8 @@ class TextBuf : public std::streambuf {
 
 }  // namespace
 
-Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits, const Uploads& files) {
+Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limits& limits,
+               const Uploads& files) {
   // Checked first: names and tokens of the model are quoted in its errors.
   require_utf8(obj_text, "the model (OBJ)", true);
   require_utf8(mtl_text, "the materials (MTL)", true);
@@ -426,7 +437,8 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   }
   const MtlPass mtl = read_mtl(mtl_text);
 
-  // What ObjReader::ParseFromString does (triangulated, colours only where the file has them: no white
+  // What ObjReader::ParseFromString does (faces as written, split below as PLY's are; colours only where
+  // the file has them: no white
   // fallback), on a stream over the text where it lies: ParseFromString copied a model twice (into a
   // std::string, then into a stringbuf), 2 x its size of fresh memory per request. From memory: a `mtllib`
   // line reads the uploaded MTL text, never a file named in the upload.
@@ -439,7 +451,7 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     tinyobj::MaterialStreamReader mtl_reader(mtl_stream);
     std::string warning, error;
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &obj_stream, &mtl_reader,
-                          /*triangulate=*/true, /*default_vcols_fallback=*/false))
+                          /*triangulate=*/false, /*default_vcols_fallback=*/false))
       model_error(0, "the model could not be parsed: " + error);
   }
 
@@ -475,9 +487,10 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     }
     const std::string* bytes = find_file(files, map.file);
     if (!bytes)
-      model_error(0, "the materials (MTL) line " + std::to_string(map.line) + " asks for texture \"" + map.file +
-                         "\" (map_Kd), which was not sent; sent: " + names_of(files) +
-                         ". Send it as a multipart part with that file name (curl -F 'texture=@" + map.file + "')");
+      model_error(0, "the materials (MTL) line " + std::to_string(map.line) + " asks for texture \"" +
+                         map.file + "\" (map_Kd), which was not sent; sent: " + names_of(files) +
+                         ". Send it as a multipart part with that file name (curl -F 'texture=@" + map.file +
+                         "')");
     Texture texture = decode_texture(*bytes, map.file, budget);
     budget -= std::int64_t{texture.width} * texture.height;
     texture.clamp = map.clamp, texture.scale = map.scale, texture.offset = map.offset;
@@ -488,54 +501,92 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   if (!mesh.textures.empty()) {
     mesh.uvs.reserve(texcoords + 1);
     for (std::size_t i = 0; i < texcoords; ++i)
-      mesh.uvs.push_back({static_cast<float>(attrib.texcoords[2 * i]), static_cast<float>(attrib.texcoords[2 * i + 1])});
+      mesh.uvs.push_back(
+          {static_cast<float>(attrib.texcoords[2 * i]), static_cast<float>(attrib.texcoords[2 * i + 1])});
     mesh.uvs.push_back({0, 0});  // for faces without "vt" references (drawn untextured)
   }
   const auto no_uv = static_cast<std::uint32_t>(texcoords);
   bool any_material = false, all_normals = true;
   std::vector<Rgba8> face_colors;
+  // Each face's corners: tinyobjloader's count, but the prescan's for faces of 256 and more (tinyobjloader
+  // keeps faces in file order, every 'f' line one face).
+  std::size_t long_face = 0;
+  auto corners_of = [&](std::int64_t face, unsigned char stored) -> std::size_t {
+    if (long_face < counts.long_faces.size() && counts.long_faces[long_face].first == face) {
+      const std::uint32_t n = counts.long_faces[long_face++].second;
+      if ((n & 255) != stored) model_error(0, "the model's faces could not be read consistently");
+      return n;
+    }
+    return stored;
+  };
   std::size_t triangles = 0;  // sized once: growing them by doubling copied a large model's arrays ~20 times
-  for (const tinyobj::shape_t& shape : shapes) triangles += shape.mesh.indices.size() / 3;
+  for (const tinyobj::shape_t& shape : shapes)
+    for (const unsigned corners : shape.mesh.num_face_vertices) triangles += corners >= 3 ? corners - 2 : 0;
+  for (const auto& [face, corners] : counts.long_faces) triangles += corners - (corners & 255);
   mesh.triangles.reserve(triangles), face_colors.reserve(triangles);
   if (!attrib.normals.empty()) mesh.normal_triangles.reserve(triangles);
   if (!mesh.textures.empty()) mesh.face_textures.reserve(triangles), mesh.uv_triangles.reserve(triangles);
+  PolygonSplitter splitter;
+  std::vector<Vec3> polygon;                         // a face's corners' positions
+  std::vector<std::array<std::uint32_t, 3>> pieces;  // its triangles, as indices into its corners
+  std::int64_t face_number = 0;                      // across shapes, in file order
   for (const tinyobj::shape_t& shape : shapes) {
     const auto& idx = shape.mesh.indices;
-    for (std::size_t f = 0; f * 3 + 2 < idx.size(); ++f) {
-      const tinyobj::index_t* c = &idx[f * 3];
-      mesh.triangles.push_back({static_cast<std::uint32_t>(c[0].vertex_index),
-                                static_cast<std::uint32_t>(c[1].vertex_index),
-                                static_cast<std::uint32_t>(c[2].vertex_index)});
-      const bool has_normals = c[0].normal_index >= 0 && c[1].normal_index >= 0 && c[2].normal_index >= 0;
-      all_normals = all_normals && has_normals;
-      if (has_normals)
-        mesh.normal_triangles.push_back({static_cast<std::uint32_t>(c[0].normal_index),
-                                         static_cast<std::uint32_t>(c[1].normal_index),
-                                         static_cast<std::uint32_t>(c[2].normal_index)});
+    std::size_t next_face = 0;  // where the next face's corners start in idx
+    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+      const std::size_t n = corners_of(face_number++, shape.mesh.num_face_vertices[f]), first = next_face;
+      next_face += n;
+      if (next_face > idx.size()) model_error(0, "the model's faces could not be read consistently");
+      if (n < 3) continue;
+      pieces.clear();
+      if (n == 3) {
+        pieces.push_back({0, 1, 2});
+      } else {
+        polygon.clear();
+        for (std::size_t k = 0; k < n; ++k) {
+          const auto v = static_cast<std::size_t>(idx[first + k].vertex_index);
+          polygon.push_back(v < mesh.positions.size() ? mesh.positions[v] : Vec3{});  // checked below
+        }
+        splitter.split(polygon, pieces);
+      }
       const int m = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
       // tinyobjloader makes a black material of its own for a `usemtl` the MTL does not define (or with no
       // MTL at all, as assimp's empty_mat.obj): such faces keep the default grey, like faces without one.
       const bool material = m >= 0 && static_cast<std::size_t>(m) < materials.size() && extras[m];
+      Rgba8 face_color{204, 204, 204, 255};  // the default light grey
       if (material) {
         any_material = true;
         const auto& kd = materials[m].diffuse;
         // MTL: the texture is multiplied by Kd; a map without Kd is shown as it is.
         const bool white = extras[m] && extras[m]->has_map && !extras[m]->has_kd;
-        face_colors.push_back({white ? std::uint8_t{255} : unit_byte(kd[0]), white ? std::uint8_t{255} : unit_byte(kd[1]),
-                               white ? std::uint8_t{255} : unit_byte(kd[2]), unit_byte(materials[m].dissolve)});
-      } else {
-        face_colors.push_back({204, 204, 204, 255});  // the default light grey
+        face_color = {white ? std::uint8_t{255} : unit_byte(kd[0]),
+                      white ? std::uint8_t{255} : unit_byte(kd[1]),
+                      white ? std::uint8_t{255} : unit_byte(kd[2]), unit_byte(materials[m].dissolve)};
       }
-      if (!mesh.textures.empty()) {
-        const bool has_uv = c[0].texcoord_index >= 0 && c[1].texcoord_index >= 0 && c[2].texcoord_index >= 0;
-        const std::int32_t texture = material && has_uv ? material_texture[m] : -1;
-        mesh.face_textures.push_back(texture);
-        if (texture >= 0)
-          mesh.uv_triangles.push_back({static_cast<std::uint32_t>(c[0].texcoord_index),
-                                       static_cast<std::uint32_t>(c[1].texcoord_index),
-                                       static_cast<std::uint32_t>(c[2].texcoord_index)});
-        else
-          mesh.uv_triangles.push_back({no_uv, no_uv, no_uv});
+      for (const auto& piece : pieces) {
+        const tinyobj::index_t c[3] = {idx[first + piece[0]], idx[first + piece[1]], idx[first + piece[2]]};
+        mesh.triangles.push_back({static_cast<std::uint32_t>(c[0].vertex_index),
+                                  static_cast<std::uint32_t>(c[1].vertex_index),
+                                  static_cast<std::uint32_t>(c[2].vertex_index)});
+        const bool has_normals = c[0].normal_index >= 0 && c[1].normal_index >= 0 && c[2].normal_index >= 0;
+        all_normals = all_normals && has_normals;
+        if (has_normals)
+          mesh.normal_triangles.push_back({static_cast<std::uint32_t>(c[0].normal_index),
+                                           static_cast<std::uint32_t>(c[1].normal_index),
+                                           static_cast<std::uint32_t>(c[2].normal_index)});
+        face_colors.push_back(face_color);
+        if (!mesh.textures.empty()) {
+          const bool has_uv =
+              c[0].texcoord_index >= 0 && c[1].texcoord_index >= 0 && c[2].texcoord_index >= 0;
+          const std::int32_t texture = material && has_uv ? material_texture[m] : -1;
+          mesh.face_textures.push_back(texture);
+          if (texture >= 0)
+            mesh.uv_triangles.push_back({static_cast<std::uint32_t>(c[0].texcoord_index),
+                                         static_cast<std::uint32_t>(c[1].texcoord_index),
+                                         static_cast<std::uint32_t>(c[2].texcoord_index)});
+          else
+            mesh.uv_triangles.push_back({no_uv, no_uv, no_uv});
+        }
       }
     }
     const auto& li = shape.lines.indices;

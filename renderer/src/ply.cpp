@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon.h"
 #include "raster/model.h"
 
 namespace raster {
@@ -276,26 +277,6 @@ std::uint8_t colour_byte(double v, Type t) {
   return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255));
 }
 
-// OBJ's triangulation (tinyobjloader's): a quad on its shorter diagonal, a larger polygon as a fan.
-void triangulate(const std::vector<std::uint32_t>& c, const std::vector<Vec3>& positions,
-                 std::vector<std::array<std::uint32_t, 3>>& out) {
-  if (c.size() == 4) {
-    auto d2 = [&](std::uint32_t a, std::uint32_t b) {
-      const Vec3 &p = positions[a], &q = positions[b];
-      return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y) + (q.z - p.z) * (q.z - p.z);
-    };
-    if (d2(c[0], c[2]) < d2(c[1], c[3])) {
-      out.push_back({c[0], c[1], c[2]});
-      out.push_back({c[0], c[2], c[3]});
-    } else {
-      out.push_back({c[0], c[1], c[3]});
-      out.push_back({c[1], c[2], c[3]});
-    }
-    return;
-  }
-  for (std::size_t k = 1; k + 1 < c.size(); ++k) out.push_back({c[0], c[k], c[k + 1]});
-}
-
 }  // namespace
 
 Mesh parse_ply(std::string_view bytes, const Limits& limits) {
@@ -333,7 +314,10 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
 
   Mesh mesh;
   Values in(bytes, h);
-  std::vector<std::uint32_t> corners;
+  std::vector<std::uint32_t> corners;                // a face's vertices
+  std::vector<Vec3> polygon;                         // their positions, for a face of more than three
+  std::vector<std::array<std::uint32_t, 3>> pieces;  // its triangles, as indices into corners
+  PolygonSplitter splitter;
   for (const Element& e : h.elements) {
     // An element without properties holds no bytes, however many entries it declares (6e9 of them took a
     // fuzzed file 12 s to count through).
@@ -461,7 +445,15 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
             if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_obj_faces))
               throw SceneError(ErrorKind::limit,
                                "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
-            triangulate(corners, mesh.positions, mesh.triangles);
+            if (corners.size() == 3) {
+              mesh.triangles.push_back({corners[0], corners[1], corners[2]});
+            } else {  // as OBJ faces are split
+              polygon.clear(), pieces.clear();
+              for (const std::uint32_t c : corners) polygon.push_back(mesh.positions[c]);
+              splitter.split(polygon, pieces);
+              for (const auto& t : pieces)
+                mesh.triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+            }
           }
           continue;
         }

@@ -239,7 +239,8 @@ Texture decode_texture(std::string_view bytes, std::string_view name, std::int64
 /// ever read from disk. Without `mtl_text`, the materials are the files the model's `mtllib` lines name,
 /// found there by file name without folders (left out if not sent). Textures the MTL names (map_Kd) are
 /// looked up there the same way (a missing one is SceneError(model) naming it and the names there are);
-/// `limits.max_texture_pixels` bounds them all together.
+/// `limits.max_texture_pixels` bounds them all together. Faces of more than three corners are split as
+/// parse_ply splits them: quads on their shorter diagonal, larger polygons by ear clipping in their plane.
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {},
                const Uploads& files = {});
 
