@@ -176,6 +176,17 @@ TEST(Models, PlyPolygonsAreSplitAsObjPolygonsAre) {
   ASSERT_EQ(obj.triangles.size(), 6u);
   EXPECT_EQ(raster::parse_ply(write_ply_ascii(u)).triangles, obj.triangles);
   EXPECT_EQ(raster::parse_ply(write_ply_binary(u, true)).triangles, obj.triangles);
+  // The same file with the face element first (legal PLY): split once the vertices are read.
+  std::string faces_first = write_ply_ascii(u);
+  const std::size_t vertex_header = faces_first.find("element vertex"),
+                    face_header = faces_first.find("element face");
+  const std::size_t end_header = faces_first.find("end_header\n") + 11;
+  const std::size_t face_data = faces_first.find("\n8 ", end_header) + 1;
+  faces_first = faces_first.substr(0, vertex_header) +
+                faces_first.substr(face_header, end_header - 11 - face_header) +
+                faces_first.substr(vertex_header, face_header - vertex_header) + "end_header\n" +
+                faces_first.substr(face_data) + faces_first.substr(end_header, face_data - end_header);
+  EXPECT_EQ(raster::parse_ply(faces_first).triangles, obj.triangles) << faces_first;
   // No triangle covers the notch's middle (2, 2.5).
   for (const auto& t : obj.triangles) {
     auto side = [&](int a, int b) {
@@ -438,6 +449,10 @@ TEST(Models, GltfDocumentsThatWouldHurtTinygltfAreRefusedFirst) {
   const std::size_t json = static_cast<unsigned char>(glb[12]) | static_cast<unsigned char>(glb[13]) << 8;
   glb[20 + json] = static_cast<char>(glb[20 + json] + 8);
   refused(glb, ErrorKind::model, "runs past");
+  // A JSON chunk not padded to 4 bytes (tinygltf reads the binary chunk's head from the wrong place).
+  std::string unpadded = test::write_glb(test::make_gltf(m, "", false));
+  unpadded[12] = static_cast<char>(unpadded[12] - 1);
+  refused(unpadded, ErrorKind::model, "not padded to a multiple of 4");
   test::Gltf two = test::make_gltf(m, "", false);
   two.json.replace(two.json.find(R"("buffers": [)"), 12, R"("buffers": [{"byteLength": 4}, )");
   refused(test::write_glb(two), ErrorKind::model, "more than one buffer has no URI");

@@ -299,7 +299,10 @@ std::string_view glb_json(std::string_view bytes) {
                std::to_string(bytes.size()));
   if (bytes.substr(16, 4) != "JSON" || 20 + json > length)
     gltf_error("the GLB's first chunk is not a JSON chunk within the file");
-  const std::uint64_t bin = 20 + ((json + 3) & ~std::uint64_t{3});
+  if (json % 4 != 0)  // tinygltf would look for the binary chunk right after it, where no chunk starts
+    gltf_error("the GLB's JSON chunk is " + std::to_string(json) +
+               " bytes, not padded to a multiple of 4 as GLB requires");
+  const std::uint64_t bin = 20 + json;
   if (bin + 8 <= length && bin + 8 + u32(bin) > length)
     gltf_error("the GLB's binary chunk of " + std::to_string(u32(bin)) + " bytes runs past the file's " +
                std::to_string(length));

@@ -318,6 +318,24 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
   std::vector<Vec3> polygon;                         // their positions, for a face of more than three
   std::vector<std::array<std::uint32_t, 3>> pieces;  // its triangles, as indices into corners
   PolygonSplitter splitter;
+  // Faces read before the vertices (legal, if rare): their corners, one after another, and how many each
+  // has; split once the positions are known.
+  std::vector<std::uint32_t> early_corners, early_sizes;
+  std::size_t early_triangles = 0;
+  auto add_face = [&] {
+    // The limit counts triangles, as for STL and glTF: one face of a million corners is a million.
+    if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_obj_faces))
+      throw SceneError(ErrorKind::limit,
+                       "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+    if (corners.size() == 3) {
+      mesh.triangles.push_back({corners[0], corners[1], corners[2]});
+      return;
+    }
+    polygon.clear(), pieces.clear();  // split as OBJ faces are
+    for (const std::uint32_t c : corners) polygon.push_back(mesh.positions[c]);
+    splitter.split(polygon, pieces);
+    for (const auto& t : pieces) mesh.triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  };
   for (const Element& e : h.elements) {
     // An element without properties holds no bytes, however many entries it declares (6e9 of them took a
     // fuzzed file 12 s to count through).
@@ -327,8 +345,6 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       if (normals) mesh.normals.resize(e.count);
       if (colours) mesh.colors.resize(e.count);
     } else if (&e == face) {
-      if (mesh.positions.empty())  // quads are split by their corners' positions, which must be known
-        ply_error("the face element comes before the vertex element; write the vertices first", e.line);
       mesh.triangles.reserve(e.count);
     }
     // What the vertex element's value of property p sets.
@@ -440,20 +456,16 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
                         in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
             corners.push_back(static_cast<std::uint32_t>(v));
           }
-          // The limit counts triangles, as for STL and glTF: one face of a million corners is a million.
-          if (corners.size() >= 3) {
-            if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_obj_faces))
+          if (corners.size() < 3) continue;
+          if (!mesh.positions.empty()) {
+            add_face();
+          } else {  // the vertices come later
+            early_triangles += corners.size() - 2;
+            if (early_triangles > static_cast<std::size_t>(limits.max_obj_faces))
               throw SceneError(ErrorKind::limit,
                                "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
-            if (corners.size() == 3) {
-              mesh.triangles.push_back({corners[0], corners[1], corners[2]});
-            } else {  // as OBJ faces are split
-              polygon.clear(), pieces.clear();
-              for (const std::uint32_t c : corners) polygon.push_back(mesh.positions[c]);
-              splitter.split(polygon, pieces);
-              for (const auto& t : pieces)
-                mesh.triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
-            }
+            early_corners.insert(early_corners.end(), corners.begin(), corners.end());
+            early_sizes.push_back(static_cast<std::uint32_t>(corners.size()));
           }
           continue;
         }
@@ -462,6 +474,10 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       }
       if (&e == vertex) store(i, pos, normal, colour);
     }
+  }
+  for (std::size_t f = 0, at = 0; f < early_sizes.size(); at += early_sizes[f++]) {
+    corners.assign(early_corners.begin() + at, early_corners.begin() + at + early_sizes[f]);
+    add_face();
   }
   if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");
   // A face's corners are vertices, so normals are indexed as positions are.
