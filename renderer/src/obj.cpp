@@ -437,11 +437,10 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   }
   const MtlPass mtl = read_mtl(mtl_text);
 
-  // What ObjReader::ParseFromString does (faces as written, split below as PLY's are; colours only where
-  // the file has them: no white
-  // fallback), on a stream over the text where it lies: ParseFromString copied a model twice (into a
-  // std::string, then into a stringbuf), 2 x its size of fresh memory per request. From memory: a `mtllib`
-  // line reads the uploaded MTL text, never a file named in the upload.
+  // What ObjReader::ParseFromString does (but faces as written, split below as PLY's are; colours only
+  // where the file has them: no white fallback), on a stream over the text where it lies: ParseFromString
+  // copied a model twice (into a std::string, then into a stringbuf), 2 x its size of fresh memory per
+  // request. From memory: a `mtllib` line reads the uploaded MTL text, never a file named in the upload.
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;
