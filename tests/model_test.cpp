@@ -201,6 +201,11 @@ TEST(Models, PlyPolygonsAreSplitAsObjPolygonsAre) {
 TEST(Models, FormatsAreToldByTheirBytesThenByName) {
   EXPECT_EQ(raster::sniff_model("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), ModelFormat::obj);
   EXPECT_EQ(raster::sniff_model("# only a comment\n\n# and another\no box\nv 0 0 0\n"), ModelFormat::obj);
+  // The longest statements are still statements; a first word that merely starts like one is not.
+  EXPECT_EQ(raster::sniff_model("shadow_obj shadow.obj\nv 0 0 0\n"), ModelFormat::obj);
+  EXPECT_EQ(raster::sniff_model("trace_obj\n"), ModelFormat::obj);
+  EXPECT_EQ(raster::sniff_model("shadow_objects 1\n"), std::nullopt);
+  EXPECT_EQ(raster::sniff_model("vvvvvvvvvvvvvvvvvvvvvvvvvvvvvvvv 0 0 0\n"), std::nullopt);
   EXPECT_EQ(raster::sniff_model("solid x\nendsolid x\n"), ModelFormat::stl);
   EXPECT_EQ(raster::sniff_model("ply\r\nformat ascii 1.0\r\n"), ModelFormat::ply);
   EXPECT_EQ(raster::sniff_model(R"( {"asset": {"version": "2.0"}})"), ModelFormat::gltf);

@@ -101,7 +101,9 @@ bool looks_like_obj(std::string_view bytes) {
     if (eol == std::string_view::npos) return true;
     bytes.remove_prefix(eol + 1);
   }
-  const std::string_view word = first_word(bytes);
+  // No statement is longer than 10 letters: a longer first word is not one, and a minified JSON scene (one
+  // "word" of megabytes) is told apart without reading it all (that scan was 5-7 ms of a 7.5 MB scene).
+  const std::string_view word = first_word(bytes.substr(0, 16));
   return std::find(std::begin(kStatements), std::end(kStatements), word) != std::end(kStatements);
 }
 
