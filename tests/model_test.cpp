@@ -28,6 +28,18 @@ using test::Gltf;
 using test::TestMesh;
 using namespace test;  // the writers of model_files.h
 
+// `read()` throws a SceneError of `kind` whose message holds `words`.
+template <typename Read>
+void expect_refused(Read read, ErrorKind kind, const std::string& words) {
+  try {
+    read();
+    ADD_FAILURE() << "accepted; expected: " << words;
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
 raster::Image render_model(const std::string& bytes, const std::string& shading, raster::Uploads files = {},
                            const std::string& extra = "") {
   files["m"] = bytes;
@@ -158,13 +170,7 @@ TEST(Models, PlyVertexPropertiesAreReadInEveryEncoding) {
   EXPECT_EQ(raster::parse_ply(binary(true)), mesh);
   // One byte short of the vertices (3 x 37 bytes after the cameras' 2 x 5): the element is refused.
   const std::string cut = binary(false).substr(0, header("binary_little_endian").size() + 10 + 3 * 37 - 1);
-  try {
-    raster::parse_ply(cut);
-    ADD_FAILURE() << "a cut vertex element was read";
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("element \"vertex\" ends after the data"), std::string::npos)
-        << e.what();
-  }
+  expect_refused([&] { raster::parse_ply(cut); }, ErrorKind::model, "element \"vertex\" ends after the data");
 }
 
 // A polygon of more than four corners, concave: a fan from its first corner would cover the notch of the U.
@@ -230,25 +236,15 @@ TEST(Models, FormatsAreToldByTheirBytesThenByName) {
     EXPECT_NE(std::string(e.what()).find("STL"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("glTF"), std::string::npos) << e.what();
   }
-  try {
-    raster::parse_model("\x01\x02 not a model", ModelFormat::ply);
-    FAIL();
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("PLY"), std::string::npos) << e.what();
-  }
+  expect_refused([] { raster::parse_model("\x01\x02 not a model", ModelFormat::ply); }, ErrorKind::model,
+                 "PLY");
 }
 
 // Each declared count is checked against the bytes before it sizes anything: these would ask for
 // terabytes (the test runs under ASan too, whose allocator fails loudly on such sizes).
 TEST(Models, DeclaredCountsAreCheckedAgainstTheBytesFirst) {
   auto model_error = [](auto&& read, const std::string& words) {
-    try {
-      read();
-      ADD_FAILURE() << "accepted; expected: " << words;
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.kind(), ErrorKind::model) << e.what();
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
+    expect_refused(read, ErrorKind::model, words);
   };
   // Binary STL: the count must match the size.
   std::string stl = write_stl_binary(make_mesh(1));
@@ -305,13 +301,7 @@ TEST(Models, GltfReadsNoFileButUploads) {
   for (const std::string uri : {"/etc/hostname", "../../../../etc/hostname", "file:///etc/hostname"}) {
     SCOPED_TRACE(uri);
     const Gltf g = make_gltf(m, uri, false);
-    try {
-      raster::parse_gltf(g.json);
-      ADD_FAILURE() << "accepted";
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.kind(), ErrorKind::model);
-      EXPECT_NE(std::string(e.what()).find("hostname"), std::string::npos) << e.what();
-    }
+    expect_refused([&] { raster::parse_gltf(g.json); }, ErrorKind::model, "hostname");
   }
   EXPECT_EQ(raster::gltf_files(make_gltf(m, "dir/a%20b.bin", false).json),
             std::vector<std::string>{"a b.bin"});
@@ -412,29 +402,15 @@ TEST(Models, GltfPrimitivesShareTheMeshAndIndicesAreChecked) {
   const raster::Mesh one = raster::parse_gltf(doc(0, 1), {}, files);
   EXPECT_EQ(one.triangles.size(), 2u);
   EXPECT_EQ(one.colors, std::vector<raster::Rgba8>{red});
-  try {
-    raster::parse_gltf(doc(0, 2), {}, files);
-    ADD_FAILURE() << "an index past the vertices was read";
-  } catch (const SceneError& e) {
-    EXPECT_EQ(e.kind(), ErrorKind::model);
-    EXPECT_NE(std::string(e.what()).find("mesh 0 primitive 1 indices (accessor 2) element 2 is 3, but the "
-                                         "primitive has 3 vertices"),
-              std::string::npos)
-        << e.what();
-  }
+  expect_refused([&] { raster::parse_gltf(doc(0, 2), {}, files); }, ErrorKind::model,
+                 "mesh 0 primitive 1 indices (accessor 2) element 2 is 3, but the primitive has 3 vertices");
 }
 
 // Documents that would drive tinygltf 2.7.0 into a crash, a read past the input, an exception or a huge
 // allocation are refused before it runs.
 TEST(Models, GltfDocumentsThatWouldHurtTinygltfAreRefusedFirst) {
   auto refused = [](const std::string& bytes, ErrorKind kind, const std::string& words) {
-    try {
-      raster::parse_gltf(bytes);
-      ADD_FAILURE() << "accepted; expected: " << words;
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.kind(), kind) << e.what();
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
+    expect_refused([&] { raster::parse_gltf(bytes); }, kind, words);
   };
   const std::string head = R"({"asset": {"version": "2.0"}, )";
   // tinygltf reads "extras" recursively: 50,000 nested arrays overflowed the stack.
@@ -475,13 +451,7 @@ TEST(Models, GltfDocumentsThatWouldHurtTinygltfAreRefusedFirst) {
 TEST(Models, GltfReviewFindingsAreRefusedOrDrawnAsGltfSays) {
   auto refused = [](const std::string& bytes, ErrorKind kind, const std::string& words,
                     const raster::Uploads& files = {}) {
-    try {
-      raster::parse_gltf(bytes, {}, files);
-      ADD_FAILURE() << "accepted; expected: " << words;
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.kind(), kind) << e.what();
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
+    expect_refused([&] { raster::parse_gltf(bytes, {}, files); }, kind, words);
   };
   const std::string head = R"({"asset": {"version": "2.0"}, )";
   std::string zeros = "0";
@@ -567,13 +537,7 @@ TEST(Models, GltfReviewFindingsAreRefusedOrDrawnAsGltfSays) {
 // Coordinates beyond +-2^128 and counts that are no whole number get the reader's own words, with the line.
 TEST(Models, StlAndPlyNameWhatIsOutOfRange) {
   auto refused = [](auto parse, const std::string& bytes, const std::string& words) {
-    try {
-      parse(bytes);
-      ADD_FAILURE() << "accepted; expected: " << words;
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.kind(), ErrorKind::model) << e.what();
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
+    expect_refused([&] { parse(bytes); }, ErrorKind::model, words);
   };
   auto stl = [](const std::string& b) { return raster::parse_stl(b); };
   auto ply = [](const std::string& b) { return raster::parse_ply(b); };
@@ -644,13 +608,11 @@ TEST(Models, ATexturedGltfRendersAsTheSameObjDoes) {
   ASSERT_GT(test::count_not(from_obj, test::kBlack), 1000);
   EXPECT_EQ(from_gltf.pixels, from_obj.pixels);
   // Without the image the model is refused, naming the file and what was sent.
-  try {
-    render_model(gltf, "unlit", {{"box.bin", buffer}});
-    ADD_FAILURE() << "accepted";
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("\"box_diffuse.png\", which was not sent"), std::string::npos)
-        << e.what();
-  }
+  expect_refused(
+      [&] {
+        render_model(gltf, "unlit", {{"box.bin", buffer}});
+      },
+      ErrorKind::model, "\"box_diffuse.png\", which was not sent");
 }
 
 // The corpus: every STL, PLY and glTF model of assimp's test files (real files from many exporters,
