@@ -3,7 +3,10 @@
 // in no format is a 422 that names the formats.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -157,6 +160,53 @@ TEST(ModelService, ANamedModelThatStartsLikeJsonIsStillTheModel) {
       server.client().Post(kQuery, test::write_glb(test::make_gltf(m, "", true)), "application/json");
   ASSERT_TRUE(glb_as_json);
   EXPECT_EQ(glb_as_json->status, 200) << glb_as_json->body;
+}
+
+// Issue 32's corpus through the service: every OBJ, STL, PLY and glTF file of Debian's assimp-testmodels
+// (real files from many exporters, broken ones among them), sent as a user would (the model as a part with
+// its file name, the files it names beside it), renders or gets a 4xx with a problem body; never a 5xx.
+// Deadlines are out of the question: 10 minutes, so a slow machine gives the same verdict.
+TEST(ModelService, EveryCorpusModelRendersOrGetsA4xx) {
+  const std::filesystem::path root = "/usr/share/assimp/models";
+  if (!std::filesystem::exists(root)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  rasterd::ServiceConfig config;
+  config.render_deadline = config.body_deadline = std::chrono::minutes(10);
+  test::TestServer server(config);
+  int rendered = 0, refused = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    const auto format = raster::format_of_file_name(entry.path().string());
+    if (!entry.is_regular_file() || !format || entry.file_size() > (16 << 20)) continue;
+    SCOPED_TRACE(entry.path().string());
+    const std::string bytes = test::read_file(entry.path().string());
+    httplib::MultipartFormDataItems items{{"model", bytes, entry.path().filename().string(), ""}};
+    const bool gltf = *format == raster::ModelFormat::gltf || *format == raster::ModelFormat::glb;
+    const bool obj = *format == raster::ModelFormat::obj;
+    // The files it names, from its folder, as the CLI gathers them (OBJ: libraries, then their textures).
+    raster::Uploads named;
+    for (int round = 0; round < (obj ? 2 : 1); ++round)
+      for (const std::string& name : gltf  ? raster::gltf_files(bytes)
+                                     : obj ? raster::obj_files(bytes, {}, named)
+                                           : std::vector<std::string>{}) {
+        const std::filesystem::path file = entry.path().parent_path() / name;
+        if (!named.contains(name) && std::filesystem::is_regular_file(file) &&
+            std::filesystem::file_size(file) < (8 << 20))
+          named[name] = test::read_file(file.string());
+      }
+    for (const auto& [name, file] : named) items.push_back({"files", file, name, ""});
+    auto r = server.client().Post(kQuery, items);
+    ASSERT_TRUE(r);
+    if (r->status == 200) {
+      ++rendered;
+      EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+    } else {
+      ++refused;
+      EXPECT_GE(r->status, 400) << r->body;
+      EXPECT_LT(r->status, 500) << r->body;
+      EXPECT_FALSE(problem_detail(r).empty()) << r->body;
+    }
+  }
+  EXPECT_GT(rendered, 60);
+  EXPECT_GT(refused, 5);
 }
 
 }  // namespace
