@@ -319,6 +319,7 @@ std::uint8_t unit_byte(double v) {
 }
 
 using Mat = std::array<double, 16>;  // column-major, as glTF stores it
+constexpr Mat kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
 Mat multiply(const Mat& a, const Mat& b) {
   Mat r{};
@@ -329,7 +330,7 @@ Mat multiply(const Mat& a, const Mat& b) {
 }
 
 Mat local_matrix(const tinygltf::Node& node) {
-  Mat m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  Mat m = kIdentity;
   if (node.matrix.size() == 16) {
     std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
     return m;
@@ -429,30 +430,46 @@ class AccessorView {
     for (std::size_t i = 0; i < count_; ++i) f(i, get(i, 0), get(i, 1), get(i, 2));
   }
 
-  // Every index, offset by `base`, into `out`; the first one >= `limit` throws, naming its element. One
-  // branch-free pass that the compiler vectorizes when the indices are packed (as writers store them): the
-  // largest index is checked once at the end, and only then is the bad one looked for, for its element.
+  // Every index, offset by `base`, into `out`; the first one >= `limit` throws, naming its element.
   void indices(std::uint32_t base, std::uint64_t limit, std::vector<std::uint32_t>& out) const {
     out.resize(count_);
+    read_indices(base, limit, [&](auto at) {
+      for (std::size_t i = 0; i < count_; ++i) out[i] = at(i);
+    });
+  }
+
+  // The same, three at a time, straight into `out`'s count_ / 3 triangles (a leftover index is unused).
+  void triangles(std::uint32_t base, std::uint64_t limit, std::array<std::uint32_t, 3>* out) const {
+    read_indices(base, limit, [&](auto at) {
+      for (std::size_t t = 0; t < count_ / 3; ++t) out[t] = {at(3 * t), at(3 * t + 1), at(3 * t + 2)};
+    });
+  }
+
+ private:
+  // Hands `copy` a function from an element's position to its index plus `base`, with the component type
+  // and the stride fixed (packed indices, as writers store them, get a constant stride the compiler can
+  // use), while the largest index read is kept: it is checked once at the end, and only then is the bad
+  // one looked for, for its element. The copy itself has no branch per index.
+  template <typename Copy>
+  void read_indices(std::uint32_t base, std::uint64_t limit, Copy&& copy) const {
     auto all = [&]<typename T>(T) {
-      auto at = [&](std::size_t i, std::size_t stride) {
+      auto load = [&](std::size_t i, std::size_t stride) {
         T v;
         std::memcpy(&v, data_ + i * stride, sizeof v);
         return v;
       };
-      std::uint32_t* o = out.data();
       T largest = 0;
-      auto copy = [&](std::size_t stride) {
-        for (std::size_t i = 0; i < count_; ++i) {
-          const T v = at(i, stride);
+      auto with_stride = [&](std::size_t stride) {
+        copy([&, stride](std::size_t i) {
+          const T v = load(i, stride);
           largest = std::max(largest, v);
-          o[i] = base + v;  // wraps only for an index past the vertices, which throws below
-        }
+          return static_cast<std::uint32_t>(base + v);  // wraps only past the vertices, which throws below
+        });
       };
-      stride_ == sizeof(T) ? copy(sizeof(T)) : copy(stride_);
+      stride_ == sizeof(T) ? with_stride(sizeof(T)) : with_stride(stride_);
       if (count_ == 0 || largest < limit) return;
       for (std::size_t i = 0; i < count_; ++i)
-        if (const T v = at(i, stride_); v >= limit)
+        if (const T v = load(i, stride_); v >= limit)
           gltf_error(what_ + " element " + std::to_string(i) + " is " + std::to_string(v) +
                      ", but the primitive has " + std::to_string(limit) + " vertices");
     };
@@ -467,7 +484,6 @@ class AccessorView {
     gltf_error(what_ + " holds indices of a type that is not an unsigned integer");
   }
 
- private:
   template <typename T>
   static double load(const unsigned char* p, int c) {
     T v;
@@ -500,8 +516,7 @@ class Reader {
         gltf_error("the default scene " + std::to_string(s) + " does not exist");
       roots = model_.scenes[static_cast<std::size_t>(s)].nodes;
     } else if (model_.nodes.empty()) {  // no scenes and no nodes: every mesh as it is
-      for (std::size_t i = 0; i < model_.meshes.size(); ++i)
-        add_mesh(static_cast<int>(i), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+      for (std::size_t i = 0; i < model_.meshes.size(); ++i) add_mesh(static_cast<int>(i), kIdentity);
     } else {  // no scenes: every node that is no other node's child
       std::vector<bool> child(model_.nodes.size());
       for (const tinygltf::Node& n : model_.nodes)
@@ -511,10 +526,9 @@ class Reader {
         if (!child[i]) roots.push_back(static_cast<int>(i));
     }
     visited_.assign(model_.nodes.size(), false);
-    const Mat identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     // Depth first without recursion: a document's nesting cannot exhaust the stack.
     std::vector<std::pair<int, Mat>> stack;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, identity});
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, kIdentity});
     while (!stack.empty()) {
       auto [index, parent] = stack.back();
       stack.pop_back();
@@ -586,13 +600,18 @@ class Reader {
       // Every coordinate finite and within +-2^128 (what the renderer takes): checked once, without a branch
       // (or a chain of additions) per vertex, and only then is the bad one looked for.
       bool in_range = true;
-      positions.each_vec3([&](std::size_t i, double x, double y, double z) {
-        const Vec3 w{m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13],
-                     m[2] * x + m[6] * y + m[10] * z + m[14]};
+      auto put = [&](std::size_t i, const Vec3& w) {
         in_range &= (std::fabs(w.x) <= kMaxCoordinate) & (std::fabs(w.y) <= kMaxCoordinate) &
                     (std::fabs(w.z) <= kMaxCoordinate);
         out[i] = w;
-      });
+      };
+      if (m == kIdentity)  // most nodes: no transform to apply
+        positions.each_vec3([&](std::size_t i, double x, double y, double z) { put(i, {x, y, z}); });
+      else
+        positions.each_vec3([&](std::size_t i, double x, double y, double z) {
+          put(i, {m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13],
+                  m[2] * x + m[6] * y + m[10] * z + m[14]});
+        });
       if (!in_range)
         for (std::size_t i = 0; i < positions.count(); ++i)
           if (!(std::fabs(out[i].x) <= kMaxCoordinate && std::fabs(out[i].y) <= kMaxCoordinate &&
@@ -606,16 +625,24 @@ class Reader {
       add_uvs(p, where, count, material);
 
       // The primitive's corner order: its indices, or 0..count-1.
-      std::vector<std::uint32_t>& corners = corners_;
-      if (p.indices >= 0) {
-        AccessorView(model_, p.indices, where + " indices")
-            .indices(static_cast<std::uint32_t>(base), count, corners);
-      } else {
-        corners.resize(count);
-        for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(base + i);
-      }
       const std::size_t first_triangle = mesh_.triangles.size();
-      add_faces(p.mode, corners, mirrored, where);
+      if (p.indices >= 0 && p.mode == TINYGLTF_MODE_TRIANGLES) {  // most meshes: indices are the triangles
+        const AccessorView indices(model_, p.indices, where + " indices");
+        add_triangles(indices.count() / 3, mirrored, [&](std::array<std::uint32_t, 3>* out) {
+          indices.triangles(static_cast<std::uint32_t>(base), count, out);
+        });
+      } else {
+        // The primitive's corner order: its indices, or 0..count-1.
+        std::vector<std::uint32_t>& corners = corners_;
+        if (p.indices >= 0) {
+          AccessorView(model_, p.indices, where + " indices")
+              .indices(static_cast<std::uint32_t>(base), count, corners);
+        } else {
+          corners.resize(count);
+          for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(base + i);
+        }
+        add_faces(p.mode, corners, mirrored, where);
+      }
       if (!has_normals) without_normals_.push_back({first_triangle, mesh_.triangles.size()});
     }
   }
@@ -815,6 +842,20 @@ class Reader {
     if (textured_) make_room(mesh_.face_textures, more);
   }
 
+  // `count` triangles that `fill` writes at once (the common case, in straight loops rather than one call a
+  // triangle), wound back where the node mirrors.
+  template <typename Fill>
+  void add_triangles(std::size_t count, bool mirrored, Fill&& fill) {
+    const std::size_t first = mesh_.triangles.size();
+    make_room_for_triangles(count);
+    mesh_.triangles.resize(first + count);
+    std::array<std::uint32_t, 3>* t = mesh_.triangles.data() + first;
+    fill(t);
+    if (mirrored)
+      for (std::size_t i = 0; i < count; ++i) std::swap(t[i][1], t[i][2]);
+    if (textured_) mesh_.face_textures.insert(mesh_.face_textures.end(), count, primitive_texture_);
+  }
+
   void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, bool mirrored) {
     mesh_.triangles.push_back(mirrored ? std::array{a, c, b} : std::array{a, b, c});
     if (textured_) mesh_.face_textures.push_back(primitive_texture_);
@@ -823,17 +864,11 @@ class Reader {
   void add_faces(int mode, const std::vector<std::uint32_t>& v, bool mirrored, const std::string& where) {
     const std::size_t n = v.size();
     switch (mode) {
-      case TINYGLTF_MODE_TRIANGLES: {  // the common case, in straight loops rather than one call a triangle
-        const std::size_t count = n / 3, first = mesh_.triangles.size();
-        make_room_for_triangles(count);
-        mesh_.triangles.resize(first + count);
-        std::array<std::uint32_t, 3>* t = mesh_.triangles.data() + first;
-        for (std::size_t i = 0; i < count; ++i) t[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
-        if (mirrored)
-          for (std::size_t i = 0; i < count; ++i) std::swap(t[i][1], t[i][2]);
-        if (textured_) mesh_.face_textures.insert(mesh_.face_textures.end(), count, primitive_texture_);
+      case TINYGLTF_MODE_TRIANGLES:
+        add_triangles(n / 3, mirrored, [&](std::array<std::uint32_t, 3>* t) {
+          for (std::size_t i = 0; i < n / 3; ++i) t[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        });
         break;
-      }
       case TINYGLTF_MODE_TRIANGLE_STRIP:  // every other triangle turned back to the strip's winding
         make_room_for_triangles(n < 2 ? 0 : n - 2);
         for (std::size_t i = 0; i + 2 < n; ++i)
