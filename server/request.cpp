@@ -256,10 +256,11 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   // first byte unless its bytes are a model's or a file name or Content-Type names a model format (a binary
   // STL's header may start with '{').
   const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(body);
-  const bool gltf = sniffed == raster::ModelFormat::gltf || sniffed == raster::ModelFormat::glb ||
-                    named_format == raster::ModelFormat::gltf || named_format == raster::ModelFormat::glb;
   // The named format is the body's only when no part carries the model (multipart: the model part's name).
   const bool named_model = named_format && !uploads.contains("model");
+  const bool gltf = sniffed == raster::ModelFormat::gltf || sniffed == raster::ModelFormat::glb ||
+                    (named_model &&
+                     (named_format == raster::ModelFormat::gltf || named_format == raster::ModelFormat::glb));
   if (!gltf && (declared_json || (is_scene_text(body) && !sniffed && !named_model))) {
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {

@@ -156,6 +156,19 @@ TEST(ModelService, ANamedModelThatStartsLikeJsonIsStillTheModel) {
     EXPECT_EQ((*r)->status, 200) << (*r)->body;
     EXPECT_EQ((*r)->body, want->body);
   }
+  // A scene beside a model part whose file name names glTF: the scene is the body, the GLB the model.
+  const std::string glb = test::write_glb(test::make_gltf(m, "", true));
+  auto scene_and_glb = server.client().Post(
+      "/render",
+      httplib::MultipartFormDataItems{{"scene", R"({"width": 64, "height": 64, "camera": {"view": "iso"},
+                                                             "primitives": [{"type": "model", "source": "model"}]})",
+                                       "scene.json", "application/json"},
+                                      {"model", glb, "torus.glb", ""}});
+  auto glb_alone = server.client().Post(kQuery, glb, "model/gltf-binary");
+  ASSERT_TRUE(scene_and_glb);
+  ASSERT_TRUE(glb_alone);
+  EXPECT_EQ(scene_and_glb->status, 200) << scene_and_glb->body;
+  EXPECT_EQ(scene_and_glb->body, glb_alone->body);
   auto glb_as_json =
       server.client().Post(kQuery, test::write_glb(test::make_gltf(m, "", true)), "application/json");
   ASSERT_TRUE(glb_as_json);

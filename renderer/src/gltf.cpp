@@ -453,7 +453,7 @@ class AccessorView {
   template <typename Copy>
   void read_indices(std::uint32_t base, std::uint64_t limit, Copy&& copy) const {
     auto all = [&]<typename T>(T) {
-      auto load = [&](std::size_t i, std::size_t stride) {
+      auto index_at = [&](std::size_t i, std::size_t stride) {
         T v;
         std::memcpy(&v, data_ + i * stride, sizeof v);
         return v;
@@ -461,7 +461,7 @@ class AccessorView {
       T largest = 0;
       auto with_stride = [&](std::size_t stride) {
         copy([&, stride](std::size_t i) {
-          const T v = load(i, stride);
+          const T v = index_at(i, stride);
           largest = std::max(largest, v);
           return static_cast<std::uint32_t>(base + v);  // wraps only past the vertices, which throws below
         });
@@ -469,7 +469,7 @@ class AccessorView {
       stride_ == sizeof(T) ? with_stride(sizeof(T)) : with_stride(stride_);
       if (count_ == 0 || largest < limit) return;
       for (std::size_t i = 0; i < count_; ++i)
-        if (const T v = load(i, stride_); v >= limit)
+        if (const T v = index_at(i, stride_); v >= limit)
           gltf_error(what_ + " element " + std::to_string(i) + " is " + std::to_string(v) +
                      ", but the primitive has " + std::to_string(limit) + " vertices");
     };
