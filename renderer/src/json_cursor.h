@@ -53,8 +53,13 @@ class JsonCursor {
   /// What the next value is, from its first byte.
   enum class Kind : std::uint8_t { null, boolean, number, string, array, object };
 
+  /// A UTF-8 byte order mark at the start is passed over, as nlohmann does (RFC 8259 8.1 lets a parser
+  /// ignore one, and Windows editors write it); byte offsets still count from the text's first byte.
   JsonCursor(std::string_view text, int max_depth)
-      : begin_(text.data()), p_(text.data()), end_(text.data() + text.size()), max_depth_(max_depth) {}
+      : begin_(text.data()),
+        p_(text.data() + (text.starts_with("\xEF\xBB\xBF") ? 3 : 0)),
+        end_(text.data() + text.size()),
+        max_depth_(max_depth) {}
 
   /// The next value's kind; whitespace before it is skipped. Malformed when there is none.
   [[gnu::always_inline]] Kind peek() {
