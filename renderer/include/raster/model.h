@@ -50,9 +50,8 @@ Mesh parse_stl(std::string_view bytes, const Limits& limits = {});
 /// than three corners are triangulated as OBJ faces are (quads on their shorter diagonal, as
 /// tinyobjloader splits them; larger polygons by ear clipping in their own plane, exact for any simple
 /// polygon, convex or not; the face element may come before the vertex element). Other elements and
-/// properties are skipped. Every element count and list length
-/// is checked against the bytes left before anything is allocated; `limits.max_obj_faces` bounds the
-/// triangles.
+/// properties are skipped. Every element count and list length is checked against the bytes left before
+/// anything is allocated; `limits.max_obj_faces` bounds the triangles.
 Mesh parse_ply(std::string_view bytes, const Limits& limits = {});
 
 /// glTF 2.0 through tinygltf: a .gltf document (buffers and images as data: URIs, or as `files` named by
