@@ -23,6 +23,7 @@
 
 #include "raster/raster.h"
 #include "request.h"
+#include "resources.h"
 #include "service.h"
 
 namespace {
@@ -188,10 +189,14 @@ int run_render(const std::vector<std::string>& args) {
 // requests of each ab-bench scene after 3 uncounted), 2d-large-tris / 2d-lines / 2d-small-tris /
 // obj-sphere-400k: 924 / 1,378 / 2,523 / 9,681 without this, 0 / 0 / 0 / 5-7 with it. The render's own
 // large arrays are kept apart (renderer/src/memory.h).
+// What freed memory the heap keeps is resident memory no reservation counts, so it is bounded too and set
+// aside from the memory budget (kHeapKeptBytes): at most kArenas heaps (glibc would make 8 per core, one
+// for each of the busiest connection threads), each keeping at most kTrimBytes free at its top.
 void keep_freed_pages() {
-#if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 128 << 20);
+#if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD) && defined(M_ARENA_MAX)
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(rasterd::kMmapBytes));
+  mallopt(M_TRIM_THRESHOLD, static_cast<int>(rasterd::kTrimBytes));
+  mallopt(M_ARENA_MAX, rasterd::kArenas);
 #endif
 }
 

@@ -1,6 +1,9 @@
 #include "service.h"
 
+#include <dirent.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -8,20 +11,28 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <exception>
 #include <map>
 #include <mutex>
 #include <set>
 #include <string_view>
 #include <thread>
+#include <vector>
 
+#include "access_log.h"
 #include "api.h"
 #include "connection_threads.h"
 #include "etag.h"
+#include "memory_budget.h"
 #include "playground.h"
 #include "problem.h"
 #include "raster/raster.h"
 #include "request.h"
+#include "resources.h"
 #include "scene_url.h"
 
 namespace rasterd {
@@ -147,6 +158,13 @@ class Metrics {
     line("rasterd_bytes_total{direction=\"out\"} " + std::to_string(bytes_out_));
     return t;
   }
+  static std::string gauge(const std::string& name, const std::string& help, const std::string& type,
+                           double value, const std::string& labels = "") {
+    char number[40];  // bytes and seconds since 1970 need all their digits
+    std::snprintf(number, sizeof number, "%.15g", value);
+    return "# HELP " + name + " " + help + "\n# TYPE " + name + " " + type + "\n" + name + labels + " " +
+           number + "\n";
+  }
 
  private:
   static std::string format(double v) {
@@ -163,10 +181,65 @@ class Metrics {
   std::uint64_t bytes_in_ = 0, bytes_out_ = 0;
 };
 
+// The process_* metrics every Prometheus client library exports, from /proc/self: what an operator alerts on
+// before the kernel's OOM killer acts (resident memory against the container's limit), and CPU, fds and
+// start time for dashboards.
+std::string process_metrics() {
+  std::string t;
+  const double tick = static_cast<double>(::sysconf(_SC_CLK_TCK));
+  const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
+  std::ifstream stat_file("/proc/self/stat");
+  std::string stat((std::istreambuf_iterator<char>(stat_file)), std::istreambuf_iterator<char>());
+  // Fields after the command's closing ')': state is field 3; utime 14, stime 15, starttime 22, vsize 23,
+  // rss 24 (man 5 proc).
+  std::vector<std::string> f;
+  if (const auto close = stat.rfind(')'); close != std::string::npos) {
+    std::istringstream in(stat.substr(close + 2));
+    for (std::string w; in >> w;) f.push_back(w);
+  }
+  auto field = [&](std::size_t n) { return n - 3 < f.size() ? std::strtod(f[n - 3].c_str(), nullptr) : 0.0; };
+  double boot = 0;  // seconds since 1970 at boot: /proc/stat's btime
+  std::ifstream kernel("/proc/stat");
+  for (std::string key; kernel >> key;)
+    if (key == "btime") {
+      kernel >> boot;
+      break;
+    }
+  int fds = 0;
+  if (DIR* d = ::opendir("/proc/self/fd")) {
+    while (const dirent* e = ::readdir(d)) fds += e->d_name[0] != '.';
+    ::closedir(d);
+    --fds;  // the one opendir holds
+  }
+  rlimit nofile{};
+  ::getrlimit(RLIMIT_NOFILE, &nofile);
+  t += Metrics::gauge("process_cpu_seconds_total", "User and system CPU time spent in seconds.", "counter",
+                      (field(14) + field(15)) / tick);
+  t += Metrics::gauge("process_resident_memory_bytes", "Resident memory size in bytes.", "gauge",
+                      field(24) * page);
+  t += Metrics::gauge("process_virtual_memory_bytes", "Virtual memory size in bytes.", "gauge", field(23));
+  t += Metrics::gauge("process_start_time_seconds", "Start time of the process since unix epoch in seconds.",
+                      "gauge", boot + field(22) / tick);
+  t += Metrics::gauge("process_open_fds", "Number of open file descriptors.", "gauge", fds);
+  t += Metrics::gauge("process_max_fds", "Maximum number of open file descriptors.", "gauge",
+                      static_cast<double>(nofile.rlim_cur));
+  return t;
+}
+
+// RFC 9110 5.6.7's IMF-fixdate, for the Date header every answer carries (6.6.1).
+std::string http_date(std::time_t when) {
+  std::tm utc{};
+  ::gmtime_r(&when, &utc);
+  char buf[40];
+  std::strftime(buf, sizeof buf, "%a, %d %b %Y %H:%M:%S GMT", &utc);
+  return buf;
+}
+
 // cpp-httplib runs a request's pre-routing handler, route handler and logger on one thread, one request
 // at a time, and offers no per-request user data: this thread-local is that request's context.
 struct RequestContext {
   Clock::time_point start;
+  std::chrono::system_clock::time_point wall;  ///< when the request began: the log line, the Date header
   std::size_t bytes_in = 0;
 };
 thread_local RequestContext t_request;
@@ -216,12 +289,15 @@ bool plain_request_id(const std::string& id) {
 struct Service::State {
   ServiceConfig config;
   Admission admission;
+  MemoryPool memory;
   Metrics metrics;
   std::atomic<bool> cancel{false};
   int listen_socket = -1;  // remembered from the socket-options hook, for widen_backlog()
 
   explicit State(ServiceConfig c)
-      : config(c), admission(c.workers, c.max_queue, c.max_queued_bytes, c.max_queue_wait) {}
+      : config(c),
+        admission(c.workers, c.max_queue, c.max_queued_bytes, c.max_queue_wait),
+        memory(c.memory_budget) {}
 
   // How long a connection may stay silent: the body deadline, at most 5 s (also between requests' headers).
   std::chrono::milliseconds read_timeout() const {
@@ -254,8 +330,22 @@ struct Service::State {
   // `curl -d` sends) at 8 KiB with a 413, but a ContentReader route receives any body. The cap is counted
   // while streaming (chunked bodies declare no length) and the deadline holds whatever the pace of the
   // bytes. Multipart parts go to `uploads`, except "scene", which becomes the body.
+  // 503 with Retry-After: the memory budget could not give `bytes` within the queue's wait.
+  bool refuse_memory(httplib::Response& res, std::int64_t bytes, const char* reason) {
+    const auto seconds = std::max<std::int64_t>(1, (config.max_queue_wait.count() + 999) / 1000);
+    res.set_header("Retry-After", std::to_string(seconds));
+    return refuse(res,
+                  problem(503, "overloaded", "Not enough memory is free for this request now",
+                          "it needs about " + std::to_string(bytes >> 20) + " MiB more of the " +
+                              std::to_string(memory.capacity() >> 20) + " MiB memory budget, and other requests "
+                              "held it for " + std::to_string(config.max_queue_wait.count()) + " ms; try again in " +
+                              std::to_string(seconds) + " s"),
+                  reason);
+  }
+
   bool read_body(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
-                 std::string& body, raster::Uploads& uploads, std::string& model_file_name) {
+                 RequestBudget& budget, std::string& body, raster::Uploads& uploads,
+                 std::string& model_file_name) {
     const std::size_t cap = config.max_body_bytes;
     if (req.has_header("Content-Encoding") && req.get_header_value("Content-Encoding") != "identity")
       return refuse(res,
@@ -270,6 +360,17 @@ struct Service::State {
                     "body_size");
     };
     if (req.get_header_value<std::uint64_t>("Content-Length") > cap) return too_large();
+    // The body's memory is reserved before it is read: declared, at once; else as it arrives, a MiB at a
+    // time. One larger than the whole budget could never be held.
+    const auto declared = static_cast<std::int64_t>(req.get_header_value<std::uint64_t>("Content-Length"));
+    if (declared > memory.capacity())
+      return refuse(res,
+                    problem(413, "body-too-large", "The request body is too large",
+                            "the body's " + std::to_string(declared) + " bytes are more than the memory budget of " +
+                                std::to_string(memory.capacity()) + " bytes (--memory-budget)"),
+                    "body_size");
+    if (!budget.reserve(declared)) return refuse_memory(res, declared, "memory");
+    bool no_memory = false;
 
     const Clock::time_point deadline = t_request.start + config.body_deadline;
     bool over = false, late = false;
@@ -280,6 +381,8 @@ struct Service::State {
       over = t_request.bytes_in > cap;
       late = !over && Clock::now() > deadline;
       if (over || late) return false;  // stop reading
+      if (static_cast<std::int64_t>(t_request.bytes_in) > budget.held() && !budget.reserve(1 << 20))
+        return !(no_memory = true);
       into.append(data, n);
       return true;
     };
@@ -339,6 +442,7 @@ struct Service::State {
       complete = reader([&](const char* data, std::size_t n) { return take(body, data, n); });
     }
     if (over) return too_large();
+    if (no_memory) return refuse_memory(res, 1 << 20, "memory");
     // A client that went quiet for the socket's read timeout also failed to deliver its body in time;
     // one whose connection ended is past answering anyway.
     if (!complete && Clock::now() - last_arrival >= read_timeout()) late = true;
@@ -362,14 +466,15 @@ struct Service::State {
     std::string body;
     raster::Uploads uploads;
     std::string model_file_name;  // of the multipart part that carried the model
-    if (!read_body(req, res, reader, body, uploads, model_file_name)) return;
+    RequestBudget budget(memory, config.max_queue_wait);
+    if (!read_body(req, res, reader, budget, body, uploads, model_file_name)) return;
     const bool multipart = req.is_multipart_form_data();
     const bool declared_json = !multipart && is_json_media_type(req.get_header_value("Content-Type"));
     // What the request says the model is, for bytes that do not tell: the file name, else the media type.
     std::optional<raster::ModelFormat> named = raster::format_of_file_name(model_file_name);
     if (!named && !multipart) named = format_of_media_type(req.get_header_value("Content-Type"));
-    render(req, res, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()), false,
-           declared_json, named);
+    render(req, res, budget, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()),
+           false, declared_json, named);
   }
 
   // GET /render?scene=...: the scene is in the URL, so the answer can be cached by URL.
@@ -396,13 +501,16 @@ struct Service::State {
     }
     Params params(req.params.begin(), req.params.end());
     params.erase("scene");
-    render(req, res, std::move(body), {}, params, true, false);
+    RequestBudget budget(memory, config.max_queue_wait);
+    if (!budget.reserve(static_cast<std::int64_t>(body.size())))
+      return void(refuse_memory(res, static_cast<std::int64_t>(body.size()), "memory"));
+    render(req, res, budget, std::move(body), {}, params, true, false);
   }
 
   // Both methods from here: admission, parse, plan, conditional request, render, encode. `cacheable`: the
   // request is a GET, whose answer is named by its URL alone. `declared_json`: its Content-Type says JSON.
-  void render(const httplib::Request& req, httplib::Response& res, std::string body, raster::Uploads uploads,
-              const Params& params, bool cacheable, bool declared_json,
+  void render(const httplib::Request& req, httplib::Response& res, RequestBudget& budget, std::string body,
+              raster::Uploads uploads, const Params& params, bool cacheable, bool declared_json,
               std::optional<raster::ModelFormat> named_format = std::nullopt) {
     const Admission::Verdict verdict = admission.enter(body.size() + uploads_size(uploads));
     if (verdict.refused) {
@@ -428,10 +536,16 @@ struct Service::State {
     if (config.after_admission) config.after_admission();
 
     const Clock::time_point t0 = Clock::now();
+    // This request's limits: the service's, asking this request's budget for memory and time.
+    raster::Limits limits = config.limits;
+    limits.budget = &budget;
+    budget.start_render(t0 + config.render_deadline, &cancel);
     try {
-      raster::Scene scene = scene_from_request(std::move(body), std::move(uploads), params, config.limits,
+      const auto body_bytes = static_cast<std::int64_t>(body.size() + uploads_size(uploads));
+      raster::Scene scene = scene_from_request(std::move(body), std::move(uploads), params, limits,
                                                declared_json, named_format);
-      const raster::RenderPlan plan = raster::plan(scene, config.limits, {config.render_threads});
+      budget.release(body_bytes);  // read and freed: what was sent is gone, the scene holds what it needs
+      const raster::RenderPlan plan = raster::plan(scene, limits, {config.render_threads});
       if (explain_requested(params)) {  // no tag: the plan also depends on the thread count
         res.set_content(raster::explain_json(plan), "application/json");
         return;
@@ -461,6 +575,7 @@ struct Service::State {
       raster::RenderControl control;
       control.deadline = t0 + config.render_deadline;
       control.cancel = &cancel;
+      control.budget = &budget;
       raster::Image image = raster::render(scene, plan, control);
       scene = {};  // done with: its memory goes before the PNG's comes
       const Clock::time_point t2 = Clock::now();
@@ -480,18 +595,41 @@ struct Service::State {
     } catch (const raster::RenderCancelled&) {
       const bool shutting_down = cancel.load();
       metrics.rejected(shutting_down ? "shutdown" : "render_timeout");
-      write_problem(res, shutting_down ? problem(503, "shutting-down", "The server is shutting down",
-                                                 "the render was stopped; retry elsewhere")
-                                       : problem(503, "render-timeout", "The render took too long",
-                                                 "the limit is " +
-                                                     std::to_string(config.render_deadline.count()) + " ms"));
+      // Past the deadline is a property of the request, not of this replica: every replica has the same
+      // deadline, so a 4xx, which proxies do not retry elsewhere (a 503 would be, costing every replica
+      // the whole deadline).
+      write_problem(res, shutting_down
+                             ? problem(503, "shutting-down", "The server is shutting down",
+                                       "the render was stopped; retry elsewhere")
+                             : problem(422, "deadline-exceeded", "The render needs more time than allowed",
+                                       "reading and drawing this request took more than the " +
+                                           std::to_string(config.render_deadline.count()) +
+                                           " ms every replica allows (--render-deadline-ms), so it is not "
+                                           "retried: send fewer primitives or faces, fewer pixels, or less "
+                                           "anti-aliasing"));
+    } catch (const raster::MemoryRefused& e) {
+      const std::int64_t wanted = budget.wanted();
+      if (wanted > memory.capacity()) {
+        metrics.rejected("memory_limit");
+        write_problem(res, problem(422, "memory-limit", "The request needs more memory than allowed",
+                                   "reading and drawing it needs at least " + std::to_string(wanted >> 20) +
+                                       " MiB, more than the service's memory budget of " +
+                                       std::to_string(memory.capacity() >> 20) + " MiB (--memory-budget); " +
+                                       e.what() + ". Send a smaller model or image"));
+      } else {
+        refuse_memory(res, e.bytes(), "memory");
+      }
     }
   }
 };
 
 Service::Service(ServiceConfig config) {
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  if (config.workers <= 0) config.workers = cores;
+  // The CPUs this process may use (its affinity and cgroup quota), not the machine's: a container limited
+  // to one CPU renders on one thread.
+  const int cpus = static_cast<int>(std::max<std::int64_t>(1, cpu_limit().value));
+  if (config.workers <= 0) config.workers = cpus;
+  if (config.render_threads <= 0) config.render_threads = cpus;
+  if (config.memory_budget <= 0) config.memory_budget = default_memory_budget(memory_limit());
   // Each worker's PNG encoder set up now, not on the first requests.
   raster::prepare_png_encoders(config.workers);
   state_ = std::make_unique<State>(config);
@@ -536,7 +674,8 @@ void Service::install(httplib::Server& server) {
   });
 
   server.set_pre_routing_handler([&s](const httplib::Request& req, httplib::Response& res) {
-    t_request = RequestContext{Clock::now(), 0};
+    t_request = RequestContext{Clock::now(), std::chrono::system_clock::now(), 0};
+    res.set_header("Date", http_date(std::chrono::system_clock::to_time_t(t_request.wall)));
     const std::string client_id = req.get_header_value("X-Request-Id");
     res.set_header("X-Request-Id", plain_request_id(client_id) ? client_id : next_request_id());
     s.set_cors_headers(req, res);
@@ -569,7 +708,20 @@ void Service::install(httplib::Server& server) {
              [](const httplib::Request&, httplib::Response& res) { res.set_content("ok\n", "text/plain"); });
   server.Get("/metrics", [&s](const httplib::Request&, httplib::Response& res) {
     const auto [running, waiting] = s.admission.load();
-    res.set_content(s.metrics.text(running, waiting), "text/plain; version=0.0.4");
+    std::string text = s.metrics.text(running, waiting);
+    text += Metrics::gauge("rasterd_memory_budget_bytes",
+                           "Bytes requests may reserve at once (--memory-budget).", "gauge",
+                           static_cast<double>(s.memory.capacity()));
+    text += Metrics::gauge("rasterd_memory_reserved_bytes",
+                           "Bytes reserved now by requests: bodies, parsed scenes and models, render buffers.",
+                           "gauge", static_cast<double>(s.memory.reserved()));
+    text += Metrics::gauge("rasterd_memory_reserved_peak_bytes", "Most bytes reserved at once since start.",
+                           "gauge", static_cast<double>(s.memory.peak()));
+    text += Metrics::gauge("rasterd_build_info", "The release and render version of this binary.", "gauge", 1,
+                           "{version=\"" RASTERD_VERSION "\",render_version=\"" +
+                               std::to_string(raster::kRenderVersion) + "\"}");
+    text += process_metrics();
+    res.set_content(text, "text/plain; version=0.0.4");
   });
   // GET / (the playground page) and GET /examples[/<name>.json]: server/playground.cpp.
   install_playground(server);
@@ -580,7 +732,8 @@ void Service::install(httplib::Server& server) {
         if (!res.has_header("X-Request-Id")) {
           // cpp-httplib answered before routing (a request line over its 8192-byte limit, or a malformed
           // one): no pre-routing handler ran, so this request has no id or start time of its own yet.
-          t_request = RequestContext{Clock::now(), 0};
+          t_request = RequestContext{Clock::now(), std::chrono::system_clock::now(), 0};
+          res.set_header("Date", http_date(std::chrono::system_clock::to_time_t(t_request.wall)));
           res.set_header("X-Request-Id", next_request_id());
           s.set_cors_headers(req, res);
         }
@@ -629,10 +782,19 @@ void Service::install(httplib::Server& server) {
   server.set_logger([&s](const httplib::Request& req, const httplib::Response& res) {
     const std::size_t in = t_request.bytes_in ? t_request.bytes_in : req.body.size();
     s.metrics.request(route_label(req.path), res.status, in, res.body.size());
-    // The path is the client's (percent-decoded): escaped so that it cannot forge or split a log line.
-    std::fprintf(stderr, "%s %s %d in=%zu out=%zu ms=%.1f id=%s\n", req.method.c_str(),
-                 raster::escape_for_display(req.path).c_str(), res.status, in, res.body.size(),
-                 ms_between(t_request.start, Clock::now()), res.get_header_value("X-Request-Id").c_str());
+    LogLine line;
+    line.wall = t_request.wall;
+    line.client = req.remote_addr;
+    // cpp-httplib answers a request line over its limit (414) before parsing it: no method or path to log.
+    line.method = req.method.empty() ? "-" : req.method;
+    line.path = req.path.empty() ? "-" : req.path;
+    line.status = res.status;
+    line.bytes_in = in, line.bytes_out = res.body.size();
+    line.ms = ms_between(t_request.start, Clock::now());
+    line.id = res.get_header_value("X-Request-Id");
+    line.user_agent = req.get_header_value("User-Agent");
+    const std::string text = s.config.log_json ? line.json() : line.text();
+    std::fwrite(text.data(), 1, text.size(), stderr);
   });
 }
 
@@ -653,16 +815,20 @@ constexpr Flag kFlags[] = {
     {"max-obj-faces",
      "faces of one model (OBJ faces; STL, PLY and glTF triangles), 422 above (default 5000000)"},
     {"max-json-depth", "JSON nesting limit, 400 above (default 64)"},
-    {"render-deadline-ms", "parse + render + encode deadline, 503 past it (default 10000)"},
+    {"render-deadline-ms", "parse + render + encode deadline, 422 deadline-exceeded past it (default 10000)"},
     {"body-deadline-ms", "time for the whole request body to arrive, 408 past it (default 10000)"},
-    {"workers", "renders at once (default: core count)"},
+    {"workers", "renders at once (default: the CPUs the process may use: affinity and cgroup quota)"},
+    {"memory-budget",
+     "bytes requests may reserve at once, e.g. 1536M or 2G (default: the cgroup's memory limit, else 3/4 of "
+     "the machine's, less 480 MiB set aside; docs/memory.md)"},
+    {"log-format", "text (default) or json: one line per request on stderr"},
     {"max-queue", "renders waiting for a worker at most, 503 + Retry-After beyond (default 256)"},
     {"max-queue-wait-ms",
      "a render waits only if its expected wait is within this, and at most this long (default 2000)"},
     {"max-queued-bytes", "request bytes held by waiting renders, 503 beyond (default 268435456 = 256 MiB)"},
     {"cors-origins",
      "origins whose pages may read answers, comma-separated; * = any (default), none = no CORS"},
-    {"render-threads", "band threads per render (default: core count)"},
+    {"render-threads", "band threads per render (default: the CPUs the process may use)"},
     {"shutdown-grace-ms", "after SIGTERM/SIGINT, time for running and queued renders (default 20000)"},
     {"cache-max-age",
      "seconds in Cache-Control: public, max-age=N, immutable on GET /render (default 86400)"},
@@ -778,7 +944,15 @@ std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig
       config.render_threads = static_cast<int>(number(name, 1, 1024));
     else if (name == "shutdown-grace-ms")
       config.shutdown_grace = std::chrono::milliseconds(number(name, 0, 3'600'000));
-    else if (name == "cache-max-age")
+    else if (name == "memory-budget") {
+      config.memory_budget = parse_size(v);
+      if (config.memory_budget < (1 << 20) && error.empty())
+        error = "--memory-budget must be a size of at least 1M (e.g. 1536M, 2G or bytes), got '" + v + "'";
+    } else if (name == "log-format") {
+      if (v != "text" && v != "json" && error.empty())
+        error = "--log-format must be text or json, got '" + v + "'";
+      config.log_json = v == "json";
+    } else if (name == "cache-max-age")
       config.cache_max_age = static_cast<int>(number(name, 0, 31'536'000));
   }
   return error;

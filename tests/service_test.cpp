@@ -206,14 +206,19 @@ TEST(Service, ABurstOfConnectionsIsQueuedNotReset) {
 // The deadline is already past when the render starts (0 ms covers parsing too); the renderer looks at it
 // before any pixel work, so the answer does not depend on how long the scene would take. That a deadline
 // passing *during* one huge primitive stops it is pinned in deadline_test.cpp with an injected clock.
-TEST(Service, RenderPastItsDeadlineStopsWithA503) {
+// A 422, not a 503: every replica has the same deadline, so a proxy must not try the others (deploy/nginx.conf
+// retries 503s), and there is no Retry-After to honour.
+TEST(Service, RenderPastItsDeadlineIsA422ThatIsNotRetried) {
   rasterd::ServiceConfig config;
   config.render_deadline = std::chrono::milliseconds(0);
   TestServer server(config);
   auto r = server.client().Post("/render", kSmallScene, "application/json");
   ASSERT_TRUE(r);
-  EXPECT_EQ(r->status, 503);
-  EXPECT_EQ(nlohmann::json::parse(r->body)["type"], "urn:rasterd:problem:render-timeout");
+  EXPECT_EQ(r->status, 422);
+  EXPECT_FALSE(r->has_header("Retry-After"));
+  const auto problem = nlohmann::json::parse(r->body);
+  EXPECT_EQ(problem["type"], "urn:rasterd:problem:deadline-exceeded");
+  EXPECT_NE(problem["detail"].get<std::string>().find("not retried"), std::string::npos);
 }
 
 // A body that never finishes arriving: 408 once the body deadline has passed, and the connection is closed

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "budget_ask.h"
 #include "json_cursor.h"
 #include "raster/model.h"
 
@@ -594,6 +595,9 @@ class Reader {
       if (base + positions.count() > 3 * static_cast<std::size_t>(limits_.max_obj_faces) + 3)
         throw SceneError(ErrorKind::limit, "the model has more than " +
                                                std::to_string(3 * limits_.max_obj_faces) + " vertices");
+      detail::stop_if_expired(limits_);
+      detail::reserve(limits_, cost::kGltfPerVertex * static_cast<std::int64_t>(positions.count()),
+                      positions.what() + "'s " + std::to_string(positions.count()) + " vertices");
       make_room(mesh_.positions, positions.count());
       mesh_.positions.resize(base + positions.count());
       Vec3* out = mesh_.positions.data() + base;
@@ -838,6 +842,8 @@ class Reader {
     if (mesh_.triangles.size() + more > static_cast<std::size_t>(limits_.max_obj_faces))
       throw SceneError(ErrorKind::limit,
                        "the model has more than " + std::to_string(limits_.max_obj_faces) + " faces");
+    detail::reserve(limits_, cost::kGltfPerTriangle * static_cast<std::int64_t>(more),
+                    std::to_string(more) + " more triangles");
     make_room(mesh_.triangles, more);
     if (textured_) make_room(mesh_.face_textures, more);
   }
@@ -971,6 +977,9 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
   if (binary && shape.buffers_without_uri > 1)
     gltf_error("more than one buffer has no URI; only the first may be a GLB's binary chunk");
 
+  // tinygltf copies the buffers and images it is given (base64 ones decoded), and keeps the document's
+  // objects: bounded by what was sent, asked for before it runs.
+  detail::reserve(limits, cost::kGltfPerByte * static_cast<std::int64_t>(sent), "reading the glTF document");
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   CopyBudget budget{&model, &files, sent};

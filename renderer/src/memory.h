@@ -12,10 +12,12 @@
 #include <type_traits>
 #include <utility>
 
+#include "raster/budget.h"
+
 namespace raster::detail {
 
 /// Bytes of freed large blocks kept for later renders, at most (process-wide, shared by all renders).
-inline constexpr std::size_t kKeptBytes = std::size_t{256} << 20;
+inline constexpr std::size_t kKeptBytes = kKeptRenderBytes;
 
 /// A block of uninitialised storage.
 struct MemoryBlock {

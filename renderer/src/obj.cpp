@@ -14,6 +14,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include "budget_ask.h"
 #include "polygon.h"
 #include "raster/scene.h"
 #include "raster/utf8.h"
@@ -76,6 +77,7 @@ bool obj_number(std::string_view word, double& d) {
 
 struct Counts {
   std::int64_t v = 0, vt = 0, vn = 0, faces = 0, segments = 0, points = 0;
+  std::int64_t corners = 0;  ///< face corners (references on 'f' lines), what tinyobjloader stores per face
   /// (0-based face number, corners) of each face of 256 corners or more, in file order: tinyobjloader
   /// stores a face's corner count in a byte.
   std::vector<std::pair<std::int64_t, std::uint32_t>> long_faces;
@@ -93,7 +95,7 @@ Counts prescan(std::string_view text, const Limits& limits) {
     if (end == std::string_view::npos) end = text.size();
     const std::string_view line = text.substr(pos, end - pos);
     pos = end + 1;
-    ++line_no;
+    if (++line_no % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
     split_words(line, w);
     if (w.empty() || w[0][0] == '#') continue;
     const std::string_view key = w[0];
@@ -144,6 +146,7 @@ Counts prescan(std::string_view text, const Limits& limits) {
         if (!ok) model_error(line_no, why);
       }
       if (key == "f") {
+        n.corners += static_cast<std::int64_t>(w.size()) - 1;
         if (w.size() - 1 >= 256) n.long_faces.push_back({n.faces, static_cast<std::uint32_t>(w.size() - 1)});
         if (++n.faces > limits.max_obj_faces)
           throw SceneError(ErrorKind::limit,
@@ -436,6 +439,12 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     mtl_text = libraries;
   }
   const MtlPass mtl = read_mtl(mtl_text);
+  // The prescan has counted what tinyobjloader and the mesh will hold: asked for before either is built.
+  detail::reserve(limits,
+                  cost::kObjPerCorner * (counts.corners + 2 * counts.segments + counts.points) +
+                      cost::kObjPerVertex * (counts.v + counts.vt + counts.vn),
+                  "the model's " + std::to_string(counts.faces) + " faces and " +
+                      std::to_string(counts.v) + " vertices");
 
   // What ObjReader::ParseFromString does (but faces as written, split below as PLY's are; colours only
   // where the file has them: no white fallback), on a stream over the text where it lies: ParseFromString

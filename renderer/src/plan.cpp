@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "budget_ask.h"
 #include "texture.h"
 #include "vecmath.h"
 
@@ -208,6 +209,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   bool grey = scene.background.is_grey();
   const bool alpha = !scene.background.is_opaque();  // drawing over an opaque background stays opaque
   std::int64_t work = 0;
+  std::int64_t vertices_3d = 0;  // corners of the visible meshes, for the budget
 
   bool any_3d = false, any_union = false;
   // Lit colours stay grey only under grey lights; point lights need the world position of each pixel.
@@ -275,6 +277,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       out.blend_count += pp.blend ? 1 : 0;
       out.lit_count += pp.lit ? 1 : 0;
       out.triangles_3d += draws_triangles ? static_cast<std::int64_t>(mesh.triangles.size()) : 0;
+      vertices_3d += static_cast<std::int64_t>(mesh.positions.size() + mesh.segments.size() * 2);
       work += image_pixels;  // a mesh may cover the whole image
       out.draws.push_back(draw);
       continue;
@@ -366,6 +369,15 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +
                                            std::to_string(limits.max_buffer_bytes));
+  // Asked for now that it is known: the pixel storage, the PNG (at most about the colour buffer's size), and
+  // the setup's records and transformed corners. The bins are asked for by the render once counted.
+  detail::reserve(limits,
+                  out.memory.total() + out.memory.color_bytes +
+                      cost::kRenderPerTriangle * out.triangles_3d + cost::kRenderPerVertex * vertices_3d +
+                      cost::kRenderPerPrimitive * static_cast<std::int64_t>(out.draws.size()),
+                  "rendering " + std::to_string(out.draws.size()) + " primitives (" +
+                      std::to_string(out.triangles_3d) + " mesh triangles) at " + std::to_string(out.width) +
+                      "x" + std::to_string(out.height));
   out.png = png_plan_for(out.format);
   return out;
 }

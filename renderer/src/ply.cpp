@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "budget_ask.h"
 #include "polygon.h"
 #include "raster/model.h"
 
@@ -311,6 +312,13 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
     ply_error("the face element has no \"vertex_indices\" list", face->line);
   const bool normals = has[int(Role::nx)] && has[int(Role::ny)] && has[int(Role::nz)];
   const bool colours = has[int(Role::red)] && has[int(Role::green)] && has[int(Role::blue)];
+  // The header counts what the mesh will hold (faces of more than three corners become more triangles,
+  // each of which the limit counts, so at most max_obj_faces of them).
+  detail::reserve(limits,
+                  cost::kPlyPerFace * static_cast<std::int64_t>(face->count) +
+                      cost::kPlyPerVertex * static_cast<std::int64_t>(vertex->count),
+                  "the model's " + std::to_string(face->count) + " faces and " + std::to_string(vertex->count) +
+                      " vertices");
 
   Mesh mesh;
   Values in(bytes, h);
@@ -429,6 +437,7 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       continue;
     }
     for (std::uint64_t i = 0; i < e.count; ++i) {
+      if ((i + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
       Vec3 pos, normal;
       Rgba8 colour;
       for (const Property& p : e.properties) {

@@ -221,8 +221,12 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
 
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control) {
   std::atomic<bool> stopped{false};  // set by whichever thread first sees the deadline or the cancel flag
-  const detail::Stop stop{control.deadline, control.cancel, &stopped, &control.clock};
-  const auto cancelled = [] { return RenderCancelled("render stopped: deadline passed or cancelled"); };
+  std::atomic<std::int64_t> refused{0};  // bytes the budget refused (a refusal stops the render too)
+  const detail::Stop stop{control.deadline, control.cancel, &stopped, &control.clock, control.budget, &refused};
+  const auto cancelled = [&] {  // why the render stopped: the budget refused memory, or time ran out
+    if (refused.load()) throw MemoryRefused(refused.load(), "the render's tile bins");
+    throw RenderCancelled("render stopped: deadline passed or cancelled");
+  };
   detail::StopMeter meter(stop);  // the calling thread's, for geometry, binning and allocation
   using Clock = std::chrono::steady_clock;
   auto lap = [&, last = Clock::now()](double RenderStats::*field) mutable {
@@ -231,7 +235,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     last = now;
   };
   const detail::Setup setup = detail::build_setup(scene, plan, meter);
-  if (meter.stopped()) throw cancelled();
+  if (meter.stopped()) cancelled();
   lap(&RenderStats::geometry_ms);
   // Each part binned on its own (on every render thread for a large mesh's parts).
   detail::Bins bins = detail::bin_grid(setup, plan.tile);
@@ -240,12 +244,12 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
                        [&](std::size_t p, detail::StopMeter& own, int) {
                          bins.parts[p] = detail::bin_part(bins, setup, setup.parts[p], own);
                        });
-  if (stopped) throw cancelled();
+  if (stopped) cancelled();
   lap(&RenderStats::bin_ms);
 
   // Buffers are cleared as they are allocated, looking at the deadline every megabyte.
   Image image = detail::make_color_buffer(plan, scene.background, meter);
-  if (meter.stopped()) throw cancelled();
+  if (meter.stopped()) cancelled();
 
   const int tiles = bins.columns * bins.rows;
   const int threads = std::min(plan.threads, tiles);
@@ -289,7 +293,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
                              static_cast<int>(piece / static_cast<std::size_t>(bins.rows));
                          draw_tile(frame, t, scratch[static_cast<std::size_t>(thread)], own);
                        });
-  if (stopped) throw cancelled();
+  if (stopped) cancelled();
   lap(&RenderStats::tiles_ms);
   if (control.stats) {
     control.stats->shaded_pixels = 0;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "budget_ask.h"
 #include "json_cursor.h"
 #include "raster/model.h"
 #include "raster/scene.h"
@@ -1030,6 +1031,7 @@ void Reader::primitives(const Path& at) {
   for (bool more = in.array_begin(); more; more = in.array_next(), ++i) {
     const Path p = element(at, i);
     if (static_cast<std::int64_t>(i) >= limits.max_primitives) fail(ErrorKind::limit, at, over);
+    if ((i + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
     try {
       primitive(p);
     } catch (const SceneError& e) {
@@ -1127,6 +1129,10 @@ void Reader::read_root() {
 Scene parse_scene(std::string_view text, const Limits& limits, const Uploads& uploads) {
   if (text.empty())
     throw SceneError(ErrorKind::syntax, "the scene is empty (0 bytes); expected a JSON object");
+  // What the parsed primitives hold is bounded by the text's size; a model a primitive names is asked for
+  // by its reader once counted.
+  detail::reserve(limits, cost::kScenePerByte * static_cast<std::int64_t>(text.size()),
+                  "the scene's " + std::to_string(text.size()) + " bytes");
   Reader r{JsonCursor(text, limits.max_json_depth), limits, uploads, {}, {}};
   r.reserve(text);
   try {

@@ -250,6 +250,8 @@ Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, S
     for_each_tile(ref, [&](int at) { ++count[at + 1]; });
   }
   for (std::size_t t = 0; t < tiles; ++t) count[t + 1] += count[t];
+  // Counted, not yet allocated: a few huge triangles over many tiles can need more than their records.
+  if (!meter.stop().reserve(cost::kRenderPerBinEntry * static_cast<std::int64_t>(count[tiles]))) return bins;
   bins.offsets = count;
   bins.records.resize_uninitialized(count[tiles]);
   for (const RecordRef ref : part.order) {

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 
+#include "budget_ask.h"
 #include "raster/model.h"
 
 namespace raster {
@@ -49,12 +50,14 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
               0, 81);
   if (count == 0) stl_error("the model has no triangles");
   check_facets(count, limits);
+  detail::reserve(limits, cost::kStlPerFacet * count, "the model's " + std::to_string(count) + " facets");
   Mesh mesh;
   mesh.shading = Shading::flat;
   mesh.positions.resize(std::size_t{count} * 3);
   mesh.triangles.resize(count);
   const char* p = bytes.data() + 84;
   for (std::uint32_t t = 0; t < count; ++t, p += 50) {
+    if ((t + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
     // 12 bytes of facet normal (not read: see parse_stl), 3 corners of 12 bytes, 2 attribute bytes.
     for (int k = 0; k < 3; ++k) {
       const char* c = p + 12 + 12 * k;
@@ -140,8 +143,10 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
   mesh.shading = Shading::flat;
   // A facet is at least ~60 bytes of text ("facet normal 0 0 0 outer loop vertex 0 0 0 ... endfacet"):
   // reserving from that bounds the guess by the text's size.
-  mesh.positions.reserve(text.size() / 64 * 3);
-  mesh.triangles.reserve(text.size() / 64);
+  std::size_t reserved = text.size() / 64;  // facets asked of the budget so far, grown in steps below
+  detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved), "the model's facets");
+  mesh.positions.reserve(reserved * 3);
+  mesh.triangles.reserve(reserved);
   std::string_view w = in.next();
   if (!iequal(w, "solid")) stl_error("expected \"solid\", got " + quoted(w), in.line());
   in.skip_line();  // the solid's name
@@ -176,6 +181,12 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
     // A loop of more than three corners (which some writers emit for planar polygons) as a fan.
     for (std::size_t k = 1; k + 1 < corners; ++k) {
       check_facets(mesh.triangles.size() + 1, limits);
+      if (mesh.triangles.size() == reserved) {  // fans of many corners: more triangles than the text's guess
+        detail::stop_if_expired(limits);
+        detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved + 1),
+                        "the model's facets");
+        reserved = 2 * reserved + 1;
+      }
       mesh.triangles.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + k),
                                 static_cast<std::uint32_t>(first + k + 1)});
     }

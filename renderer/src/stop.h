@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <functional>
 
+#include "raster/budget.h"
+
 namespace raster::detail {
 
 /// When a render must stop: the caller's deadline and cancel flag. `stopped` is shared by all threads so
@@ -16,7 +18,17 @@ struct Stop {
   const std::atomic<bool>* cancel;
   std::atomic<bool>* stopped;
   const std::function<std::chrono::steady_clock::time_point()>* clock;  ///< empty: steady_clock::now
+  Budget* budget = nullptr;                 ///< optional: asked for memory a stage has counted
+  std::atomic<std::int64_t>* refused = nullptr;  ///< bytes of the first refused ask (0: none); stops the render
   bool now() const;
+  /// Asks the budget for `bytes` (true without one); a refusal is remembered and stops every thread.
+  bool reserve(std::int64_t bytes) const {
+    if (!budget || bytes <= 0 || budget->reserve(bytes)) return true;
+    std::int64_t none = 0;
+    refused->compare_exchange_strong(none, bytes);
+    stopped->store(true, std::memory_order_relaxed);
+    return false;
+  }
 };
 
 /// One thread's account of work done since it last asked `Stop`: a pixel written or tested is 1 unit, a row

@@ -7,6 +7,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "raster/budget.h"
 #include "raster/image.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
@@ -41,13 +42,11 @@ struct RenderControl {
   /// when the deadline passes without depending on how fast the machine is. Called from every thread's
   /// thread, so it must be thread-safe.
   std::function<Clock::time_point()> clock;
+  /// Optional; asked for the bins' bytes once they are counted, before they are filled (the pixel buffers
+  /// and the records were reserved by the plan). A refusal stops the render with MemoryRefused.
+  Budget* budget = nullptr;
 };
 
-/// Thrown by render() when the deadline passed or the cancel flag was set; no image is returned.
-class RenderCancelled : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// Draws `scene` exactly as `plan` says. The plan must have been made from this scene.
 /// Output is the same bytes for any plan.threads.

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "raster/budget.h"
 #include "raster/error.h"
 
 namespace raster {
@@ -205,6 +206,10 @@ struct Limits {
   /// Texels of all of a scene's textures together, checked from each image's header before it is decoded
   /// (a decoded texel is 4 bytes; the plan also counts the mipmaps made from them).
   std::int64_t max_texture_pixels = 4096 * 4096;
+  /// Optional, per render: the caller's account that the readers and the plan ask for memory before they
+  /// allocate what their counts call for, and for whether to stop (raster/budget.h). Null: nothing is asked.
+  /// Not owned; a service copies its Limits per request and points this at that request's account.
+  Budget* budget = nullptr;
 };
 
 /// Largest accepted |coordinate| in pixels: 2^128, just above FLT_MAX. Coverage stays exact up to here
