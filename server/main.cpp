@@ -21,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "healthcheck.h"
 #include "raster/raster.h"
 #include "request.h"
 #include "resources.h"
@@ -36,6 +37,8 @@ constexpr const char* kUsage = R"(usage:
                                                         a bare OBJ model with the default scene; the MTL
                                                         and textures it names are read from its folder
   rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080; 0: any free)
+  rasterd healthcheck [--pid N] [--host H] [--port N]   GET /healthz of the server PID N (default 1) at the
+                                                        address it was given; exit code 0 when healthy
   rasterd --version                                     the release and the render version
 
 render:  writes the PNG to OUT.png (default: stdout); --explain writes the render plan as JSON instead.
@@ -299,6 +302,7 @@ int main(int argc, char** argv) {
   const std::string command = args[0];
   args.erase(args.begin());
   if (command == "render") return run_render(args);
+  if (command == "healthcheck") return rasterd::run_healthcheck(args);
   if (command == "serve") {
     if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
       std::cout << rasterd::service_help();
