@@ -54,6 +54,7 @@ void write_problem(httplib::Response& res, const Problem& p) {
   if (p.pointer) body["pointer"] = raster::escape_for_display(*p.pointer);
   if (p.byte != 0) body["byte"] = p.byte;
   if (p.line != 0) body["line"] = p.line;
+  if (p.parameter) body["parameter"] = raster::escape_for_display(*p.parameter);
   res.status = p.status;
   res.set_content(body.dump(), "application/problem+json");
 }

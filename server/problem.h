@@ -20,6 +20,7 @@ struct Problem {
   std::optional<std::string> pointer;  ///< RFC 6901 pointer into the scene ("" is the root)
   std::size_t byte = 0;                ///< 1-based byte offset into the body, 0 = none
   std::size_t line = 0;                ///< 1-based line of an uploaded model, 0 = none
+  std::optional<std::string> parameter;  ///< the query parameter at fault (invalid-query)
 };
 
 /// The mapping from library error kinds to statuses (400 malformed/invalid, 422 over a limit or bad model).

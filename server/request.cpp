@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +17,7 @@ namespace {
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
 [[noreturn]] void bad_param(const std::string& name, const std::string& message) {
-  throw raster::SceneError(raster::ErrorKind::invalid, "query parameter \"" + name + "\": " + message);
+  throw QueryError(name, "query parameter \"" + name + "\": " + message);
 }
 
 // `curl -d @model.obj` drops newlines: what arrives is "v 0 0 0v 1 0 0f 1 2 3..." on one line. An OBJ
@@ -43,7 +44,26 @@ constexpr std::string_view kModelParams[] = {"width", "height", "background", "v
 std::string known_params() {
   std::string list;
   for (std::string_view name : kModelParams) list.append(name).append(", ");
-  return list + "explain";
+  return list + "scale, explain (and v, the cache-buster)";
+}
+
+std::string text_of(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// ?scale=: a number in kMinScale..kMaxScale, or nullopt without one.
+std::optional<double> scale_param(const Params& params) {
+  const auto it = params.find("scale");
+  if (it == params.end()) return std::nullopt;
+  double v = 0;
+  const std::string& text = it->second;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || !(v >= kMinScale && v <= kMaxScale))
+    bad_param("scale", "expected a number from 0.25 to 8 (the device pixel ratio: 2 for a 2x srcset picture), "
+                       "got \"" + text + "\"");
+  return v;
 }
 
 // "ffffff" for "#ffffff": a URL ends at '#' (curl and browsers keep what follows for themselves), so a
@@ -116,8 +136,8 @@ std::string default_scene_json(const Params& params, std::optional<raster::Model
       camera["fov"] = number(name, value);
     else if (name == "eye" || name == "target" || name == "up")
       camera[name] = vector(name, value);
-    else if (name == "explain" || name == "format")
-      continue;  // the route's, and the model's (below)
+    else if (name == "explain" || name == "format" || name == "scale")
+      continue;  // the route's, and the model's (below), and the scene's once read (apply_scale)
     else
       bad_param(name, "unknown; known: " + known_params());
   }
@@ -238,15 +258,43 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
          "scene=@scene.json";
 }
 
-raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
+bool ignored_param(std::string_view name) {
+  return name == "v" || name.starts_with("utm_") || name == "fbclid" || name == "gclid" || name == "msclkid";
+}
+
+void apply_scale(raster::Scene& scene, double scale, const raster::Limits& limits) {
+  if (scale == 1) return;
+  const auto side = [&](int px, int max_px, const char* what) {
+    const double scaled = std::max(1.0, std::round(px * scale));
+    if (scaled > std::min(max_px, raster::kMaxImageSide))
+      throw raster::SceneError(raster::ErrorKind::limit,
+                               "query parameter \"scale\": the " + std::string(what) + " of " +
+                                   std::to_string(px) + " x " + text_of(scale) + " is over the limit of " +
+                                   std::to_string(std::min(max_px, raster::kMaxImageSide)) + " pixels");
+    return static_cast<int>(scaled);
+  };
+  scene.width = side(scene.width, limits.max_width, "width");
+  scene.height = side(scene.height, limits.max_height, "height");
+  for (raster::Point2& p : scene.points) p.x *= scale, p.y *= scale;
+  for (raster::Primitive& p : scene.primitives) p.width = static_cast<float>(p.width * scale);
+  for (raster::Mesh& m : scene.meshes)  // edges are drawn in pixels; the camera frames the rest
+    m.edges.width = static_cast<float>(m.edges.width * scale);
+  raster::validate(scene);  // coordinates scaled past the largest accepted are refused, as in a scene
+}
+
+raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& all_params,
                                  const raster::Limits& limits, bool declared_json,
                                  std::optional<raster::ModelFormat> named_format) {
+  Params params;  // what the request means: without the cache-buster and the sharing tools' parameters
+  for (const auto& [name, value] : all_params)
+    if (!ignored_param(name)) params.emplace(name, value);
   // Parameters become JSON text below and are quoted in errors: their bytes must be UTF-8 first.
   for (const auto& [name, value] : params) {
     raster::require_utf8(name, "the name of a query parameter");
     raster::require_utf8(value, "query parameter \"" + name + "\"");
   }
-  explain_requested(params);  // a bad ?explain is an error before anything is read
+  explain_requested(params);  // a bad ?explain or ?scale is an error before anything is read
+  const std::optional<double> scale = scale_param(params);
   // A byte order mark (Windows editors write one) is whitespace to the readers: blanked rather than cut,
   // so every byte offset in an error still counts from the start of what was sent.
   if (body.starts_with(kUtf8Bom)) body.replace(0, kUtf8Bom.size(), kUtf8Bom.size(), ' ');
@@ -264,21 +312,23 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   if (!gltf && (declared_json || (is_scene_text(body) && !sniffed && !named_model))) {
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {
-      if (name == "explain") continue;
+      if (name == "explain" || name == "scale") continue;
       const bool model_param =
           std::find(std::begin(kModelParams), std::end(kModelParams), name) != std::end(kModelParams);
       bad_param(name, model_param
                           ? "shapes the default scene of a bare model; this body is a scene, which sets "
                             "\"" +
                                 name + "\" (or its camera) in its JSON"
-                          : "unknown; a scene takes only: explain");
+                          : "unknown; a scene takes only: scale, explain (and v, the cache-buster)");
     }
     if (declared_json && !is_scene_text(body) && starts_like_obj(body))
       throw raster::SceneError(
           raster::ErrorKind::syntax,
           "the Content-Type says JSON, but the body looks like an OBJ model; send a model "
           "as model/obj, or with curl --data-binary and no Content-Type of its own");
-    return raster::parse_scene(body, limits, uploads);
+    raster::Scene scene = raster::parse_scene(body, limits, uploads);
+    if (scale) apply_scale(scene, *scale, limits);
+    return scene;
   }
   if ((!sniffed || sniffed == raster::ModelFormat::obj) && looks_like_flattened_obj(body))
     throw raster::SceneError(
@@ -291,11 +341,16 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
                                  std::string(raster::accepted_formats()) + ")");
   if (!body.empty()) uploads["model"] = std::move(body);
   try {
-    return raster::parse_scene(default_scene_json(params, named_format), limits, uploads);
+    raster::Scene scene = raster::parse_scene(default_scene_json(params, named_format), limits, uploads);
+    if (scale) apply_scale(scene, *scale, limits);
+    return scene;
+  } catch (const QueryError&) {
+    throw;
   } catch (const raster::SceneError& e) {
     // A field the query set is reported as that parameter: the client sent no document to point into.
     const std::string param = param_of_pointer(e.where().pointer, params);
     if (param.empty()) throw;
+    if (e.kind() == raster::ErrorKind::invalid) throw QueryError(param, "query parameter \"" + param + "\": " + e.what());
     throw raster::SceneError(e.kind(), "query parameter \"" + param + "\": " + e.what());
   }
 }

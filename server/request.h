@@ -19,6 +19,30 @@ namespace rasterd {
 /// model's, when its bytes do not tell it: obj, stl, ply, gltf or glb).
 using Params = std::map<std::string, std::string, std::less<>>;
 
+/// A query parameter (HTTP) or option (CLI) that is wrong: unknown, or a value that is not what it takes.
+/// A SceneError of kind invalid, so a caller that knows only those still reports it; the service answers
+/// 400 `invalid-query` naming `parameter()`, apart from a scene that is invalid.
+class QueryError : public raster::SceneError {
+ public:
+  QueryError(std::string parameter, const std::string& message)
+      : raster::SceneError(raster::ErrorKind::invalid, message), parameter_(std::move(parameter)) {}
+  const std::string& parameter() const { return parameter_; }
+
+ private:
+  std::string parameter_;
+};
+
+/// The cache-buster: `?v=` (any value) is reserved for the caller to change an image URL without changing
+/// the picture (a new `v` is a new URL to every cache). It and the parameters that sharing tools append
+/// (`utm_*`, `fbclid`, `gclid`, `msclkid`) are ignored, never an error.
+bool ignored_param(std::string_view name);
+
+/// `?scale=` (device pixel ratio, for `srcset`): multiplies the image's width and height (rounded), every 2D
+/// coordinate and every width in pixels; 3D content is framed by its camera and so just gets more pixels.
+/// 0.25 to 8; 1 changes nothing. The result is held to the limits as a scene of that size would be.
+inline constexpr double kMinScale = 0.25, kMaxScale = 8;
+void apply_scale(raster::Scene& scene, double scale, const raster::Limits& limits);
+
 /// The name an uploaded part is kept under in raster::Uploads. "scene", "model" and "mtl" keep their
 /// names; any other part with a file name is kept under that file's name without folders, so a texture
 /// sent as `curl -F texture=@head_diffuse.png` is found by the name the MTL uses ("head_diffuse.png").

@@ -590,6 +590,11 @@ struct Service::State {
       res.set_header("X-Render-Plan", raster::explain_line(plan));
       set_cache_headers();
       res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
+    } catch (const QueryError& e) {
+      // The URL is wrong, not the scene: its own type, naming the parameter.
+      Problem p = problem(400, "invalid-query", "A query parameter is not valid", e.what());
+      p.parameter = e.parameter();
+      write_problem(res, p);
     } catch (const raster::SceneError& e) {
       write_problem(res, problem_from(e));
     } catch (const raster::RenderCancelled&) {

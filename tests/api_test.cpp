@@ -303,3 +303,73 @@ TEST(ImageUrl, IfNoneMatchParsing) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 39: image URLs as the web passes them on.
+
+// A cache-buster and the parameters sharing tools append change nothing: the same picture and tag as the
+// bare URL (were they read as scene parameters, the answer would be a 400).
+TEST(ImageUrl, TheCacheBusterAndTrackingParametersAreIgnored) {
+  TestServer server;
+  auto bare = server.client().Get(url_of(kScene));
+  ASSERT_TRUE(bare);
+  ASSERT_EQ(bare->status, 200);
+  for (const std::string extra : {"&v=2", "&utm_source=x&utm_medium=social", "&fbclid=IwAR0abc", "&gclid=1"}) {
+    auto r = server.client().Get(url_of(kScene) + extra);
+    ASSERT_TRUE(r) << extra;
+    EXPECT_EQ(r->status, 200) << extra << "\n" << r->body;
+    EXPECT_EQ(r->body, bare->body) << extra;
+    EXPECT_EQ(r->get_header_value("ETag"), bare->get_header_value("ETag")) << extra;
+  }
+}
+
+// A wrong parameter is the URL's fault, not the scene's: its own problem type, naming the parameter.
+TEST(ImageUrl, ABadParameterIsAnInvalidQueryNamingIt) {
+  TestServer server;
+  const std::pair<std::string, std::string> cases[] = {
+      {"&w=2", "w"}, {"&scale=0", "scale"}, {"&scale=big", "scale"}, {"&explain=maybe", "explain"}};
+  for (const auto& [extra, name] : cases) {
+    auto r = server.client().Get(url_of(kScene) + extra);
+    ASSERT_TRUE(r) << extra;
+    EXPECT_EQ(r->status, 400) << extra;
+    const auto p = problem_of(r);
+    EXPECT_EQ(p["type"], "urn:rasterd:problem:invalid-query") << r->body;
+    EXPECT_EQ(p["parameter"], name) << r->body;
+    EXPECT_FALSE(p.contains("pointer")) << "no scene document is at fault: " << r->body;
+  }
+}
+
+// ?scale=2 is the scene drawn at twice the size: byte for byte the picture of the scene whose width, height,
+// coordinates and line widths were doubled by hand (so srcset needs no second scene).
+TEST(ImageUrl, ScaleDrawsTheSceneAtThatPixelRatio) {
+  TestServer server;
+  const std::string scene =
+      R"({"width": 20, "height": 12, "background": "#ffffff", "primitives": [
+           {"type": "triangle", "points": [[1, 1], [15.5, 2], [4, 11]], "colors": ["#ff0000", "#00ff00", "#0000ff"]},
+           {"type": "line", "points": [[2, 9], [18, 3.25]], "width": 1.5, "color": "#000000"}]})";
+  const std::string doubled =
+      R"({"width": 40, "height": 24, "background": "#ffffff", "primitives": [
+           {"type": "triangle", "points": [[2, 2], [31, 4], [8, 22]], "colors": ["#ff0000", "#00ff00", "#0000ff"]},
+           {"type": "line", "points": [[4, 18], [36, 6.5]], "width": 3, "color": "#000000"}]})";
+  auto scaled = server.client().Get(url_of(scene) + "&scale=2");
+  auto by_hand = server.client().Get(url_of(doubled));
+  ASSERT_TRUE(scaled && by_hand);
+  ASSERT_EQ(scaled->status, 200) << scaled->body;
+  EXPECT_EQ(scaled->body, by_hand->body);
+  auto posted = server.client().Post("/render?scale=2", scene, "application/json");
+  ASSERT_TRUE(posted);
+  EXPECT_EQ(posted->body, by_hand->body) << "POST takes ?scale too";
+  // A model's default scene: 512 x 512 becomes 1024 x 1024.
+  auto model = server.client().Post("/render?scale=2&explain=1", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                                    "model/obj");
+  ASSERT_TRUE(model);
+  EXPECT_EQ(nlohmann::json::parse(model->body)["width"], 1024) << model->body;
+  // Past the size limit at that ratio: 422, naming scale.
+  auto over = server.client().Get(url_of(R"({"width": 5000, "height": 10, "primitives": []})") + "&scale=2");
+  ASSERT_TRUE(over);
+  EXPECT_EQ(over->status, 422);
+  EXPECT_NE(problem_of(over)["detail"].get<std::string>().find("scale"), std::string::npos) << over->body;
+}
+
+}  // namespace

@@ -394,8 +394,7 @@ TEST(Newcomer, MoreMistakesGetSpecificAnswers) {
             std::string::npos)
       << model_as_json->body;
 
-  // A value the default scene refuses names its query parameter; its pointer is the root, as for every
-  // query parameter (the client sent no document of its own).
+  // A value the default scene refuses names its query parameter (the client sent no document of its own).
   for (const auto& [query, name] : std::vector<std::pair<std::string, std::string>>{
            {"?view=isometric", "view"}, {"?width=0", "width"}, {"?fov=500", "fov"}}) {
     auto r = server.client().Post("/render" + query, kObj, "model/obj");
@@ -403,7 +402,10 @@ TEST(Newcomer, MoreMistakesGetSpecificAnswers) {
     EXPECT_EQ(r->status, 400) << query;
     const auto p = problem_of(r);
     EXPECT_EQ(p["detail"].get<std::string>().rfind("query parameter \"" + name + "\": ", 0), 0u) << r->body;
-    EXPECT_EQ(p["pointer"], "") << r->body;
+    // The URL is at fault, not a document: invalid-query naming the parameter (issue 39), no pointer.
+    EXPECT_EQ(p["type"], "urn:rasterd:problem:invalid-query") << r->body;
+    EXPECT_EQ(p["parameter"], name) << r->body;
+    EXPECT_FALSE(p.contains("pointer")) << r->body;
   }
   auto zero = server.client().Post("/render?width=0", kObj, "model/obj");
   EXPECT_TRUE(problem_of(zero)["detail"].get<std::string>().ends_with("got 0"))
