@@ -240,6 +240,7 @@ std::string http_date(std::time_t when) {
 struct RequestContext {
   Clock::time_point start;
   std::chrono::system_clock::time_point wall;  ///< when the request began: the log line, the Date header
+  std::string method;  ///< as sent (a 304 is written as a HEAD answer: see render())
   std::size_t bytes_in = 0;
 };
 thread_local RequestContext t_request;
@@ -564,6 +565,16 @@ struct Service::State {
         if (cacheable) {
           set_cache_headers();
           res.status = 304;
+          // cpp-httplib 0.11 writes "Content-Length: 0" on every answer without a body, which RFC 9110 8.6
+          // forbids here (a 304 may carry only the length the 200 would have had, or none). Its one answer
+          // with neither a length nor body bytes is a chunked provider's answer to HEAD: RFC 9112 6.1 lets
+          // a 304 carry Transfer-Encoding, and 6.3 ends a 304 at its headers whatever they say. The request
+          // is the server's own object (as for `ranges` above); the log keeps the method that was sent.
+          const_cast<httplib::Request&>(req).method = "HEAD";
+          res.set_chunked_content_provider("image/png", [](std::size_t, httplib::DataSink& sink) {
+            sink.done();
+            return true;
+          });
         } else {
           write_problem(res, problem(412, "precondition-failed", "The precondition failed",
                                      "If-None-Match names this scene's tag " + etag +
@@ -679,8 +690,9 @@ void Service::install(httplib::Server& server) {
   });
 
   server.set_pre_routing_handler([&s](const httplib::Request& req, httplib::Response& res) {
-    t_request = RequestContext{Clock::now(), std::chrono::system_clock::now(), 0};
+    t_request = RequestContext{Clock::now(), std::chrono::system_clock::now(), {}, 0};
     res.set_header("Date", http_date(std::chrono::system_clock::to_time_t(t_request.wall)));
+    t_request.method = req.method;
     const std::string client_id = req.get_header_value("X-Request-Id");
     res.set_header("X-Request-Id", plain_request_id(client_id) ? client_id : next_request_id());
     s.set_cors_headers(req, res);
@@ -737,7 +749,7 @@ void Service::install(httplib::Server& server) {
         if (!res.has_header("X-Request-Id")) {
           // cpp-httplib answered before routing (a request line over its 8192-byte limit, or a malformed
           // one): no pre-routing handler ran, so this request has no id or start time of its own yet.
-          t_request = RequestContext{Clock::now(), std::chrono::system_clock::now(), 0};
+          t_request = RequestContext{Clock::now(), std::chrono::system_clock::now(), {}, 0};
           res.set_header("Date", http_date(std::chrono::system_clock::to_time_t(t_request.wall)));
           res.set_header("X-Request-Id", next_request_id());
           s.set_cors_headers(req, res);
@@ -791,7 +803,7 @@ void Service::install(httplib::Server& server) {
     line.wall = t_request.wall;
     line.client = req.remote_addr;
     // cpp-httplib answers a request line over its limit (414) before parsing it: no method or path to log.
-    line.method = req.method.empty() ? "-" : req.method;
+    line.method = !t_request.method.empty() ? t_request.method : req.method.empty() ? "-" : req.method;
     line.path = req.path.empty() ? "-" : req.path;
     line.status = res.status;
     line.bytes_in = in, line.bytes_out = res.body.size();
