@@ -68,23 +68,39 @@ std::string scene_etag(const raster::Scene& scene, int render_version) {
   return tag + "\"";
 }
 
-bool none_match_hits(std::string_view field, std::string_view etag) {
-  // A list of entity tags separated by commas and optional whitespace; W/ marks a weak one, and weak
-  // comparison ignores it. A comma cannot appear inside an entity tag's quotes (etagc excludes it).
-  const std::string_view opaque = etag;
+std::string image_etag(std::string_view scene_tag, std::size_t png_bytes) {
+  std::string tag(scene_tag.substr(0, scene_tag.size() - 1));  // without its closing quote
+  return tag + "-" + std::to_string(png_bytes) + "\"";
+}
+
+NoneMatch none_match(std::string_view field, std::string_view scene_tag) {
+  NoneMatch out;
+  const std::string_view open = scene_tag.substr(0, scene_tag.size() - 1);  // '"' and the hash
   std::size_t at = 0;
   while (at < field.size()) {
     std::size_t end = field.find(',', at);
     if (end == std::string_view::npos) end = field.size();
     std::string_view item = field.substr(at, end - at);
+    at = end + 1;
     while (!item.empty() && (item.front() == ' ' || item.front() == '\t')) item.remove_prefix(1);
     while (!item.empty() && (item.back() == ' ' || item.back() == '\t')) item.remove_suffix(1);
-    if (item == "*") return true;
     if (item.starts_with("W/")) item.remove_prefix(2);
-    if (item == opaque) return true;
-    at = end + 1;
+    if (item == "*" || item == scene_tag) {
+      out.hit = true;
+      continue;
+    }
+    // "<hash>-<length>": the hash this scene's, the length a decimal number of at most 15 digits.
+    if (!item.starts_with(open) || item.size() < open.size() + 3 || item[open.size()] != '-' ||
+        item.back() != '"')
+      continue;
+    const std::string_view digits = item.substr(open.size() + 1, item.size() - open.size() - 2);
+    if (digits.empty() || digits.size() > 15 ||
+        digits.find_first_not_of("0123456789") != std::string_view::npos)
+      continue;
+    out.hit = true;
+    out.png_bytes = std::stoull(std::string(digits));
   }
-  return false;
+  return out;
 }
 
 }  // namespace rasterd

@@ -1,6 +1,8 @@
 // Entity tags of rendered images: equal tags mean equal bytes, across requests, spellings and replicas.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,8 +20,19 @@ namespace rasterd {
 /// changes every tag.
 std::string scene_etag(const raster::Scene& scene, int render_version = raster::kRenderVersion);
 
-/// RFC 9110 section 13.1.2: whether an If-None-Match field value ("*", or a list of entity tags, weak or
-/// strong) names `etag`, compared weakly as that section requires.
-bool none_match_hits(std::string_view if_none_match, std::string_view etag);
+/// The ETag a rendered PNG is sent with: the scene's tag with the PNG's length in bytes inside its quotes
+/// ("<hash>-<length>"). The length names nothing new (the scene's tag already decides every byte), but a
+/// client that sends the tag back tells the service the length a 304 must declare (RFC 9110 8.6: only the
+/// length the 200 had, or none) without a render.
+std::string image_etag(std::string_view scene_tag, std::size_t png_bytes);
+
+/// What an If-None-Match field value says of the image of the scene whose tag is `scene_tag`.
+struct NoneMatch {
+  bool hit = false;                       ///< it names this image (or is "*")
+  std::optional<std::size_t> png_bytes;   ///< the image's length, from an image_etag it names
+};
+/// RFC 9110 13.1.2, compared weakly: "*", the scene's tag, or an image_etag of it hit.
+NoneMatch none_match(std::string_view if_none_match, std::string_view scene_tag);
+
 
 }  // namespace rasterd

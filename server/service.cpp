@@ -553,35 +553,35 @@ struct Service::State {
       }
       // The tag names the image, so a client that holds it gets no render; hashing the parsed scene is
       // cheap next to parsing it. The cache headers go only on a 200 or 304: an error must not be cached.
-      const std::string etag = scene_etag(scene);
-      auto set_cache_headers = [&] {
-        res.set_header("ETag", etag);
+      const std::string scene_tag = scene_etag(scene);
+      auto set_cache_headers = [&](std::size_t png_bytes) {
+        res.set_header("ETag", image_etag(scene_tag, png_bytes));
         if (cacheable)
           res.set_header("Cache-Control",
                          "public, max-age=" + std::to_string(config.cache_max_age) + ", immutable");
       };
-      if (req.has_header("If-None-Match") && none_match_hits(req.get_header_value("If-None-Match"), etag)) {
+      // A 304 declares the length its 200 had (RFC 9110 8.6; cpp-httplib 0.11 would otherwise write
+      // "Content-Length: 0" on an empty answer). It is written as the answer to a HEAD, which has the length
+      // of a body it does not carry: the request is the server's own object (as for `ranges` in the
+      // pre-routing handler), and the log keeps the method that was sent.
+      auto not_modified = [&](std::size_t png_bytes) {
+        set_cache_headers(png_bytes);
+        res.status = 304;
+        const_cast<httplib::Request&>(req).method = "HEAD";
+        res.set_content_provider(png_bytes, "image/png",
+                                 [](std::size_t, std::size_t, httplib::DataSink&) { return false; });
+      };
+      NoneMatch match;
+      if (req.has_header("If-None-Match")) match = none_match(req.get_header_value("If-None-Match"), scene_tag);
+      if (match.hit && !cacheable) {
         // RFC 9110 13.1.2: 304 for GET and HEAD; any other method must not be performed: 412.
-        if (cacheable) {
-          set_cache_headers();
-          res.status = 304;
-          // cpp-httplib 0.11 writes "Content-Length: 0" on every answer without a body, which RFC 9110 8.6
-          // forbids here (a 304 may carry only the length the 200 would have had, or none). Its one answer
-          // with neither a length nor body bytes is a chunked provider's answer to HEAD: RFC 9112 6.1 lets
-          // a 304 carry Transfer-Encoding, and 6.3 ends a 304 at its headers whatever they say. The request
-          // is the server's own object (as for `ranges` above); the log keeps the method that was sent.
-          const_cast<httplib::Request&>(req).method = "HEAD";
-          res.set_chunked_content_provider("image/png", [](std::size_t, httplib::DataSink& sink) {
-            sink.done();
-            return true;
-          });
-        } else {
-          write_problem(res, problem(412, "precondition-failed", "The precondition failed",
-                                     "If-None-Match names this scene's tag " + etag +
-                                         "; a POST with it is not performed (send GET for a 304)"));
-        }
+        write_problem(res, problem(412, "precondition-failed", "The precondition failed",
+                                   "If-None-Match names this scene's tag " + scene_tag +
+                                       "; a POST with it is not performed (send GET for a 304)"));
         return;
       }
+      // The tag the client holds tells the length; "*" or a tag without one leaves only the render to tell.
+      if (match.hit && match.png_bytes) return not_modified(*match.png_bytes);
       const Clock::time_point t1 = Clock::now();
       raster::RenderControl control;
       control.deadline = t0 + config.render_deadline;
@@ -598,8 +598,9 @@ struct Service::State {
       std::snprintf(timing, sizeof timing, "parse;dur=%.3f, raster;dur=%.3f, encode;dur=%.3f",
                     ms_between(t0, t1), ms_between(t1, t2), ms_between(t2, t3));
       res.set_header("Server-Timing", timing);
+      if (match.hit) return not_modified(png.size());
       res.set_header("X-Render-Plan", raster::explain_line(plan));
-      set_cache_headers();
+      set_cache_headers(png.size());
       res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
     } catch (const QueryError& e) {
       // The URL is wrong, not the scene: its own type, naming the parameter.

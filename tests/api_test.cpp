@@ -1,6 +1,11 @@
 // Issue 16, parts 1 and 3, over real HTTP: the API documents, image URLs (GET /render?scene=), ETags,
 // conditional requests and Cache-Control.
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -216,7 +221,8 @@ TEST(ImageUrl, EtagNamesTheSceneNotItsSpelling) {
       R"({"type":"line","points":[[1,1],[30,20]],"color":"#ff0000"}]})",  // the same two, other order
   };
   const auto [tag, png] = tag_of(a);
-  ASSERT_EQ(tag.size(), 34u) << tag;
+  // 32 hex digits of the scene's hash, then the PNG's length (so a 304 can declare it), in quotes.
+  ASSERT_EQ(tag.size(), 35u + std::to_string(png.size()).size()) << tag;
   EXPECT_EQ(tag.front(), '"');
   for (const std::string& s : same) {
     const auto [t, p] = tag_of(s);
@@ -241,8 +247,29 @@ TEST(ImageUrl, EtagNamesTheSceneNotItsSpelling) {
   EXPECT_EQ(inline_r->body, upload_r->body);
 }
 
+// Sends `request` on a new connection and returns every byte answered until the server closes it.
+std::string exchange(int port, const std::string& request) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(port));
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  timeval tv{20, 0};
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  std::string out;
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0 &&
+      ::send(fd, request.data(), request.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(request.size())) {
+    char buf[4096];
+    for (ssize_t n; (n = ::recv(fd, buf, sizeof buf, 0)) > 0;) out.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return out;
+}
+
 // A matching If-None-Match is answered from the scene's tag alone: the render count in /metrics (taken
-// before each response is sent) does not move.
+// before each response is sent) does not move. The 304 declares the length of the 200 it confirms, which
+// the tag carries (RFC 9110 8.6), and no body byte follows its headers: read off the wire, as cpp-httplib's
+// client reads a 304 as if a body of that length followed.
 TEST(ImageUrl, IfNoneMatchGetsA304WithoutRendering) {
   TestServer server;
   const std::string url = url_of(kScene);
@@ -251,29 +278,47 @@ TEST(ImageUrl, IfNoneMatchGetsA304WithoutRendering) {
   ASSERT_EQ(first->status, 200);
   const std::string tag = first->get_header_value("ETag");
   ASSERT_EQ(renders(server), 1);
+  ASSERT_EQ(tag.substr(tag.size() - 2 - std::to_string(first->body.size()).size()),
+            "-" + std::to_string(first->body.size()) + "\"")
+      << "the tag ends in the PNG's length: " << tag;
 
+  auto raw_304 = [&](const std::string& field) {
+    return exchange(server.port(), "GET " + url + " HTTP/1.1\r\nHost: x\r\nIf-None-Match: " + field + "\r\n\r\n");
+  };
   for (const std::string& field : {tag, "W/" + tag, "\"0123\", " + tag, std::string("*")}) {
-    auto r = server.client().Get(url, {{"If-None-Match", field}});
-    ASSERT_TRUE(r);
-    EXPECT_EQ(r->status, 304) << field;
-    EXPECT_TRUE(r->body.empty());
-    EXPECT_EQ(r->get_header_value("ETag"), tag) << "a 304 names the representation it confirms";
-    EXPECT_EQ(r->get_header_value("Cache-Control"), first->get_header_value("Cache-Control"));
+    const std::string answer = raw_304(field);
+    const std::size_t head_end = answer.find("\r\n\r\n");
+    ASSERT_NE(head_end, std::string::npos) << answer;
+    EXPECT_TRUE(answer.starts_with("HTTP/1.1 304 ")) << field << "\n" << answer;
+    EXPECT_EQ(answer.size(), head_end + 4) << "no body byte after a 304's headers: " << answer;
+    const std::string head = answer.substr(0, head_end + 2);
+    EXPECT_NE(head.find("\r\nETag: " + tag + "\r\n"), std::string::npos) << "it names what it confirms: " << head;
+    EXPECT_NE(head.find("\r\nContent-Length: " + std::to_string(first->body.size()) + "\r\n"), std::string::npos)
+        << "the 200's length, never 0: " << head;
+    EXPECT_EQ(head.find("Transfer-Encoding"), std::string::npos) << head;
+    EXPECT_NE(head.find("\r\nCache-Control: " + first->get_header_value("Cache-Control") + "\r\n"),
+              std::string::npos)
+        << head;
   }
-  EXPECT_EQ(renders(server), 1) << "a 304 rendered nothing";
+  // "*" names no length: that one 304 had to render to learn it; the tags that carry it rendered nothing.
+  EXPECT_EQ(renders(server), 2) << "only the \"*\" 304 rendered";
+  // The scene's own tag without a length (what rasterd 0.2 sent) still hits, as "*" does.
+  const std::string old_tag = tag.substr(0, tag.rfind('-')) + "\"";
+  EXPECT_TRUE(raw_304(old_tag).starts_with("HTTP/1.1 304 "));
+  EXPECT_EQ(renders(server), 3);
 
   auto stale = server.client().Get(url, {{"If-None-Match", "\"0123\""}});
   ASSERT_TRUE(stale);
   EXPECT_EQ(stale->status, 200);
   EXPECT_EQ(stale->body, first->body);
-  EXPECT_EQ(renders(server), 2);
+  EXPECT_EQ(renders(server), 4);
 
   // A POST is not performed when its precondition fails (RFC 9110 13.1.2): 412, and no render either.
   auto post = server.client().Post("/render", {{"If-None-Match", tag}}, kScene, "application/json");
   ASSERT_TRUE(post);
   EXPECT_EQ(post->status, 412);
   EXPECT_EQ(problem_of(post)["type"], "urn:rasterd:problem:precondition-failed");
-  EXPECT_EQ(renders(server), 2);
+  EXPECT_EQ(renders(server), 4);
 }
 
 TEST(ImageUrl, CacheControlOnGetImagesOnly) {
@@ -292,14 +337,20 @@ TEST(ImageUrl, CacheControlOnGetImagesOnly) {
 }
 
 TEST(ImageUrl, IfNoneMatchParsing) {
-  using rasterd::none_match_hits;
-  EXPECT_TRUE(none_match_hits("\"a\"", "\"a\""));
-  EXPECT_TRUE(none_match_hits("W/\"a\"", "\"a\""));
-  EXPECT_TRUE(none_match_hits(" \"b\" ,\t\"a\" ", "\"a\""));
-  EXPECT_TRUE(none_match_hits("*", "\"a\""));
-  EXPECT_FALSE(none_match_hits("\"ab\"", "\"a\""));
-  EXPECT_FALSE(none_match_hits("a", "\"a\""));
-  EXPECT_FALSE(none_match_hits("", "\"a\""));
+  auto hit = [](std::string_view field) { return rasterd::none_match(field, "\"a\"").hit; };
+  EXPECT_TRUE(hit("\"a\""));
+  EXPECT_TRUE(hit("W/\"a\""));
+  EXPECT_TRUE(hit(" \"b\" ,\t\"a\" "));
+  EXPECT_TRUE(hit("*"));
+  EXPECT_FALSE(hit("\"ab\""));
+  EXPECT_FALSE(hit("a"));
+  EXPECT_FALSE(hit(""));
+  // An image's tag carries its length: read back as it was written, anything else after the hash misses.
+  EXPECT_EQ(rasterd::image_etag("\"a\"", 15340), "\"a-15340\"");
+  EXPECT_EQ(rasterd::none_match("\"b\", W/\"a-15340\"", "\"a\"").png_bytes, 15340u);
+  EXPECT_FALSE(rasterd::none_match("\"a\"", "\"a\"").png_bytes) << "the scene's tag alone has no length";
+  for (const char* other : {"\"a-\"", "\"a-12x\"", "\"ab-12\"", "\"a-1234567890123456\"", "\"a12\""})
+    EXPECT_FALSE(hit(other)) << other;
 }
 
 }  // namespace
