@@ -193,8 +193,9 @@ int run_render(const std::vector<std::string>& args) {
 // obj-sphere-400k: 924 / 1,378 / 2,523 / 9,681 without this, 0 / 0 / 0 / 5-7 with it. The render's own
 // large arrays are kept apart (renderer/src/memory.h).
 // What freed memory the heap keeps is resident memory no reservation counts, so it is bounded too and set
-// aside from the memory budget (kHeapKeptBytes): at most kArenas heaps (glibc would make 8 per core, one
-// for each of the busiest connection threads), each keeping at most kTrimBytes free at its top.
+// aside from the memory budget (server/resources.h): at most kArenas heaps (glibc would make 8 per core, one
+// for each of the busiest connection threads), each keeping at most kTrimBytes free at its top, and
+// allocations of kMmapBytes and more (request bodies) mapped apart, returned when freed.
 void keep_freed_pages() {
 #if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD) && defined(M_ARENA_MAX)
   mallopt(M_MMAP_THRESHOLD, static_cast<int>(rasterd::kMmapBytes));
