@@ -91,7 +91,8 @@ test-repeat:
 	@REPEAT=$(REPEAT) STRESS=$(STRESS) scripts/test-repeat
 
 # Builds the Dockerfile and checks the image: runtime libraries, HEALTHCHECK, renders identical to
-# $(BUILD)/rasterd's, non-root, clean SIGTERM; prints its size. docker where an engine runs, else podman.
+# $(BUILD)/rasterd's, non-root, clean SIGTERM, and test-memory's phases against the image under the manifest's
+# limits (TEST_DOCKER_MEMORY=0 skips those); prints its size. docker where an engine runs, else podman.
 test-docker: build
 	@BUILD=$(BUILD) scripts/test-docker
 
@@ -115,7 +116,8 @@ test-cluster: build
 # Issue 39's finding 1: rasterd serve in a 2 GiB memory cgroup (made here; needs root) with the manifest's
 # settings, sent two 33 MB face-dense OBJs at once, then 48 sphere OBJs, then 48 face-dense: only 200s, 503s
 # with Retry-After and 413/422s, no lost connection, no OOM kill. Rewrites docs/memory.md's measured section.
-# RASTERD_BINARY=path tests another binary.
+# RASTERD_BINARY=path tests another binary; MEMORY_IMAGE=image runs the same against containers of an image
+# under the manifest's limits (make test-docker does, on the image it builds) and rewrites the image section.
 test-memory: build
 	@BUILD=$(BUILD) scripts/test-memory
 
