@@ -25,10 +25,10 @@
 namespace {
 
 // The tightest round factor by which every case's estimate stays within its measured peak, with margin.
-// Measured 2026-11-26 (x86-64, glibc, Release, 2 render threads; estimate / peak):
-//   OBJ face-dense 1M 1.28, OBJ vertex-dense 300k 1.54, OBJ heightfield 600x600 1.90, STL binary 400k 1.32,
-//   STL ASCII 200k 2.13, PLY binary vertex-dense 300k 1.20, PLY binary face-dense 1M 0.80 (UNDER: see
-//   FaceDenseBinaryPly), GLB vertex-dense 300k 2.66, GLB face-dense 1M 1.47.
+// Measured 2026-11-26 (x86-64, glibc, Release, 2 render threads; estimate / peak, three runs alike):
+//   OBJ face-dense 1M 1.70, OBJ vertex-dense 300k 1.77, OBJ heightfield 600x600 2.42, STL binary 400k 1.68,
+//   STL ASCII 200k 2.48, PLY binary vertex-dense 300k 1.47, PLY binary face-dense 1M 1.31, GLB vertex-dense
+//   300k 2.21 (its peak moves between 81 and 96 MB with the machine's load), GLB face-dense 1M 1.99.
 // A reservation more than this over what is used wastes the budget: fewer requests are admitted than fit.
 constexpr double kFactor = 3;
 
@@ -258,11 +258,8 @@ TEST(MemoryEstimate, VertexDenseBinaryPly) {
 
 // What would break: kPlyPerFace under a face's index list and triangle, or kRenderPerTriangle under what
 // the render holds per triangle of a mesh whose triangles share few vertices.
-// FAILS at 0a84766 (a real shortfall, kept): the peak is 186 MB against an estimate of 149 MB. The parse is
-// well within its reservation (13 MB held of 48 MB); the render adds 173 MB for 1M triangles and 4 vertices,
-// against 97 MB reserved by the plan and 4 MB for the bins: about 169 bytes a triangle where
-// cost::kRenderPerTriangle says 96. The GLB and OBJ face-dense cases pass only because their readers
-// over-reserve (the GLB's render adds 113 MB for the same mesh, also over the render's 101 MB).
+// It found kRenderPerTriangle at 96 too low: the render adds 173 MB for 1M triangles over 4 vertices (about
+// 169 bytes a triangle, where the other cases' readers had covered the shortfall); 192 since.
 TEST(MemoryEstimate, FaceDenseBinaryPly) {
   expect_estimate_holds("PLY binary face-dense 1M", test::write_ply_binary(face_dense(1'000'000), false));
 }

@@ -59,13 +59,13 @@ inline constexpr std::int64_t kObjPerVertex = 72;   ///< per v, vt or vn line (d
 inline constexpr std::int64_t kStlPerFacet = 112;   ///< per triangle: three corners of its own
 inline constexpr std::int64_t kPlyPerFace = 48;     ///< per face (its index list, then a triangle)
 inline constexpr std::int64_t kPlyPerVertex = 48;   ///< per vertex (position, normal, colour)
-inline constexpr std::int64_t kGltfPerByte = 3;     ///< per byte sent: tinygltf's copies of buffers and images
+inline constexpr std::int64_t kGltfPerByte = 2;     ///< per byte sent: tinygltf's copies of buffers and images
 inline constexpr std::int64_t kGltfPerTriangle = 32;  ///< per triangle drawn (a node draws its mesh again)
-inline constexpr std::int64_t kGltfPerVertex = 96;    ///< per vertex drawn: position, normal, colour, uv
+inline constexpr std::int64_t kGltfPerVertex = 48;    ///< per vertex drawn: position, normal, colour, uv
 inline constexpr std::int64_t kScenePerByte = 4;      ///< per byte of scene JSON: its primitives, parsed
 // Render: per triangle and per vertex of 3D meshes (records, attributes, transformed corners), per 2D
 // primitive, and 4 bytes per bin entry (counted before the bins are filled); the pixel buffers are the plan's.
-inline constexpr std::int64_t kRenderPerTriangle = 96;
+inline constexpr std::int64_t kRenderPerTriangle = 192;
 inline constexpr std::int64_t kRenderPerVertex = 48;
 inline constexpr std::int64_t kRenderPerPrimitive = 160;
 inline constexpr std::int64_t kRenderPerBinEntry = 4;
