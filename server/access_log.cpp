@@ -33,10 +33,16 @@ std::string LogLine::text() const {
 }
 
 std::string LogLine::json() const {
-  const nlohmann::json j = {{"time", iso_time(wall)}, {"client", client},     {"method", method},
-                            {"path", path},           {"status", status},     {"bytes_in", bytes_in},
-                            {"bytes_out", bytes_out}, {"ms", static_cast<double>(static_cast<long long>(ms * 10)) / 10},
-                            {"id", id},               {"user_agent", user_agent}};
+  const nlohmann::json j = {{"time", iso_time(wall)},
+                            {"client", client},
+                            {"method", method},
+                            {"path", path},
+                            {"status", status},
+                            {"bytes_in", bytes_in},
+                            {"bytes_out", bytes_out},
+                            {"ms", static_cast<double>(static_cast<long long>(ms * 10)) / 10},
+                            {"id", id},
+                            {"user_agent", user_agent}};
   // Client text that is not UTF-8 is replaced (U+FFFD), never a reason to lose the line.
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

@@ -21,8 +21,8 @@ struct LogLine {
   std::string id;                              ///< the X-Request-Id answered
   std::string user_agent;                      ///< the User-Agent header, "" without one
 
-  /// `2026-11-26T17:24:01.042Z 10.0.0.7 POST /render 200 in=512 out=2048 ms=3.1 id=r00000001 ua="curl/7.88.1"`.
-  /// Client text (path, user agent) is escaped so that it cannot split or forge a line.
+  /// `2026-11-26T17:24:01.042Z 10.0.0.7 POST /render 200 in=512 out=2048 ms=3.1 id=r00000001
+  /// ua="curl/7.88.1"`. Client text (path, user agent) is escaped so that it cannot split or forge a line.
   std::string text() const;
   /// The same fields as one JSON object on one line: time, client, method, path, status, bytes_in,
   /// bytes_out, ms, id, user_agent.

@@ -28,11 +28,10 @@ std::string image_etag(std::string_view scene_tag, std::size_t png_bytes);
 
 /// What an If-None-Match field value says of the image of the scene whose tag is `scene_tag`.
 struct NoneMatch {
-  bool hit = false;                       ///< it names this image (or is "*")
-  std::optional<std::size_t> png_bytes;   ///< the image's length, from an image_etag it names
+  bool hit = false;                      ///< it names this image (or is "*")
+  std::optional<std::size_t> png_bytes;  ///< the image's length, from an image_etag it names
 };
 /// RFC 9110 13.1.2, compared weakly: "*", the scene's tag, or an image_etag of it hit.
 NoneMatch none_match(std::string_view if_none_match, std::string_view scene_tag);
-
 
 }  // namespace rasterd

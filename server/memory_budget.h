@@ -43,8 +43,7 @@ class MemoryPool {
 class RequestBudget final : public raster::Budget {
  public:
   using Clock = MemoryPool::Clock;
-  RequestBudget(MemoryPool& pool, std::chrono::milliseconds max_wait)
-      : pool_(pool), max_wait_(max_wait) {}
+  RequestBudget(MemoryPool& pool, std::chrono::milliseconds max_wait) : pool_(pool), max_wait_(max_wait) {}
   ~RequestBudget() override { pool_.give(held_.load()); }
   RequestBudget(const RequestBudget&) = delete;
   RequestBudget& operator=(const RequestBudget&) = delete;

@@ -61,8 +61,10 @@ std::optional<double> scale_param(const Params& params) {
   const std::string& text = it->second;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || end != text.data() + text.size() || !(v >= kMinScale && v <= kMaxScale))
-    bad_param("scale", "expected a number from 0.25 to 8 (the device pixel ratio: 2 for a 2x srcset picture), "
-                       "got \"" + text + "\"");
+    bad_param("scale",
+              "expected a number from 0.25 to 8 (the device pixel ratio: 2 for a 2x srcset picture), "
+              "got \"" +
+                  text + "\"");
   return v;
 }
 
@@ -350,7 +352,8 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     // A field the query set is reported as that parameter: the client sent no document to point into.
     const std::string param = param_of_pointer(e.where().pointer, params);
     if (param.empty()) throw;
-    if (e.kind() == raster::ErrorKind::invalid) throw QueryError(param, "query parameter \"" + param + "\": " + e.what());
+    if (e.kind() == raster::ErrorKind::invalid)
+      throw QueryError(param, "query parameter \"" + param + "\": " + e.what());
     throw raster::SceneError(e.kind(), "query parameter \"" + param + "\": " + e.what());
   }
 }

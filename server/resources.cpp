@@ -48,8 +48,9 @@ std::vector<std::string> cgroup_dirs(const std::string& root, bool v2, const std
     const auto fields = split(line, ':');
     if (fields.size() < 3) continue;
     const auto controllers = split(fields[1], ',');
-    const bool match = v2 ? fields[0] == "0" && fields[1].empty()
-                          : std::find(controllers.begin(), controllers.end(), controller) != controllers.end();
+    const bool match =
+        v2 ? fields[0] == "0" && fields[1].empty()
+           : std::find(controllers.begin(), controllers.end(), controller) != controllers.end();
     if (!match) continue;
     path = line.substr(fields[0].size() + fields[1].size() + 2);
     found = true;
@@ -74,8 +75,10 @@ std::vector<std::string> cgroup_dirs(const std::string& root, bool v2, const std
     // The cgroup relative to what the mount shows; outside it (another namespace's view) only the mount's
     // own folder is readable.
     std::string relative = path;
-    if (mount_root != "/" && relative.starts_with(mount_root)) relative = relative.substr(mount_root.size());
-    else if (mount_root != "/") relative.clear();
+    if (mount_root != "/" && relative.starts_with(mount_root))
+      relative = relative.substr(mount_root.size());
+    else if (mount_root != "/")
+      relative.clear();
     std::vector<std::string> dirs;
     std::string dir = root + mount_point.substr(1) + relative;
     while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
@@ -107,7 +110,8 @@ ResourceLimit memory_limit(const std::string& root) {
   if (const std::int64_t v = smallest_limit(cgroup_dirs(root, false, "memory"), "memory.limit_in_bytes"))
     return {v, "cgroup v1 memory.limit_in_bytes"};
   for (const std::string& line : split(read_text(root + "proc/meminfo"), '\n'))
-    if (line.starts_with("MemTotal:")) return {std::strtoll(line.c_str() + 9, nullptr, 10) * 1024, "MemTotal"};
+    if (line.starts_with("MemTotal:"))
+      return {std::strtoll(line.c_str() + 9, nullptr, 10) * 1024, "MemTotal"};
   return {};
 }
 
@@ -119,7 +123,8 @@ ResourceLimit cpu_limit(const std::string& root) {
   for (const std::string& dir : cgroup_dirs(root, true, "")) {
     const auto fields = split(read_text(dir + "cpu.max"), ' ');
     if (fields.size() == 2 && cgroup_number(fields[0]) > 0 && cgroup_number(fields[1]) > 0) {
-      const double q = static_cast<double>(cgroup_number(fields[0])) / static_cast<double>(cgroup_number(fields[1]));
+      const double q =
+          static_cast<double>(cgroup_number(fields[0])) / static_cast<double>(cgroup_number(fields[1]));
       if (quota == 0 || q < quota) quota = q;
     }
   }
@@ -132,7 +137,8 @@ ResourceLimit cpu_limit(const std::string& root) {
     }
   if (quota > 0) {
     const auto cpus = static_cast<std::int64_t>(std::ceil(quota - 1e-9));
-    if (cpus < limit.value || limit.source == "default") limit = {std::max<std::int64_t>(1, cpus), "cgroup CPU quota"};
+    if (cpus < limit.value || limit.source == "default")
+      limit = {std::max<std::int64_t>(1, cpus), "cgroup CPU quota"};
   }
   return limit;
 }

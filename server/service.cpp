@@ -12,13 +12,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <exception>
 #include <fstream>
 #include <iterator>
-#include <sstream>
-#include <exception>
 #include <map>
 #include <mutex>
 #include <set>
+#include <sstream>
 #include <string_view>
 #include <thread>
 #include <vector>
@@ -240,7 +240,7 @@ std::string http_date(std::time_t when) {
 struct RequestContext {
   Clock::time_point start;
   std::chrono::system_clock::time_point wall;  ///< when the request began: the log line, the Date header
-  std::string method;  ///< as sent (a 304 is written as a HEAD answer: see render())
+  std::string method;                          ///< as sent (a 304 is written as a HEAD answer: see render())
   std::size_t bytes_in = 0;
 };
 thread_local RequestContext t_request;
@@ -338,8 +338,10 @@ struct Service::State {
     return refuse(res,
                   problem(503, "overloaded", "Not enough memory is free for this request now",
                           "it needs about " + std::to_string(bytes >> 20) + " MiB more of the " +
-                              std::to_string(memory.capacity() >> 20) + " MiB memory budget, and other requests "
-                              "held it for " + std::to_string(config.max_queue_wait.count()) + " ms; try again in " +
+                              std::to_string(memory.capacity() >> 20) +
+                              " MiB memory budget, and other requests "
+                              "held it for " +
+                              std::to_string(config.max_queue_wait.count()) + " ms; try again in " +
                               std::to_string(seconds) + " s"),
                   reason);
   }
@@ -365,11 +367,12 @@ struct Service::State {
     // time. One larger than the whole budget could never be held.
     const auto declared = static_cast<std::int64_t>(req.get_header_value<std::uint64_t>("Content-Length"));
     if (declared > memory.capacity())
-      return refuse(res,
-                    problem(413, "body-too-large", "The request body is too large",
-                            "the body's " + std::to_string(declared) + " bytes are more than the memory budget of " +
-                                std::to_string(memory.capacity()) + " bytes (--memory-budget)"),
-                    "body_size");
+      return refuse(
+          res,
+          problem(413, "body-too-large", "The request body is too large",
+                  "the body's " + std::to_string(declared) + " bytes are more than the memory budget of " +
+                      std::to_string(memory.capacity()) + " bytes (--memory-budget)"),
+          "body_size");
     if (!budget.reserve(declared)) return refuse_memory(res, declared, "memory");
     bool no_memory = false;
 
@@ -474,8 +477,8 @@ struct Service::State {
     // What the request says the model is, for bytes that do not tell: the file name, else the media type.
     std::optional<raster::ModelFormat> named = raster::format_of_file_name(model_file_name);
     if (!named && !multipart) named = format_of_media_type(req.get_header_value("Content-Type"));
-    render(req, res, budget, std::move(body), std::move(uploads), Params(req.params.begin(), req.params.end()),
-           false, declared_json, named);
+    render(req, res, budget, std::move(body), std::move(uploads),
+           Params(req.params.begin(), req.params.end()), false, declared_json, named);
   }
 
   // GET /render?scene=...: the scene is in the URL, so the answer can be cached by URL.
@@ -572,7 +575,8 @@ struct Service::State {
                                  [](std::size_t, std::size_t, httplib::DataSink&) { return false; });
       };
       NoneMatch match;
-      if (req.has_header("If-None-Match")) match = none_match(req.get_header_value("If-None-Match"), scene_tag);
+      if (req.has_header("If-None-Match"))
+        match = none_match(req.get_header_value("If-None-Match"), scene_tag);
       if (match.hit && !cacheable) {
         // RFC 9110 13.1.2: 304 for GET and HEAD; any other method must not be performed: 412.
         write_problem(res, problem(412, "precondition-failed", "The precondition failed",
@@ -727,12 +731,13 @@ void Service::install(httplib::Server& server) {
   server.Get("/metrics", [&s](const httplib::Request&, httplib::Response& res) {
     const auto [running, waiting] = s.admission.load();
     std::string text = s.metrics.text(running, waiting);
-    text += Metrics::gauge("rasterd_memory_budget_bytes",
-                           "Bytes requests may reserve at once (--memory-budget).", "gauge",
-                           static_cast<double>(s.memory.capacity()));
-    text += Metrics::gauge("rasterd_memory_reserved_bytes",
-                           "Bytes reserved now by requests: bodies, parsed scenes and models, render buffers.",
-                           "gauge", static_cast<double>(s.memory.reserved()));
+    text +=
+        Metrics::gauge("rasterd_memory_budget_bytes", "Bytes requests may reserve at once (--memory-budget).",
+                       "gauge", static_cast<double>(s.memory.capacity()));
+    text +=
+        Metrics::gauge("rasterd_memory_reserved_bytes",
+                       "Bytes reserved now by requests: bodies, parsed scenes and models, render buffers.",
+                       "gauge", static_cast<double>(s.memory.reserved()));
     text += Metrics::gauge("rasterd_memory_reserved_peak_bytes", "Most bytes reserved at once since start.",
                            "gauge", static_cast<double>(s.memory.peak()));
     text += Metrics::gauge("rasterd_build_info", "The release and render version of this binary.", "gauge", 1,

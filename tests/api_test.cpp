@@ -283,7 +283,8 @@ TEST(ImageUrl, IfNoneMatchGetsA304WithoutRendering) {
       << "the tag ends in the PNG's length: " << tag;
 
   auto raw_304 = [&](const std::string& field) {
-    return exchange(server.port(), "GET " + url + " HTTP/1.1\r\nHost: x\r\nIf-None-Match: " + field + "\r\n\r\n");
+    return exchange(server.port(),
+                    "GET " + url + " HTTP/1.1\r\nHost: x\r\nIf-None-Match: " + field + "\r\n\r\n");
   };
   for (const std::string& field : {tag, "W/" + tag, "\"0123\", " + tag, std::string("*")}) {
     const std::string answer = raw_304(field);
@@ -292,8 +293,10 @@ TEST(ImageUrl, IfNoneMatchGetsA304WithoutRendering) {
     EXPECT_TRUE(answer.starts_with("HTTP/1.1 304 ")) << field << "\n" << answer;
     EXPECT_EQ(answer.size(), head_end + 4) << "no body byte after a 304's headers: " << answer;
     const std::string head = answer.substr(0, head_end + 2);
-    EXPECT_NE(head.find("\r\nETag: " + tag + "\r\n"), std::string::npos) << "it names what it confirms: " << head;
-    EXPECT_NE(head.find("\r\nContent-Length: " + std::to_string(first->body.size()) + "\r\n"), std::string::npos)
+    EXPECT_NE(head.find("\r\nETag: " + tag + "\r\n"), std::string::npos)
+        << "it names what it confirms: " << head;
+    EXPECT_NE(head.find("\r\nContent-Length: " + std::to_string(first->body.size()) + "\r\n"),
+              std::string::npos)
         << "the 200's length, never 0: " << head;
     EXPECT_EQ(head.find("Transfer-Encoding"), std::string::npos) << head;
     EXPECT_NE(head.find("\r\nCache-Control: " + first->get_header_value("Cache-Control") + "\r\n"),
@@ -366,7 +369,8 @@ TEST(ImageUrl, TheCacheBusterAndTrackingParametersAreIgnored) {
   auto bare = server.client().Get(url_of(kScene));
   ASSERT_TRUE(bare);
   ASSERT_EQ(bare->status, 200);
-  for (const std::string extra : {"&v=2", "&utm_source=x&utm_medium=social", "&fbclid=IwAR0abc", "&gclid=1"}) {
+  for (const std::string extra :
+       {"&v=2", "&utm_source=x&utm_medium=social", "&fbclid=IwAR0abc", "&gclid=1"}) {
     auto r = server.client().Get(url_of(kScene) + extra);
     ASSERT_TRUE(r) << extra;
     EXPECT_EQ(r->status, 200) << extra << "\n" << r->body;
@@ -412,8 +416,8 @@ TEST(ImageUrl, ScaleDrawsTheSceneAtThatPixelRatio) {
   ASSERT_TRUE(posted);
   EXPECT_EQ(posted->body, by_hand->body) << "POST takes ?scale too";
   // A model's default scene: 512 x 512 becomes 1024 x 1024.
-  auto model = server.client().Post("/render?scale=2&explain=1", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                                    "model/obj");
+  auto model =
+      server.client().Post("/render?scale=2&explain=1", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "model/obj");
   ASSERT_TRUE(model);
   EXPECT_EQ(nlohmann::json::parse(model->body)["width"], 1024) << model->body;
   // Past the size limit at that ratio: 422, naming scale.

@@ -206,8 +206,8 @@ TEST(Service, ABurstOfConnectionsIsQueuedNotReset) {
 // The deadline is already past when the render starts (0 ms covers parsing too); the renderer looks at it
 // before any pixel work, so the answer does not depend on how long the scene would take. That a deadline
 // passing *during* one huge primitive stops it is pinned in deadline_test.cpp with an injected clock.
-// A 422, not a 503: every replica has the same deadline, so a proxy must not try the others (deploy/nginx.conf
-// retries 503s), and there is no Retry-After to honour.
+// A 422, not a 503: every replica has the same deadline, so a proxy must not try the others
+// (deploy/nginx.conf retries 503s), and there is no Retry-After to honour.
 TEST(Service, RenderPastItsDeadlineIsA422ThatIsNotRetried) {
   rasterd::ServiceConfig config;
   config.render_deadline = std::chrono::milliseconds(0);

@@ -372,8 +372,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   // Asked for now that it is known: the pixel storage, the PNG (at most about the colour buffer's size), and
   // the setup's records and transformed corners. The bins are asked for by the render once counted.
   detail::reserve(limits,
-                  out.memory.total() + out.memory.color_bytes +
-                      cost::kRenderPerTriangle * out.triangles_3d + cost::kRenderPerVertex * vertices_3d +
+                  out.memory.total() + out.memory.color_bytes + cost::kRenderPerTriangle * out.triangles_3d +
+                      cost::kRenderPerVertex * vertices_3d +
                       cost::kRenderPerPrimitive * static_cast<std::int64_t>(out.draws.size()),
                   "rendering " + std::to_string(out.draws.size()) + " primitives (" +
                       std::to_string(out.triangles_3d) + " mesh triangles) at " + std::to_string(out.width) +

@@ -222,7 +222,8 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control) {
   std::atomic<bool> stopped{false};  // set by whichever thread first sees the deadline or the cancel flag
   std::atomic<std::int64_t> refused{0};  // bytes the budget refused (a refusal stops the render too)
-  const detail::Stop stop{control.deadline, control.cancel, &stopped, &control.clock, control.budget, &refused};
+  const detail::Stop stop{control.deadline, control.cancel, &stopped,
+                          &control.clock,   control.budget, &refused};
   const auto cancelled = [&] {  // why the render stopped: the budget refused memory, or time ran out
     if (refused.load()) throw MemoryRefused(refused.load(), "the render's tile bins");
     throw RenderCancelled("render stopped: deadline passed or cancelled");

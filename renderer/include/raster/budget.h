@@ -1,7 +1,7 @@
-// Budget: the memory and time a render may still spend, kept by the caller (the service keeps one per request)
-// and asked by the stages that learn how much they need, before they take it: a reader once its prescan
-// has counted faces and vertices, the plan once it knows the pixel buffers, the render once it has counted
-// its bins. Nothing here is process-wide; without a budget (Limits::budget null) nothing is asked.
+// Budget: the memory and time a render may still spend, kept by the caller (the service keeps one per
+// request) and asked by the stages that learn how much they need, before they take it: a reader once its
+// prescan has counted faces and vertices, the plan once it knows the pixel buffers, the render once it has
+// counted its bins. Nothing here is process-wide; without a budget (Limits::budget null) nothing is asked.
 #pragma once
 
 #include <cstddef>
@@ -54,17 +54,18 @@ class RenderCancelled : public std::runtime_error {
 /// stage holds at its peak, including std::vector's growth where a reader cannot size its arrays first.
 namespace cost {
 // Readers: what the parse holds at its peak, the finished Mesh included (the request body is the caller's).
-inline constexpr std::int64_t kObjPerCorner = 64;   ///< per face corner (tinyobjloader's index and ours)
-inline constexpr std::int64_t kObjPerVertex = 72;   ///< per v, vt or vn line (doubles there, floats here)
-inline constexpr std::int64_t kStlPerFacet = 112;   ///< per triangle: three corners of its own
-inline constexpr std::int64_t kPlyPerFace = 48;     ///< per face (its index list, then a triangle)
-inline constexpr std::int64_t kPlyPerVertex = 48;   ///< per vertex (position, normal, colour)
-inline constexpr std::int64_t kGltfPerByte = 2;     ///< per byte sent: tinygltf's copies of buffers and images
+inline constexpr std::int64_t kObjPerCorner = 64;  ///< per face corner (tinyobjloader's index and ours)
+inline constexpr std::int64_t kObjPerVertex = 72;  ///< per v, vt or vn line (doubles there, floats here)
+inline constexpr std::int64_t kStlPerFacet = 112;  ///< per triangle: three corners of its own
+inline constexpr std::int64_t kPlyPerFace = 48;    ///< per face (its index list, then a triangle)
+inline constexpr std::int64_t kPlyPerVertex = 48;  ///< per vertex (position, normal, colour)
+inline constexpr std::int64_t kGltfPerByte = 2;    ///< per byte sent: tinygltf's copies of buffers and images
 inline constexpr std::int64_t kGltfPerTriangle = 32;  ///< per triangle drawn (a node draws its mesh again)
 inline constexpr std::int64_t kGltfPerVertex = 48;    ///< per vertex drawn: position, normal, colour, uv
 inline constexpr std::int64_t kScenePerByte = 4;      ///< per byte of scene JSON: its primitives, parsed
 // Render: per triangle and per vertex of 3D meshes (records, attributes, transformed corners), per 2D
-// primitive, and 4 bytes per bin entry (counted before the bins are filled); the pixel buffers are the plan's.
+// primitive, and 4 bytes per bin entry (counted before the bins are filled); the pixel buffers are the
+// plan's.
 inline constexpr std::int64_t kRenderPerTriangle = 192;
 inline constexpr std::int64_t kRenderPerVertex = 48;
 inline constexpr std::int64_t kRenderPerPrimitive = 160;

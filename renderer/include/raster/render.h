@@ -47,7 +47,6 @@ struct RenderControl {
   Budget* budget = nullptr;
 };
 
-
 /// Draws `scene` exactly as `plan` says. The plan must have been made from this scene.
 /// Output is the same bytes for any plan.threads.
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control = {});
