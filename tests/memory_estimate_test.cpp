@@ -131,9 +131,18 @@ Measurement measure(const raster::Uploads& uploads, const std::string& scene = k
   return m;
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;  // g++ -fsanitize=address (make test-asan)
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 // The verdict for one model: the reservation covers the peak, and is within kFactor of it.
 void expect_estimate_holds(const std::string& name, const std::string& bytes,
                            const std::string& scene = kScene) {
+  // The reservations are for the Release build the service runs: under AddressSanitizer every allocation
+  // carries redzones and freed memory is quarantined (the 1M-face OBJ peaked at 547 MB there, 229 here).
+  if (kAddressSanitizer) GTEST_SKIP() << "peaks under AddressSanitizer are not the service's";
   const Measurement m = measure({{"model", bytes}}, scene);
   ASSERT_EQ(m.error[0], '\0') << name << ": " << m.error;
   ASSERT_GT(m.png, 0) << name;
