@@ -19,8 +19,8 @@ struct Stop {
   std::atomic<bool>* stopped;
   const std::function<std::chrono::steady_clock::time_point()>* clock;  ///< empty: steady_clock::now
   Budget* budget = nullptr;  ///< optional: asked for memory a stage has counted
-  std::atomic<std::int64_t>* refused =
-      nullptr;  ///< bytes of the first refused ask (0: none); stops the render
+  /// Bytes of the first ask the budget refused (0: none); a refusal stops the render as the deadline does.
+  std::atomic<std::int64_t>* refused = nullptr;
   bool now() const;
   /// Asks the budget for `bytes` (true without one); a refusal is remembered and stops every thread.
   bool reserve(std::int64_t bytes) const {
