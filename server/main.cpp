@@ -94,7 +94,8 @@ void gather_model_files(const std::string& model_path, const std::string& model,
               : raster::obj_files(model, mtl == uploads.end() ? "" : mtl->second, uploads)) {
       const std::filesystem::path file = folder / name;
       std::error_code error;
-      if (uploads.contains(name) || !std::filesystem::is_regular_file(file, error)) continue;  // not "..", not a folder
+      if (uploads.contains(name) || !std::filesystem::is_regular_file(file, error))
+        continue;  // not "..", not a folder
       std::string bytes;
       if (read_all(file.string(), bytes)) uploads.emplace(name, std::move(bytes));
     }

@@ -262,13 +262,19 @@ struct Route {
 
 const Route* route_of(const std::string& path) {
   static constexpr Route kRoutes[] = {
-      {"/render", "GET, HEAD, POST, OPTIONS"}, {"/healthz", "GET, HEAD"}, {"/metrics", "GET, HEAD"},
-      {"/schema/scene.json", "GET, HEAD"},     {"/openapi.json", "GET, HEAD"}, {"/", "GET, HEAD"},
-      {"/examples", "GET, HEAD"},               {"/examples/{name}", "GET, HEAD"},
+      {"/render", "GET, HEAD, POST, OPTIONS"},
+      {"/healthz", "GET, HEAD"},
+      {"/metrics", "GET, HEAD"},
+      {"/schema/scene.json", "GET, HEAD"},
+      {"/openapi.json", "GET, HEAD"},
+      {"/", "GET, HEAD"},
+      {"/examples", "GET, HEAD"},
+      {"/examples/{name}", "GET, HEAD"},
   };
   for (const Route& route : kRoutes)
     if (path == route.pattern) return &route;
-  if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos) return &std::end(kRoutes)[-1];
+  if (path.starts_with("/examples/") && path.find('/', 10) == std::string::npos)
+    return &std::end(kRoutes)[-1];
   return nullptr;
 }
 

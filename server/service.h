@@ -17,20 +17,20 @@
 namespace rasterd {
 
 struct ServiceConfig {
-  raster::Limits limits;                              ///< scene limits, enforced by the library
-  std::size_t max_body_bytes = 32u << 20;             ///< request body cap in bytes (413 above it)
+  raster::Limits limits;                   ///< scene limits, enforced by the library
+  std::size_t max_body_bytes = 32u << 20;  ///< request body cap in bytes (413 above it)
   int render_threads = 0;  ///< band threads per render; 0 = the CPUs the process may use (cpu_limit())
   int workers = 0;         ///< renders at once; 0 = the CPUs the process may use (cpu_limit())
   /// Bytes all requests may reserve at once (bodies, parsed models, render buffers); 0 = from the memory
   /// the process may use (default_memory_budget(memory_limit())).
   std::int64_t memory_budget = 0;
   bool log_json = false;  ///< one JSON object per log line instead of text
-  int max_queue = 256;  ///< renders waiting for a worker, at most (each holds a connection thread)
+  int max_queue = 256;    ///< renders waiting for a worker, at most (each holds a connection thread)
   /// Bodies held by waiting renders, in bytes: a request that would go past it is refused (one always waits).
   std::size_t max_queued_bytes = 256u << 20;
   /// A render waits for a worker only when its expected wait is within this, and gives up after it (503).
   std::chrono::milliseconds max_queue_wait{2'000};
-  std::chrono::milliseconds render_deadline{10'000};  ///< parse + render + encode; 503 past it
+  std::chrono::milliseconds render_deadline{10'000};  ///< parse + render + encode; 422 past it
   std::chrono::milliseconds body_deadline{10'000};    ///< reading the body, whatever its pace; 408 past it
   std::chrono::milliseconds shutdown_grace{20'000};   ///< after SIGTERM, how long renders may finish
   /// Origins whose pages may read answers (CORS): {"*"} is any origin (the default: the service has no

@@ -130,8 +130,7 @@ TEST(ImageUrl, UndecodableScenesAre400s) {
       {"/render?scene=" + base64url(deflated.substr(0, deflated.size() / 2)), "invalid-scene-url"},  // cut
       {"/render?scene=" + base64url(deflated + "xyz"), "invalid-scene-url"},  // bytes after the stream
       {"/render?scene=" + base64url("{\"width\": 4,"), "malformed-scene"},    // plain JSON, broken
-      {"/render?scene=" + base64url(deflate(R"({"width": 4, "height": 4, "colour": 1})")),
-       "invalid-scene"},
+      {"/render?scene=" + base64url(deflate(R"({"width": 4, "height": 4, "colour": 1})")), "invalid-scene"},
   };
   for (const auto& [url, type] : cases) {
     auto r = server.client().Get(url);

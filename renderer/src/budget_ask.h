@@ -4,18 +4,22 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "raster/budget.h"
 #include "raster/scene.h"
 
 namespace raster::detail {
 
-/// Takes `bytes` from `budget` (nothing without one); throws MemoryRefused naming `what` when refused.
-inline void reserve(Budget* budget, std::int64_t bytes, const std::string& what) {
-  if (budget && bytes > 0 && !budget->reserve(bytes)) throw MemoryRefused(bytes, what);
+/// Takes `bytes` from `budget` (nothing without one); throws MemoryRefused naming `what()` when refused.
+/// `what` is called only then: most renders have no budget, and none should format words it never shows.
+template <typename What>
+void reserve(Budget* budget, std::int64_t bytes, What&& what) {
+  if (budget && bytes > 0 && !budget->reserve(bytes)) throw MemoryRefused(bytes, what());
 }
-inline void reserve(const Limits& limits, std::int64_t bytes, const std::string& what) {
-  reserve(limits.budget, bytes, what);
+template <typename What>
+void reserve(const Limits& limits, std::int64_t bytes, What&& what) {
+  reserve(limits.budget, bytes, std::forward<What>(what));
 }
 
 /// Throws RenderCancelled once the budget says the render must stop. Cheap: readers call it every

@@ -596,8 +596,9 @@ class Reader {
         throw SceneError(ErrorKind::limit, "the model has more than " +
                                                std::to_string(3 * limits_.max_obj_faces) + " vertices");
       detail::stop_if_expired(limits_);
-      detail::reserve(limits_, cost::kGltfPerVertex * static_cast<std::int64_t>(positions.count()),
-                      positions.what() + "'s " + std::to_string(positions.count()) + " vertices");
+      detail::reserve(limits_, cost::kGltfPerVertex * static_cast<std::int64_t>(positions.count()), [&] {
+        return positions.what() + "'s " + std::to_string(positions.count()) + " vertices";
+      });
       make_room(mesh_.positions, positions.count());
       mesh_.positions.resize(base + positions.count());
       Vec3* out = mesh_.positions.data() + base;
@@ -843,7 +844,7 @@ class Reader {
       throw SceneError(ErrorKind::limit,
                        "the model has more than " + std::to_string(limits_.max_obj_faces) + " faces");
     detail::reserve(limits_, cost::kGltfPerTriangle * static_cast<std::int64_t>(more),
-                    std::to_string(more) + " more triangles");
+                    [&] { return std::to_string(more) + " more triangles"; });
     make_room(mesh_.triangles, more);
     if (textured_) make_room(mesh_.face_textures, more);
   }
@@ -979,7 +980,8 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
 
   // tinygltf copies the buffers and images it is given (base64 ones decoded), and keeps the document's
   // objects: bounded by what was sent, asked for before it runs.
-  detail::reserve(limits, cost::kGltfPerByte * static_cast<std::int64_t>(sent), "reading the glTF document");
+  detail::reserve(limits, cost::kGltfPerByte * static_cast<std::int64_t>(sent),
+                  [] { return std::string("reading the glTF document"); });
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   CopyBudget budget{&model, &files, sent};

@@ -440,11 +440,13 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   }
   const MtlPass mtl = read_mtl(mtl_text);
   // The prescan has counted what tinyobjloader and the mesh will hold: asked for before either is built.
-  detail::reserve(
-      limits,
-      cost::kObjPerCorner * (counts.corners + 2 * counts.segments + counts.points) +
-          cost::kObjPerVertex * (counts.v + counts.vt + counts.vn),
-      "the model's " + std::to_string(counts.faces) + " faces and " + std::to_string(counts.v) + " vertices");
+  detail::reserve(limits,
+                  cost::kObjPerCorner * (counts.corners + 2 * counts.segments + counts.points) +
+                      cost::kObjPerVertex * (counts.v + counts.vt + counts.vn),
+                  [&] {
+                    return "the model's " + std::to_string(counts.faces) + " faces and " +
+                           std::to_string(counts.v) + " vertices";
+                  });
 
   // What ObjReader::ParseFromString does (but faces as written, split below as PLY's are; colours only
   // where the file has them: no white fallback), on a stream over the text where it lies: ParseFromString

@@ -107,13 +107,27 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   // The side a fitted eye is on, and the up that goes with it when the scene gives none.
   Vec3 side_of_view{0, 0, 1};
   switch (cam.view) {
-    case View::front: side_of_view = {0, 0, 1}; break;
-    case View::back: side_of_view = {0, 0, -1}; break;
-    case View::right: side_of_view = {1, 0, 0}; break;
-    case View::left: side_of_view = {-1, 0, 0}; break;
-    case View::top: side_of_view = {0, 1, 0}; break;
-    case View::bottom: side_of_view = {0, -1, 0}; break;
-    case View::iso: side_of_view = normalize(Vec3{1, 1, 1}); break;
+    case View::front:
+      side_of_view = {0, 0, 1};
+      break;
+    case View::back:
+      side_of_view = {0, 0, -1};
+      break;
+    case View::right:
+      side_of_view = {1, 0, 0};
+      break;
+    case View::left:
+      side_of_view = {-1, 0, 0};
+      break;
+    case View::top:
+      side_of_view = {0, 1, 0};
+      break;
+    case View::bottom:
+      side_of_view = {0, -1, 0};
+      break;
+    case View::iso:
+      side_of_view = normalize(Vec3{1, 1, 1});
+      break;
   }
   if (!cam.has_up && cam.view == View::top) v.up = {0, 0, -1};  // the front edge at the bottom, as in CAD
   if (!cam.has_up && cam.view == View::bottom) v.up = {0, 0, 1};
@@ -124,7 +138,8 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   v.eye = cam.has_eye ? cam.eye : v.target + side_of_view * (fit_distance + length(v.target - centre));
   const Vec3 forward = normalize(v.target - v.eye);
   if (length(forward) == 0)  // only a fitted target can meet a given eye: validate() rejects the rest
-    camera_error("/camera/eye", "\"eye\" and \"target\" are the same point: the camera has no view direction");
+    camera_error("/camera/eye",
+                 "\"eye\" and \"target\" are the same point: the camera has no view direction");
   const Vec3 side = normalize(cross(forward, v.up));
   // sin of the angle between up and the view direction; below ~1e-9 the basis is not defined.
   if (length(side) == 0 || length(cross(forward, normalize(v.up))) < 1e-9)
@@ -258,7 +273,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
           }
           pp.blend |= !opaque;
           grey &= grey_texels;
-          out.memory.texture_bytes += static_cast<std::int64_t>(t.rgba.size()) + detail::mip_bytes(t.width, t.height);
+          out.memory.texture_bytes +=
+              static_cast<std::int64_t>(t.rgba.size()) + detail::mip_bytes(t.width, t.height);
         }
         ++out.textured_count;
       }
@@ -361,10 +377,11 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       any_3d ? out.threads * tile_pixels * out.samples * static_cast<std::int64_t>(sizeof(float)) : 0;
   // Multisampling: a colour per sample, used only where a pixel's samples differ (one bit a pixel says so).
   if (out.samples > 1)
-    out.memory.sample_bytes = out.threads * tile_pixels * (out.samples * channel_count(out.format)) +
-                              out.threads * tile_pixels / 8;
+    out.memory.sample_bytes =
+        out.threads * tile_pixels * (out.samples * channel_count(out.format)) + out.threads * tile_pixels / 8;
   if (any_union)  // 5 floats a pixel, and a bit a pixel saying which were reached
-    out.memory.coverage_bytes = out.threads * tile_pixels * 5 * std::int64_t{sizeof(float)} + out.threads * tile_pixels / 8;
+    out.memory.coverage_bytes =
+        out.threads * tile_pixels * 5 * std::int64_t{sizeof(float)} + out.threads * tile_pixels / 8;
   if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +
@@ -375,9 +392,11 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
                   out.memory.total() + out.memory.color_bytes + cost::kRenderPerTriangle * out.triangles_3d +
                       cost::kRenderPerVertex * vertices_3d +
                       cost::kRenderPerPrimitive * static_cast<std::int64_t>(out.draws.size()),
-                  "rendering " + std::to_string(out.draws.size()) + " primitives (" +
-                      std::to_string(out.triangles_3d) + " mesh triangles) at " + std::to_string(out.width) +
-                      "x" + std::to_string(out.height));
+                  [&] {
+                    return "rendering " + std::to_string(out.draws.size()) + " primitives (" +
+                           std::to_string(out.triangles_3d) + " mesh triangles) at " +
+                           std::to_string(out.width) + "x" + std::to_string(out.height);
+                  });
   out.png = png_plan_for(out.format);
   return out;
 }
@@ -420,9 +439,9 @@ std::string explain_json(const RenderPlan& p) {
   j["antialias"] = p.coverage == Coverage::area      ? "area"
                    : p.coverage == Coverage::samples ? "multisample"
                                                      : "none";
-  j["primitives"] = {{"flat", p.flat_count},   {"smooth", p.smooth_count},
-                     {"blend", p.blend_count}, {"culled", p.culled_count},
-                     {"lit", p.lit_count},     {"triangles_3d", p.triangles_3d},
+  j["primitives"] = {{"flat", p.flat_count},        {"smooth", p.smooth_count},
+                     {"blend", p.blend_count},      {"culled", p.culled_count},
+                     {"lit", p.lit_count},          {"triangles_3d", p.triangles_3d},
                      {"textured", p.textured_count}};
   if (p.depth_buffer) {
     const ViewPlan& v = p.view;
@@ -439,7 +458,9 @@ std::string explain_json(const RenderPlan& p) {
     nlohmann::ordered_json lights = nlohmann::ordered_json::array();
     for (const LightPlan& l : p.view.lights) {
       nlohmann::ordered_json o;
-      o["type"] = l.kind == LightKind::ambient ? "ambient" : l.kind == LightKind::point ? "point" : "directional";
+      o["type"] = l.kind == LightKind::ambient ? "ambient"
+                  : l.kind == LightKind::point ? "point"
+                                               : "directional";
       if (l.kind == LightKind::directional) o["toward_light"] = {l.to_light.x, l.to_light.y, l.to_light.z};
       if (l.kind == LightKind::point) o["position"] = {l.position.x, l.position.y, l.position.z};
       o["rgb"] = {l.rgb[0], l.rgb[1], l.rgb[2]};

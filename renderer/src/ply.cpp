@@ -317,8 +317,10 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
   detail::reserve(limits,
                   cost::kPlyPerFace * static_cast<std::int64_t>(face->count) +
                       cost::kPlyPerVertex * static_cast<std::int64_t>(vertex->count),
-                  "the model's " + std::to_string(face->count) + " faces and " +
-                      std::to_string(vertex->count) + " vertices");
+                  [&] {
+                    return "the model's " + std::to_string(face->count) + " faces and " +
+                           std::to_string(vertex->count) + " vertices";
+                  });
 
   Mesh mesh;
   Values in(bytes, h);

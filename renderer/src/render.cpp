@@ -35,14 +35,14 @@ struct Frame {
 /// of union-coverage primitives for area coverage.
 struct Scratch {
   std::vector<std::uint8_t> color;
-  std::vector<float> depth;      // a plane per sample
-  std::vector<float> coverage;   // area: union primitives' accumulation
+  std::vector<float> depth;     // a plane per sample
+  std::vector<float> coverage;  // area: union primitives' accumulation
   // Multisampling: a colour plane per sample, written before it is read (so never cleared).
   std::unique_ptr<std::uint8_t[]> samples;
   std::size_t sample_bytes = 0;
   std::vector<std::uint64_t> expanded;  // a word per block: which pixels' samples differ (or, area: are
                                         // accumulated in)
-  std::int64_t shaded = 0;       // pixels shaded, for RenderStats
+  std::int64_t shaded = 0;              // pixels shaded, for RenderStats
 };
 
 // The coverage routine the plan's anti-aliasing asks for.
@@ -67,8 +67,10 @@ void draw_triangle(const detail::Setup& setup, const detail::Records& part, cons
   if (t.wide != detail::TriangleRecord::kFast) {
     const detail::Edges<detail::Wide>& e = part.wide_edges[t.wide];
     const detail::Wide scale(detail::kSubpixelScale);
-    const double dx[3] = {(e.a[0] * scale).to_double(), (e.a[1] * scale).to_double(), (e.a[2] * scale).to_double()};
-    const double dy[3] = {(e.b[0] * scale).to_double(), (e.b[1] * scale).to_double(), (e.b[2] * scale).to_double()};
+    const double dx[3] = {(e.a[0] * scale).to_double(), (e.a[1] * scale).to_double(),
+                          (e.a[2] * scale).to_double()};
+    const double dy[3] = {(e.b[0] * scale).to_double(), (e.b[1] * scale).to_double(),
+                          (e.b[2] * scale).to_double()};
     detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, e.area.to_double());
     cover(e, clip, coverage, surface, lanes, meter, shader);
   } else {
@@ -175,9 +177,13 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
   // stays in its own rows.
   const int stride = (w + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
   const int block_rows = (rows + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
-  detail::Surface surface{scratch.color.data(), scratch.depth.empty() ? nullptr : scratch.depth.data(),
+  detail::Surface surface{scratch.color.data(),
+                          scratch.depth.empty() ? nullptr : scratch.depth.data(),
                           scratch.coverage.empty() ? nullptr : scratch.coverage.data(),
-                          stride, rect.x0, rect.y0, C};
+                          stride,
+                          rect.x0,
+                          rect.y0,
+                          C};
   surface.shaded = &scratch.shaded;
   surface.simd = f.plan.simd;
   surface.plane = static_cast<std::size_t>(stride) * block_rows;
@@ -220,7 +226,7 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
 }  // namespace
 
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control) {
-  std::atomic<bool> stopped{false};  // set by whichever thread first sees the deadline or the cancel flag
+  std::atomic<bool> stopped{false};      // set by whichever thread first sees the deadline or the cancel flag
   std::atomic<std::int64_t> refused{0};  // bytes the budget refused (a refusal stops the render too)
   const detail::Stop stop{control.deadline, control.cancel, &stopped,
                           &control.clock,   control.budget, &refused};
@@ -271,8 +277,9 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
     for (const Scratch& t : scratch)
-      bytes += static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float) +
-                                         t.sample_bytes + t.expanded.size() * sizeof(std::uint64_t));
+      bytes +=
+          static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float) +
+                                    t.sample_bytes + t.expanded.size() * sizeof(std::uint64_t));
     control.stats->pixel_bytes = bytes;
     std::size_t bin_bytes = 0;
     for (const detail::Bins::Part& part : bins.parts)

@@ -133,15 +133,15 @@ struct PrimitiveState : Keys {
   int type = -1;  // index into kTypes
   std::size_t byte = 0, points_byte = 0, colors_byte = 0, indices_byte = 0, normals_byte = 0, uvs_byte = 0;
   Primitive primitive;
-  std::size_t dims = 0;                // numbers per point: 2 (image space) or 3 (world space)
-  std::size_t first_point = 0;         // image-space "points" are scene.points from here
-  std::vector<double> coords;          // world-space "points", three numbers each
-  std::vector<Rgba8> colors;           // "colors"
-  Rgba8 color;                         // "color"
-  Mesh mesh;                           // "mesh" and "obj": positions, normals, uvs, texture, options
+  std::size_t dims = 0;         // numbers per point: 2 (image space) or 3 (world space)
+  std::size_t first_point = 0;  // image-space "points" are scene.points from here
+  std::vector<double> coords;   // world-space "points", three numbers each
+  std::vector<Rgba8> colors;    // "colors"
+  Rgba8 color;                  // "color"
+  Mesh mesh;                    // "mesh" and "obj": positions, normals, uvs, texture, options
   bool indices_nested = false;
-  std::string bad_index;  // the text of the first index below 0 or above 2^32 - 2
-  std::string obj, mtl;   // an "obj"'s inline texts: "data" and "mtl"
+  std::string bad_index;              // the text of the first index below 0 or above 2^32 - 2
+  std::string obj, mtl;               // an "obj"'s inline texts: "data" and "mtl"
   std::string source, mtl_source;     // a model's uploaded parts by name: "source" and "mtl_source"
   Uploads textures;                   // a model's "textures": the files it names, by file name
   std::optional<ModelFormat> format;  // a model's "format"; "obj" for the type "obj"
@@ -1132,7 +1132,7 @@ Scene parse_scene(std::string_view text, const Limits& limits, const Uploads& up
   // What the parsed primitives hold is bounded by the text's size; a model a primitive names is asked for
   // by its reader once counted.
   detail::reserve(limits, cost::kScenePerByte * static_cast<std::int64_t>(text.size()),
-                  "the scene's " + std::to_string(text.size()) + " bytes");
+                  [&] { return "the scene's " + std::to_string(text.size()) + " bytes"; });
   Reader r{JsonCursor(text, limits.max_json_depth), limits, uploads, {}, {}};
   r.reserve(text);
   try {

@@ -194,10 +194,10 @@ std::size_t Setup::record_count() const {
 }
 
 void Setup::add_line(LineRecord line) {
-  std::tie(line.box.x0, line.box.x1) =
-      pixel_span(std::min(line.x0, line.x1) * kSubpixelScale, std::max(line.x0, line.x1) * kSubpixelScale, width);
-  std::tie(line.box.y0, line.box.y1) =
-      pixel_span(std::min(line.y0, line.y1) * kSubpixelScale, std::max(line.y0, line.y1) * kSubpixelScale, height);
+  std::tie(line.box.x0, line.box.x1) = pixel_span(std::min(line.x0, line.x1) * kSubpixelScale,
+                                                  std::max(line.x0, line.x1) * kSubpixelScale, width);
+  std::tie(line.box.y0, line.box.y1) = pixel_span(std::min(line.y0, line.y1) * kSubpixelScale,
+                                                  std::max(line.y0, line.y1) * kSubpixelScale, height);
   if (line.box.empty()) return;
   Records& part = last_part();
   part.order.push_back({RecordRef::kLineBit | static_cast<std::uint32_t>(part.lines.size())});

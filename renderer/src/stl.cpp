@@ -50,7 +50,8 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
               0, 81);
   if (count == 0) stl_error("the model has no triangles");
   check_facets(count, limits);
-  detail::reserve(limits, cost::kStlPerFacet * count, "the model's " + std::to_string(count) + " facets");
+  detail::reserve(limits, cost::kStlPerFacet * count,
+                  [&] { return "the model's " + std::to_string(count) + " facets"; });
   Mesh mesh;
   mesh.shading = Shading::flat;
   mesh.positions.resize(std::size_t{count} * 3);
@@ -144,7 +145,8 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
   // A facet is at least ~60 bytes of text ("facet normal 0 0 0 outer loop vertex 0 0 0 ... endfacet"):
   // reserving from that bounds the guess by the text's size.
   std::size_t reserved = text.size() / 64;  // facets asked of the budget so far, grown in steps below
-  detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved), "the model's facets");
+  detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved),
+                  [] { return std::string("the model's facets"); });
   mesh.positions.reserve(reserved * 3);
   mesh.triangles.reserve(reserved);
   std::string_view w = in.next();
@@ -184,7 +186,7 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
       if (mesh.triangles.size() == reserved) {  // fans of many corners: more triangles than the text's guess
         detail::stop_if_expired(limits);
         detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved + 1),
-                        "the model's facets");
+                        [] { return std::string("the model's facets"); });
         reserved = 2 * reserved + 1;
       }
       mesh.triangles.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + k),

@@ -50,9 +50,10 @@ enum class Cull : std::uint8_t { none, back };
 
 /// A decoded texture image and how coordinates address it.
 struct Texture {
-  int width = 0, height = 0;       ///< texels, >= 1 each
-  std::vector<std::uint8_t> rgba;  ///< width * height * 4 bytes: straight RGBA, colour sRGB-encoded (as PNG
-                                   ///< and JPEG files hold it), rows from the image's top, texels left to right
+  int width = 0, height = 0;  ///< texels, >= 1 each
+  std::vector<std::uint8_t>
+      rgba;            ///< width * height * 4 bytes: straight RGBA, colour sRGB-encoded (as PNG
+                       ///< and JPEG files hold it), rows from the image's top, texels left to right
   bool clamp = false;  ///< coordinates outside [0, 1] take the edge texels; false: the image repeats
   /// MTL "-s" and "-o": the coordinates used are uv * scale + offset (u and v; w is ignored).
   std::array<float, 2> scale{1, 1}, offset{0, 0};
@@ -108,7 +109,7 @@ struct Camera {
   View view = View::front;  ///< where a fitted eye is placed; a given eye and a view are exclusive
   bool has_eye = false, has_target = false, has_near = false, has_far = false, has_height = false;
   bool has_view = false;  ///< the scene named a view (and so gave no eye)
-  bool has_up = false;    ///< the scene gave `up`; else [0, 1, 0], or [0, 0, -1] / [0, 0, 1] from top / bottom
+  bool has_up = false;  ///< the scene gave `up`; else [0, 1, 0], or [0, 0, -1] / [0, 0, 1] from top / bottom
   Vec3 eye;             ///< world position; default: on the view's side of the content, framing it
   Vec3 target;          ///< world point looked at; default: centre of the content's bounding box
   Vec3 up{0, 1, 0};     ///< world direction that appears upward (see has_up)
@@ -126,7 +127,8 @@ enum class LightKind : std::uint8_t { ambient, directional, point };
 /// lights of colour x intensity x (ambient: 1; directional and point: max(0, n . toward the light)), with n
 /// the unit normal of the side seen. Sums above 1 saturate. Lighting multiplies the sRGB-encoded colour, as
 /// the 8-bit output stores it (the convention of rasterd 0.1's single light, kept so its pictures stay).
-/// Point lights do not fall off with distance (as a viewer's lamps do not), so a model's scale never darkens it.
+/// Point lights do not fall off with distance (as a viewer's lamps do not), so a model's scale never darkens
+/// it.
 struct Light {
   LightKind kind = LightKind::directional;
   bool camera_space = false;  ///< direction / position in view space (x right, y up, z toward the viewer),
@@ -142,9 +144,10 @@ struct Light {
 inline constexpr std::size_t kMaxLights = 8;
 inline constexpr double kMaxLightIntensity = 1000;
 
-/// The lights a scene without "light" or "lights" gets: a key light from the upper left (0.45), a softer fill (0.25)
-/// along the view direction and an ambient floor (0.35), all moving with the camera, so that any view of a model
-/// without materials is lit from the front and neither too dark nor washed out (docs/lighting.md measures it).
+/// The lights a scene without "light" or "lights" gets: a key light from the upper left (0.45), a softer fill
+/// (0.25) along the view direction and an ambient floor (0.35), all moving with the camera, so that any view
+/// of a model without materials is lit from the front and neither too dark nor washed out (docs/lighting.md
+/// measures it).
 std::vector<Light> default_lights();
 
 /// rasterd 0.1's single light (the "light" field): ambient plus one directional light of intensity
@@ -181,7 +184,7 @@ struct Scene {
   std::vector<Mesh> meshes;           ///< 3D content, referenced by mesh primitives
   Camera camera;                      ///< used only when the scene has 3D content
   std::vector<Light> lights;          ///< lights of meshes; empty: default_lights()
-  int samples = 1;    ///< "antialias" as a number: samples per pixel, 1 (aliased), 4, 8 or 16
+  int samples = 1;                    ///< "antialias" as a number: samples per pixel, 1 (aliased), 4, 8 or 16
   bool area = false;  ///< "antialias": "area": every pixel takes the exact share of its square each shape
                       ///< covers (samples stays 1); 3D content gets multisampling instead (see the plan)
   /// Field by field; the two scene readers are tested to agree by it.
