@@ -13,12 +13,12 @@
 #include <rapidjson/error/en.h>
 #include <rapidjson/reader.h>
 
-#include "json_cursor.h"
+#include "base/json_cursor.h"
 #include "model_files.h"  // tests/: the generated torus in every model format
 #include "raster/raster.h"
 #include "scenes.h"
 
-// tinygltf's declarations, configured as the library compiles it (renderer/src/gltf.cpp), whose copy of the
+// tinygltf's declarations, configured as the library compiles it (renderer/src/model/gltf.cpp), whose copy of the
 // implementation the model/tinygltf rows call: its own load, without our reading of the result.
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE

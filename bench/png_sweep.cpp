@@ -1,4 +1,4 @@
-// The measurements behind the PNG encoder's choices (renderer/src/png.cpp): row filter and deflate
+// The measurements behind the PNG encoder's choices (renderer/src/png/png.cpp): row filter and deflate
 // implementation/level, on the benchmark renders, one thread, median of repeated runs. The compressors
 // are timed on the same filtered rows; stb_image_write as shipped is the baseline a caller would use.
 // Prints a Markdown table.

@@ -192,7 +192,7 @@ int run_render(const std::vector<std::string>& args) {
 // request touched was luck. Minor faults per request of a warm server (field 10 of /proc/PID/stat, 5
 // requests of each ab-bench scene after 3 uncounted), 2d-large-tris / 2d-lines / 2d-small-tris /
 // obj-sphere-400k: 924 / 1,378 / 2,523 / 9,681 without this, 0 / 0 / 0 / 5-7 with it. The render's own
-// large arrays are kept apart (renderer/src/memory.h).
+// large arrays are kept apart (renderer/src/base/memory.h).
 // What freed memory the heap keeps is resident memory no reservation counts, so it is bounded too and set
 // aside from the memory budget (server/resources.h): at most kArenas heaps (glibc would make 8 per core, one
 // for each of the busiest connection threads), each keeping at most kTrimBytes free at its top, and

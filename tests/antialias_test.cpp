@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coverage.h"
+#include "coverage/coverage.h"
 #include "reference.h"
 #include "support.h"
 

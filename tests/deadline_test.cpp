@@ -7,7 +7,7 @@
 #include <functional>
 
 #include <nlohmann/json.hpp>
-#include "coverage.h"
+#include "coverage/coverage.h"
 
 #include "raster/raster.h"
 #include "support.h"

@@ -1,11 +1,11 @@
-// The render's large arrays (renderer/src/memory.h): blocks freed by one render are what the next one gets,
+// The render's large arrays (renderer/src/base/memory.h): blocks freed by one render are what the next one gets,
 // whatever the element size, and what is kept stays bounded.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdint>
 
-#include "memory.h"
+#include "base/memory.h"
 
 namespace {
 

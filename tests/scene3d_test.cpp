@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support.h"
-#include "vecmath.h"
+#include "base/vecmath.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 #include "raster/raster.h"
 #include "support.h"
-#include "texture.h"
+#include "shade/texture.h"
 
 // JPEGs made here, by stb's own writer (baseline: JFIF, DQT, SOF0, one DHT of four tables, SOS, EOI).
 #define STB_IMAGE_WRITE_STATIC

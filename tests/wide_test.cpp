@@ -4,9 +4,9 @@
 
 #include <random>
 
-#include "geometry.h"
+#include "geometry/geometry.h"
 #include "support.h"
-#include "wide.h"
+#include "base/wide.h"
 
 namespace {
 

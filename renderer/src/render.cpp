@@ -10,13 +10,13 @@
 #include <memory>
 #include <vector>
 
-#include "coverage.h"
-#include "framebuffer.h"
-#include "geometry.h"
-#include "line.h"
-#include "parallel.h"
-#include "setup.h"
-#include "shade.h"
+#include "coverage/coverage.h"
+#include "framebuffer/framebuffer.h"
+#include "geometry/geometry.h"
+#include "coverage/line.h"
+#include "base/parallel.h"
+#include "setup/setup.h"
+#include "shade/shade.h"
 
 namespace raster {
 namespace {

@@ -14,8 +14,8 @@
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_dom.h"
-#include "texture.h"
-#include "vecmath.h"
+#include "shade/texture.h"
+#include "base/vecmath.h"
 
 namespace raster::scene_json {
 

@@ -76,7 +76,7 @@ void add_drawn_primitive(Scene& scene, Primitive p, std::size_t dims, std::span<
 Scene parse_scene_dom(std::string_view text, const Limits& limits, const Uploads& uploads);
 
 /// The oracle's parse_scene: UTF-8 first, then the DOM reader, then validate(), as the library's
-/// parse_scene did before the one streaming reader (renderer/src/scene_reader.cpp) replaced it.
+/// parse_scene did before the one streaming reader (renderer/src/scene/scene_reader.cpp) replaced it.
 Scene parse_scene_oracle(std::string_view text, const Limits& limits = {}, const Uploads& uploads = {});
 
 }  // namespace raster::scene_json

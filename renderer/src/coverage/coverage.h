@@ -1,0 +1,472 @@
+// Coverage: one triangle record x one tile -> blocks of 8x8 pixels with a mask of the covered ones and the
+// exact edge values shading needs. One block walker for every triangle (flat, smooth, depth-tested, lit; 2D
+// and 3D) and every anti-aliasing mode, which are its policies (what a partial block yields: a centre mask,
+// a mask per sample, area shares); templated on the edge functions' integer type: int64 in the fast range,
+// the 384-bit Wide beyond it.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+#include "setup/setup.h"
+#include "base/stop.h"
+
+namespace raster::detail {
+
+/// The standard (Direct3D) sample patterns for 1, 4, 8 and 16 samples, on the 1/256 px grid.
+const std::vector<SamplePoint>& sample_pattern(int samples);
+
+/// One block of coverage. Bit (8 r + i) of `mask` is set when pixel (x0 + i, y0 + r) is covered. The edge
+/// values E_k at that pixel's sample point are e[k] + i dx[k] + r dy[k]: exact integers for int64 edges
+/// (every term is below 2^53), the nearest doubles of the exact values for wide ones. x0 and y0 are
+/// multiples of kBlock, so a pixel's values do not depend on the tile size.
+struct Block {
+  int x0 = 0, y0 = 0;
+  std::uint64_t mask = 0;
+  double e[3] = {}, dx[3] = {}, dy[3] = {};
+  double area = 1;  ///< the triangle's doubled area in 1/256 px units: weights are E_k / area
+};
+
+/// How the partial blocks' masks are computed: eight lanes of a row at a time (SSE2 or AVX2, int32 lanes
+/// relative to the block, only for the edges that cross it) or one pixel at a time in the edges' own integer
+/// type. All give the same mask; tests hold them to it.
+enum class Lanes : std::uint8_t {
+  sse2,    ///< a row in two registers of four
+  avx2,    ///< a row in one register of eight (RenderPlan::simd)
+  scalar,  ///< one pixel at a time (test hook)
+};
+
+namespace coverage_detail {
+
+inline double to_double(std::int64_t v) {
+  return static_cast<double>(v);
+}
+inline double to_double(const Wide& v) {
+  return v.to_double();
+}
+
+inline std::int64_t floor_div(std::int64_t n, std::int64_t d) {
+  return n / d - ((n % d != 0) && (n < 0));
+}
+
+/// Mask bits of the columns [c0, c1) of every row (0 <= c0 <= c1 <= 8).
+inline std::uint64_t column_mask(int c0, int c1) {
+  const std::uint64_t row = ((1u << c1) - 1) & ~((1u << c0) - 1);
+  return row * 0x0101010101010101ull;
+}
+/// Mask bits of the rows [r0, r1).
+inline std::uint64_t row_mask(int r0, int r1) {
+  const std::uint64_t below = r1 >= 8 ? ~0ull : (1ull << (8 * r1)) - 1;
+  return below & ~((1ull << (8 * r0)) - 1);
+}
+
+/// Whether edge values `at_origin` (at the sample point of pixel (bx, by), the clip's block-grid origin)
+/// stay >= 0 over every pixel of `clip`: its nearest corner decides. Then the clip is accepted whole.
+template <typename T>
+bool clip_inside(const T (&at_origin)[3], const T (&step_x)[3], const T (&step_y)[3], Rect clip, int bx, int by) {
+  for (int k = 0; k < 3; ++k) {
+    const T first = at_origin[k] + step_x[k] * T(clip.x0 - bx) + step_y[k] * T(clip.y0 - by);
+    const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
+    if (first + std::min(w, T(0)) + std::min(h, T(0)) < T(0)) return false;
+  }
+  return true;
+}
+
+/// A block's mask one pixel at a time, in T: the reference the lanes are tested against.
+template <typename T>
+std::uint64_t partial_mask_scalar(const T (&e)[3], const T (&step_x)[3], const T (&step_y)[3], int r0 = 0,
+                                  int r1 = kBlock) {
+  std::uint64_t mask = 0;
+  T row[3] = {e[0], e[1], e[2]};
+  for (int k = 0; k < 3; ++k)
+    for (int r = 0; r < r0; ++r) row[k] += step_y[k];
+  for (int r = r0; r < r1; ++r) {
+    T v[3] = {row[0], row[1], row[2]};
+    for (int i = 0; i < kBlock; ++i) {
+      if (!(v[0] < T(0)) && !(v[1] < T(0)) && !(v[2] < T(0))) mask |= 1ull << (8 * r + i);
+      for (int k = 0; k < 3; ++k) v[k] += step_x[k];
+    }
+    for (int k = 0; k < 3; ++k) row[k] += step_y[k];
+  }
+  return mask;
+}
+
+/// One edge's mask over a block whose values e + i dx + r dy (i, r in 0..7) all fit in int32: eight lanes
+/// a row, the sign bits read four at a time. A set bit is a sample with E >= 0.
+inline std::uint64_t edge_mask_lanes(std::int32_t e, std::int32_t dx, std::int32_t dy, int r0, int r1) {
+#if defined(__SSE2__)
+  e += r0 * dy;
+  __m128i left = _mm_setr_epi32(e, e + dx, e + 2 * dx, e + 3 * dx);
+  __m128i right = _mm_add_epi32(left, _mm_set1_epi32(4 * dx));
+  const __m128i down = _mm_set1_epi32(dy);
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r) {
+    const unsigned negative = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(left))) |
+                              static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(right))) << 4;
+    mask |= static_cast<std::uint64_t>(~negative & 0xffu) << (8 * r);
+    left = _mm_add_epi32(left, down), right = _mm_add_epi32(right, down);
+  }
+  return mask;
+#else
+  using I8 = std::int32_t __attribute__((vector_size(32)));
+  const I8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
+  I8 row = e + r0 * dy + lane * dx;
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r, row += dy)
+    for (int i = 0; i < 8; ++i) mask |= static_cast<std::uint64_t>(row[i] >= 0) << (8 * r + i);
+  return mask;
+#endif
+}
+
+#if defined(__x86_64__)
+/// edge_mask_lanes with a row in one AVX2 register: the row's eight sign bits in one movemask.
+__attribute__((target("avx2"))) inline std::uint64_t edge_mask_avx2(std::int32_t e, std::int32_t dx,
+                                                                    std::int32_t dy, int r0, int r1) {
+  __m256i row =
+      _mm256_add_epi32(_mm256_set1_epi32(e + r0 * dy),
+                       _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(dx)));
+  const __m256i down = _mm256_set1_epi32(dy);
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r, row = _mm256_add_epi32(row, down)) {
+    const auto negative = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(row)));
+    mask |= static_cast<std::uint64_t>(~negative & 0xffu) << (8 * r);
+  }
+  return mask;
+}
+#endif
+
+/// A partial block's mask from its crossing edges (bit k of `crossing`), in int32 lanes where the values
+/// fit (an edge crossing a block has |e| <= 7 (|dx| + |dy|) there), else one pixel at a time in int64.
+inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::int64_t (&step_x)[3],
+                                        const std::int64_t (&step_y)[3], unsigned crossing, int r0, int r1,
+                                        Lanes lanes = Lanes::sse2) {
+  constexpr std::int64_t kLimit = std::int64_t{1} << 30;
+  std::uint64_t mask = ~0ull;
+  for (int k = 0; k < 3; ++k) {
+    if (!(crossing & (1u << k))) continue;
+    const std::int64_t reach = 8 * (std::abs(step_x[k]) + std::abs(step_y[k]));
+    if (std::abs(e[k]) + reach < kLimit) {
+      const auto e32 = static_cast<std::int32_t>(e[k]), dx = static_cast<std::int32_t>(step_x[k]),
+                 dy = static_cast<std::int32_t>(step_y[k]);
+#if defined(__x86_64__)
+      if (lanes == Lanes::avx2) {
+        mask &= edge_mask_avx2(e32, dx, dy, r0, r1);
+        continue;
+      }
+#endif
+      mask &= edge_mask_lanes(e32, dx, dy, r0, r1);
+    } else {
+      const std::int64_t one[3] = {e[k], 0, 0}, sx[3] = {step_x[k], 0, 0}, sy[3] = {step_y[k], 0, 0};
+      mask &= partial_mask_scalar(one, sx, sy, r0, r1);
+    }
+  }
+  return mask;
+}
+
+}  // namespace coverage_detail
+
+/// Area coverage: the share of a pixel's square inside a triangle, in (0, 1], for the pixels an edge cuts.
+/// Entry 8 r + i is pixel (x0 + i, y0 + r) of the block; only the entries of `partial`'s set bits are
+/// meaningful.
+struct AreaCover {
+  std::uint64_t partial = 0;  ///< pixels cut by an edge: some but not all of their square is inside
+  float share[64];            ///< covered share of those pixels' squares
+};
+
+namespace coverage_detail {
+
+/// The share of the unit square [0, 1]^2 where t + A (u - 1/2) + B (v - 1/2) >= 0, for a line that crosses
+/// it (|t| < (|A| + |B|) / 2). It depends only on t, p = max(|A|, |B|) and q = min(|A|, |B|): a trapezoid
+/// while the line crosses two opposite sides, a corner triangle (or its complement) beyond that.
+inline double half_plane_share(double t, double A, double B) {
+  const double p = std::max(std::fabs(A), std::fabs(B)), q = std::min(std::fabs(A), std::fabs(B));
+  const double band = (p - q) / 2;
+  if (std::fabs(t) <= band) return 0.5 + t / p;
+  const double r = (p + q) / 2 - std::fabs(t);  // distance (in E) from the far corner, in (0, q)
+  const double corner = r * r / (2 * p * q);
+  return t > 0 ? 1 - corner : corner;
+}
+
+/// The share of the unit square inside several half-planes t_k + A_k (u - 1/2) + B_k (v - 1/2) >= 0: the
+/// square clipped by each (Sutherland-Hodgman), then the shoelace area. Near a vertex, and in slivers.
+inline double clipped_share(int n, const double* t, const double* A, const double* B) {
+  double xs[2][8] = {{0, 1, 1, 0}}, ys[2][8] = {{0, 0, 1, 1}};
+  int count = 4, from = 0;
+  for (int k = 0; k < n && count > 0; ++k) {
+    const double* x = xs[from];
+    const double* y = ys[from];
+    double* ox = xs[1 - from];
+    double* oy = ys[1 - from];
+    double f[8];
+    for (int j = 0; j < count; ++j) f[j] = t[k] + A[k] * (x[j] - 0.5) + B[k] * (y[j] - 0.5);
+    int out = 0;
+    for (int j = 0; j < count; ++j) {
+      const int next = j + 1 == count ? 0 : j + 1;
+      if (f[j] >= 0) ox[out] = x[j], oy[out] = y[j], ++out;
+      if ((f[j] >= 0) != (f[next] >= 0)) {
+        const double s = f[j] / (f[j] - f[next]);
+        ox[out] = x[j] + s * (x[next] - x[j]), oy[out] = y[j] + s * (y[next] - y[j]), ++out;
+      }
+    }
+    count = out, from = 1 - from;
+  }
+  double twice = 0;
+  for (int j = 0; j < count; ++j) {
+    const int next = j + 1 == count ? 0 : j + 1;
+    twice += xs[from][j] * ys[from][next] - xs[from][next] * ys[from][j];
+  }
+  return std::fabs(twice) / 2;
+}
+
+/// The top-left bias folded into c (1 for edges that are neither top nor left, see setup.cpp): area
+/// coverage measures the triangle itself, so it adds the bias back.
+template <typename C>
+bool biased(const C& a, const C& b) {
+  return !(a > C(0) || (a == C(0) && b > C(0)));
+}
+
+/// A clip's blocks and how the edge values step over them: E_k at a point `at` of each pixel (1/256 px from
+/// its corner), exact in T.
+template <typename T>
+struct BlockGrid {
+  int bx0 = 0, by0 = 0;      ///< the clip's first block, image pixels (multiples of kBlock)
+  T origin[3];               ///< E_k at `at` of pixel (bx0, by0)
+  T step_x[3], step_y[3];    ///< E_k's change a pixel right, a pixel down
+  T block_x[3], block_y[3];  ///< ... a block right, a block down
+  T low[3], high[3];         ///< the least and the most E_k changes across a block's 8x8 pixels
+
+  BlockGrid(const Edges<T>& edges, Rect clip, SamplePoint at)
+      : bx0(clip.x0 - clip.x0 % kBlock), by0(clip.y0 - clip.y0 % kBlock) {  // clip >= 0
+    const T sx(std::int64_t{bx0} * kSubpixelScale + at.x), sy(std::int64_t{by0} * kSubpixelScale + at.y);
+    for (int k = 0; k < 3; ++k) {
+      step_x[k] = edges.a[k] * T(kSubpixelScale), step_y[k] = edges.b[k] * T(kSubpixelScale);
+      block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
+      origin[k] = edges.a[k] * sx + edges.b[k] * sy + edges.c[k];
+      const T ex = step_x[k] * T(kBlock - 1), ey = step_y[k] * T(kBlock - 1);
+      low[k] = std::min(ex, T(0)) + std::min(ey, T(0));
+      high[k] = std::max(ex, T(0)) + std::max(ey, T(0));
+    }
+  }
+};
+
+/// The pixels of rows [r0, r1) of a block where every E_k >= 0, from its values `e` at the block's first
+/// pixel: edges that stay >= 0 over the block are skipped, the others tested in lanes (or, `Lanes::scalar`
+/// and wide edges, one pixel at a time).
+template <typename T>
+std::uint64_t inside_mask(const T (&e)[3], const BlockGrid<T>& g, Lanes lanes, int r0, int r1) {
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    if (lanes != Lanes::scalar) {
+      unsigned crossing = 0;
+      // Not `crossing |= (cond ? 1u : 0u) << k`: GCC 12 with -fsanitize=bounds,shift miscompiles that
+      // form (a wrong index at -O0, a wrong mask at -O2), which made make test-asan fail.
+      for (int k = 0; k < 3; ++k)
+        if (e[k] + g.low[k] < T(0)) crossing |= 1u << k;
+      return partial_mask_lanes(e, g.step_x, g.step_y, crossing, r0, r1, lanes);
+    }
+  }
+  return partial_mask_scalar(e, g.step_x, g.step_y, r0, r1);
+}
+
+/// The one block walker. `g.origin` holds the values shading reads (E_k at the shading point); a block is
+/// accepted whole when every E_k + accept[k] stays >= 0 over it, and skipped when some E_k + reject[k] stays
+/// < 0 over it (accept <= reject: the policies' offsets for sample positions or pixel squares). Accepted
+/// blocks side by side go to shade.rect(run, first block) as one rectangle, and a clip accepted whole goes
+/// there at once; each other block to partial(block, e, clipped, r0, r1), with the block's values as doubles
+/// and `e` exact. Rectangles need exact doubles, so only int64 edges make them; wide edges' accepted blocks
+/// go one by one to shade(block). Returns early once `meter` says the render must stop (a block is kBlock^2
+/// units of work).
+template <typename T, typename Shade, typename Partial>
+void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&accept)[3], const T (&reject)[3],
+                 StopMeter& meter, Shade& shade, Partial&& partial) {
+  constexpr bool kExact = std::is_same_v<T, std::int64_t>;
+  T accept_low[3], reject_high[3], row_start[3];
+  Block block;
+  block.area = to_double(area);
+  for (int k = 0; k < 3; ++k) {
+    accept_low[k] = accept[k] + g.low[k], reject_high[k] = reject[k] + g.high[k];
+    row_start[k] = g.origin[k];
+    block.dx[k] = to_double(g.step_x[k]), block.dy[k] = to_double(g.step_y[k]);
+  }
+  if constexpr (kExact) {
+    const T lowest[3] = {g.origin[0] + accept[0], g.origin[1] + accept[1], g.origin[2] + accept[2]};
+    if (clip_inside(lowest, g.step_x, g.step_y, clip, g.bx0, g.by0)) {
+      block.x0 = g.bx0, block.y0 = g.by0, block.mask = ~0ull;
+      for (int k = 0; k < 3; ++k) block.e[k] = to_double(g.origin[k]);
+      shade.rect(clip, block);
+      meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
+      return;
+    }
+  }
+  Block run;  // accepted blocks of this block row not yet shaded: from run.x0, `run_blocks` of them
+  int run_blocks = 0;
+  for (int y0 = g.by0; y0 < clip.y1; y0 += kBlock) {
+    const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);  // rows inside the clip
+    const std::uint64_t rows = row_mask(r0, r1);
+    auto flush = [&] {
+      const Rect rect{std::max(clip.x0, run.x0), y0 + r0, std::min(clip.x1, run.x0 + run_blocks * kBlock),
+                      y0 + r1};
+      shade.rect(rect, run);
+      run_blocks = 0;
+    };
+    T e[3] = {row_start[0], row_start[1], row_start[2]};
+    for (int x0 = g.bx0; x0 < clip.x1; x0 += kBlock) {
+      bool skip = false, whole = true;
+      for (int k = 0; k < 3; ++k) {
+        skip = skip || e[k] + reject_high[k] < T(0);
+        whole = whole && !(e[k] + accept_low[k] < T(0));
+      }
+      if (kExact && whole) {
+        if (run_blocks++ == 0) {
+          run.x0 = x0, run.y0 = y0, run.mask = ~0ull;
+          for (int k = 0; k < 3; ++k) run.e[k] = to_double(e[k]);
+          run.area = block.area;
+          for (int k = 0; k < 3; ++k) run.dx[k] = block.dx[k], run.dy[k] = block.dy[k];
+        }
+        if (meter.add(kBlock * kBlock)) return;
+      } else {
+        if (run_blocks) flush();
+        if (!skip) {
+          const std::uint64_t clipped =
+              rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+          block.x0 = x0, block.y0 = y0;
+          for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k]);
+          if (whole) {
+            block.mask = clipped;
+            shade(block);
+          } else {
+            partial(block, e, clipped, r0, r1);
+          }
+          if (meter.add(kBlock * kBlock)) return;
+        }
+      }
+      for (int k = 0; k < 3; ++k) e[k] += g.block_x[k];
+    }
+    if (run_blocks) flush();
+    for (int k = 0; k < 3; ++k) row_start[k] += g.block_y[k];
+  }
+}
+
+}  // namespace coverage_detail
+
+/// Aliased coverage of `edges` over the pixels of `clip` (inside one tile, the record's box already
+/// intersected): a pixel is covered when every E_k >= 0 at its `sample` point. Calls shade(block) for each
+/// block with a covered pixel (the mask), shade.rect for rectangles wholly inside (see walk_blocks).
+template <typename T, typename Shade>
+void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter,
+           Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const BlockGrid<T> g(edges, clip, sample);
+  const T zero[3] = {T(0), T(0), T(0)};
+  walk_blocks(g, edges.area, clip, zero, zero, meter, shade,
+              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+                block.mask = clipped & inside_mask(e, g, lanes, r0, r1);
+                if (block.mask) shade(block);
+              });
+}
+
+/// Area coverage of `edges` over the pixels of `clip`: the same blocks as cover(), tested against the
+/// pixel squares instead of one sample point. Edge k's value at a pixel centre is t_k and it changes by
+/// h_k = 128 (|a_k| + |b_k|) toward the square's farthest corner, so a pixel lies wholly inside when
+/// t_k - h_k >= 0 for every k and touches the triangle's interior only when t_k + h_k > 0 for every k:
+/// the walker's accept and reject offsets, and two masks from the same lanes as the aliased one. Whole
+/// pixels go to shade(block) exactly as aliased coverage would send them (and rectangles to shade.rect);
+/// cut pixels to shade.area(block, cover) with their exact share: one edge by a closed form, several by
+/// clipping the square. The values shading reads are the aliased ones (top-left bias included).
+template <typename T, typename Shade>
+void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const BlockGrid<T> g(edges, clip, SamplePoint{});
+  T inner[3], outer[3];  // offsets from the biased centre value: wholly inside, touching the interior
+  double bias[3];
+  for (int k = 0; k < 3; ++k) {
+    const T a(edges.a[k]), b(edges.b[k]);
+    const T bias_k = biased(a, b) ? T(1) : T(0);  // the top-left rule's 1, given back: area is the triangle's
+    const T h = ((a < T(0) ? -a : a) + (b < T(0) ? -b : b)) * T(kSubpixelScale / 2);
+    inner[k] = bias_k - h;
+    outer[k] = bias_k + h - T(1);  // >= 0 exactly when centre + h > 0
+    bias[k] = biased(edges.a[k], edges.b[k]) ? 1 : 0;
+  }
+  AreaCover cut;
+  walk_blocks(g, edges.area, clip, inner, outer, meter, shade,
+              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+                const T in[3] = {e[0] + inner[0], e[1] + inner[1], e[2] + inner[2]};
+                const T out[3] = {e[0] + outer[0], e[1] + outer[1], e[2] + outer[2]};
+                const std::uint64_t whole = clipped & inside_mask(in, g, lanes, r0, r1);
+                const std::uint64_t touched = clipped & inside_mask(out, g, lanes, r0, r1);
+                if (whole) {
+                  block.mask = whole;
+                  shade(block);
+                }
+                cut.partial = 0;
+                for (std::uint64_t m = touched & ~whole; m; m &= m - 1) {
+                  const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+                  double t[3], A[3], B[3];
+                  int n = 0;
+                  for (int k = 0; k < 3; ++k) {
+                    const double value = block.e[k] + bias[k] + i * block.dx[k] + r * block.dy[k];
+                    if (value >= 0.5 * (std::fabs(block.dx[k]) + std::fabs(block.dy[k]))) continue;  // inside
+                    t[n] = value, A[n] = block.dx[k], B[n] = block.dy[k], ++n;
+                  }
+                  const double share =
+                      n == 1 ? half_plane_share(t[0], A[0], B[0]) : clipped_share(n, t, A, B);
+                  if (!(share > 0)) continue;  // touches only where two edges meet outside the square
+                  cut.share[bit] = static_cast<float>(std::min(share, 1.0));
+                  cut.partial |= std::uint64_t{1} << bit;
+                }
+                if (cut.partial) {
+                  block.mask = cut.partial;
+                  shade.area(block, cut);
+                }
+              });
+}
+
+/// Multisampled coverage of `edges` over the pixels of `clip`: per block, a mask for each of the `count`
+/// sample positions of `pattern`. Blocks whose every sample is inside go to shade(block) (all samples
+/// covered) and rectangles to shade.rect; others to shade.samples(block, masks), block.mask being the pixels
+/// with any sample covered. The values in a Block are at the pixel centres (where shading is evaluated),
+/// whatever the pattern.
+template <typename T, typename Shade>
+void cover_samples(const Edges<T>& edges, Rect clip, const SamplePoint* pattern, int count, Lanes lanes,
+                   StopMeter& meter, Shade&& shade) {
+  using namespace coverage_detail;
+  if (clip.empty()) return;
+  const BlockGrid<T> g(edges, clip, SamplePoint{});
+  T offset[16][3], least[3], most[3];  // E's change from the pixel centre to each sample, and its extremes
+  for (int k = 0; k < 3; ++k) {
+    const T a(edges.a[k]), b(edges.b[k]);
+    for (int s = 0; s < count; ++s) {
+      offset[s][k] = a * T(pattern[s].x - kSubpixelScale / 2) + b * T(pattern[s].y - kSubpixelScale / 2);
+      least[k] = s == 0 ? offset[s][k] : std::min(least[k], offset[s][k]);
+      most[k] = s == 0 ? offset[s][k] : std::max(most[k], offset[s][k]);
+    }
+  }
+  std::uint64_t masks[16];
+  walk_blocks(g, edges.area, clip, least, most, meter, shade,
+              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+                std::uint64_t any = 0;
+                for (int s = 0; s < count; ++s) {
+                  const T es[3] = {e[0] + offset[s][0], e[1] + offset[s][1], e[2] + offset[s][2]};
+                  masks[s] = clipped & inside_mask(es, g, lanes, r0, r1);
+                  any |= masks[s];
+                }
+                if (any) {
+                  block.mask = any;
+                  shade.samples(block, masks);
+                }
+              });
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,96 @@
+#include "geometry/geometry.h"
+
+#include <array>
+#include <cmath>
+
+namespace raster::detail {
+namespace {
+
+SetupVertex vertex_2d(const Point2& p, Rgba8 c) {
+  SetupVertex v;
+  v.x = snap(p.x), v.y = snap(p.y);
+  v.color[0] = c.r, v.color[1] = c.g, v.color[2] = c.b, v.color[3] = c.a;
+  return v;
+}
+
+void add_triangle(const Scene& scene, const Primitive& prim, std::uint32_t call, Setup& setup) {
+  const Point2* pts = &scene.points[prim.first_point];
+  const SetupVertex v[3] = {vertex_2d(pts[0], scene.vertex_color(prim, 0)),
+                            vertex_2d(pts[1], scene.vertex_color(prim, 1)),
+                            vertex_2d(pts[2], scene.vertex_color(prim, 2))};
+  setup.add_triangle(call, v);
+}
+
+void add_segment(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j, bool draw_first,
+                 bool draw_last, std::uint32_t call, Setup& setup) {
+  const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
+  LineRecord line;
+  line.x0 = std::floor(a.x), line.y0 = std::floor(a.y), line.x1 = std::floor(b.x), line.y1 = std::floor(b.y);
+  line.c0 = scene.vertex_color(prim, i), line.c1 = scene.vertex_color(prim, j);
+  line.draw_first = draw_first, line.draw_last = draw_last;
+  line.call = call;
+  setup.add_line(line);
+}
+
+// A segment as the rectangle of its width around it (butt caps), two triangles with the endpoints'
+// colours: how lines are drawn when anti-aliased or wider than one pixel.
+void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j,
+                           std::uint32_t call, Setup& setup) {
+  const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
+  const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+  if (!(len > 0) || !std::isfinite(len)) return;  // a point, or a segment too long to have a direction
+  const double half = prim.width * 0.5, nx = -dy / len * half, ny = dx / len * half;
+  const Point2 q[4] = {
+      {a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
+  const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
+  const Rgba8 c[4] = {ca, cb, cb, ca};
+  for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+    const SetupVertex v[3] = {vertex_2d(q[t[0]], c[t[0]]), vertex_2d(q[t[1]], c[t[1]]), vertex_2d(q[t[2]], c[t[2]])};
+    setup.add_triangle(call, v);
+  }
+}
+
+// A polyline draws each joint pixel once (no double blending where segments meet); wide or anti-aliased
+// ones are rectangles per segment. Triangle outlines are closed polylines.
+void add_polyline(const Scene& scene, const Primitive& prim, bool closed, const PrimitivePlan& mode,
+                  std::uint32_t call, Setup& setup) {
+  const std::uint32_t n = prim.point_count;
+  if (mode.line_rectangles) {
+    for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment_rectangle(scene, prim, i, i + 1, call, setup);
+    if (closed && n >= 3) add_segment_rectangle(scene, prim, n - 1, 0, call, setup);
+    return;
+  }
+  closed = closed && n >= 3;  // closing a 2-point polyline would draw its one segment twice
+  for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment(scene, prim, i, i + 1, i == 0, true, call, setup);
+  if (closed) add_segment(scene, prim, n - 1, 0, false, false, call, setup);
+}
+
+}  // namespace
+
+Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) {
+  Setup setup;
+  setup.width = plan.width, setup.height = plan.height;
+  setup.centre_samples = plan.coverage == Coverage::centre;
+  Records& first = setup.last_part();  // a record per 2D primitive, about: sized once
+  first.order.reserve(plan.draws.size()), first.triangles.reserve(plan.draws.size());
+  for (const DrawPlan& draw : plan.draws) {
+    if (meter.add(StopMeter::kPrimitiveWork)) break;
+    const Primitive& prim = scene.primitives[draw.primitive];
+    if (prim.kind == PrimitiveKind::mesh) {
+      add_mesh(scene.meshes[prim.mesh], draw, plan, setup, meter);
+      continue;
+    }
+    // Consecutive primitives drawn the same way share one call; a union-coverage primitive has its own,
+    // which is how the tiles know where its accumulation ends.
+    if (setup.calls.empty() || !(setup.calls.back().mode == draw.mode) || draw.mode.union_coverage)
+      setup.add_call(make_call(draw.mode));
+    const auto call = static_cast<std::uint32_t>(setup.calls.size() - 1);
+    if (prim.kind == PrimitiveKind::triangle && prim.fill)
+      add_triangle(scene, prim, call, setup);
+    else
+      add_polyline(scene, prim, prim.kind == PrimitiveKind::triangle || prim.closed, draw.mode, call, setup);
+  }
+  return setup;
+}
+
+}  // namespace raster::detail

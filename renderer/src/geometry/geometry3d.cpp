@@ -1,0 +1,548 @@
+// Geometry for 3D content: model -> world -> clip space, lighting of flat faces, homogeneous clipping,
+// perspective divide, viewport and snapping. Produces the same triangle records the 2D path does.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <tuple>
+
+#include "geometry/geometry.h"
+#include "base/memory.h"
+#include "geometry/normals.h"
+#include "base/parallel.h"
+#include "shade/pixel.h"
+#include "base/vecmath.h"
+
+namespace raster::detail {
+namespace {
+
+/// The one vertex record of the 3D path: clip-space position plus every attribute, so clipping
+/// interpolates them all with one routine.
+struct ClipVertex {
+  double x = 0, y = 0, z = 0, w = 0;  ///< clip space (see ViewPlan)
+  float attr[12] = {};  ///< r, g, b, a (0..255), normal x, y, z (world), u, v, position x, y, z (world)
+};
+constexpr int kAttributes = 12;
+
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
+  ClipVertex r;
+  r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t,
+  r.w = a.w + (b.w - a.w) * t;
+  for (int k = 0; k < kAttributes; ++k) r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
+  return r;
+}
+
+/// Six planes, each a linear function of (x, y, z, w) that is >= 0 inside: near (z <= w), far (z >= 0) and
+/// the guard band |x|, |y| <= g w, which keeps snapped coordinates within +-(image + 8192 px).
+struct Planes {
+  double gx = 1, gy = 1;
+  double distance(const ClipVertex& v, int plane) const {
+    switch (plane) {
+      case 0:
+        return v.w - v.z;
+      case 1:
+        return v.z;
+      case 2:
+        return gx * v.w + v.x;
+      case 3:
+        return gx * v.w - v.x;
+      case 4:
+        return gy * v.w + v.y;
+      default:
+        return gy * v.w - v.y;
+    }
+  }
+};
+constexpr int kPlaneCount = 6;
+constexpr double kGuardPx = 8192;
+
+// The crossing of segment a-b with a plane, computed from the endpoints in a canonical order so that two
+// triangles sharing the edge get bit-identical vertices and the edge stays watertight.
+ClipVertex intersect(const ClipVertex& a, const ClipVertex& b, int plane, const Planes& planes) {
+  const bool swap = std::tie(b.x, b.y, b.z, b.w) < std::tie(a.x, a.y, a.z, a.w);
+  const ClipVertex& p = swap ? b : a;
+  const ClipVertex& q = swap ? a : b;
+  const double dp = planes.distance(p, plane), dq = planes.distance(q, plane);
+  return lerp(p, q, dp / (dp - dq));
+}
+
+// Sutherland-Hodgman in homogeneous space; returns the vertex count of the clipped polygon (0 if gone).
+int clip_polygon(std::array<ClipVertex, 9>& poly, int n, const Planes& planes) {
+  std::array<ClipVertex, 9> out;
+  for (int plane = 0; plane < kPlaneCount && n >= 3; ++plane) {
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      const ClipVertex& a = poly[i];
+      const ClipVertex& b = poly[(i + 1) % n];
+      const bool a_in = planes.distance(a, plane) >= 0, b_in = planes.distance(b, plane) >= 0;
+      if (a_in) out[m++] = a;
+      if (a_in != b_in) out[m++] = intersect(a, b, plane, planes);
+    }
+    poly = out;
+    n = m;
+  }
+  return n >= 3 ? n : 0;
+}
+
+// The same for a segment (parametric): false when nothing is left.
+bool clip_segment(ClipVertex& a, ClipVertex& b, const Planes& planes) {
+  for (int plane = 0; plane < kPlaneCount; ++plane) {
+    const double da = planes.distance(a, plane), db = planes.distance(b, plane);
+    if (da < 0 && db < 0) return false;
+    if (da < 0)
+      a = intersect(a, b, plane, planes);
+    else if (db < 0)
+      b = intersect(a, b, plane, planes);
+  }
+  return true;
+}
+
+struct Viewport {
+  double width, height;
+  // Perspective divide and viewport: NDC x right, y up -> pixels x right, y down.
+  void project(const ClipVertex& v, double& sx, double& sy, double& depth, double& inv_w) const {
+    inv_w = 1.0 / v.w;  // clipping guarantees w > 0
+    sx = (v.x * inv_w + 1) * 0.5 * width;
+    sy = (1 - v.y * inv_w) * 0.5 * height;
+    depth = std::clamp(v.z * inv_w, 0.0, 1.0);
+  }
+};
+
+// Clipping keeps every vertex inside the guard band in exact arithmetic. In doubles, coordinates near 1e30
+// cancel catastrophically and a clipped vertex can land anywhere, even at w = 0 (found by the fuzzer: a
+// NaN reached an integer conversion). Such a vertex has no trustworthy position: its primitive is dropped.
+bool in_guard_band(double sx, double sy, double inv_w) {
+  return std::isfinite(inv_w) && inv_w > 0 && std::fabs(sx) <= kFastRangePx && std::fabs(sy) <= kFastRangePx;
+}
+
+Rgba8 to_rgba8(const float* c) {
+  return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
+}
+
+/// A vertex inside every clip plane, projected: what its triangles' records are made of.
+struct ScreenVertex {
+  std::int32_t x, y;  ///< snapped, 1/256 px, origin top-left, y down (inside the guard band: |x| < 2^23)
+  float depth;        ///< z / w in [0, 1], reversed
+  float inv_w;        ///< 1 / w
+};
+
+/// Meshes with at least twice this many vertices (triangles) have them transformed (set up, and their
+/// normals computed) on every render thread: vertices in pieces of this size, triangles in four pieces a
+/// thread of at least this size. Smaller ones stay on the calling thread.
+constexpr std::size_t kPiece = 16384;
+
+/// A mesh through the camera: every vertex once (which clip planes it is outside of, its world position,
+/// and inside all of them its projected, snapped screen position, so a triangle that needs no clipping
+/// costs no projection), and what the triangles and lines share.
+struct MeshView {
+  const Mesh& mesh;
+  const RenderPlan& plan;
+  Planes planes;
+  Viewport viewport;
+  Mat4 model_to_clip;
+  // Per vertex, each written once before it is read:
+  PodArray<std::uint8_t>
+      outside;  ///< bit p: outside plane p; 0x40: inside but not projectable; 0x80: not finite
+  PodArray<ScreenVertex> screen;  ///< valid where outside == 0
+  PodArray<Vec3> world;           ///< world positions
+
+  MeshView(const Mesh& m, const RenderPlan& p)
+      : mesh(m),
+        plan(p),
+        planes{1 + 2 * kGuardPx / p.width, 1 + 2 * kGuardPx / p.height},
+        viewport{static_cast<double>(p.width), static_cast<double>(p.height)},
+        model_to_clip(p.view.world_to_clip * m.transform) {
+    outside.resize_uninitialized(m.positions.size()), screen.resize_uninitialized(m.positions.size()),
+        world.resize_uninitialized(m.positions.size());
+  }
+
+  /// Every vertex, in pieces on the render's threads (each writes its own vertices). False when stopped.
+  bool project(StopMeter& meter) {
+    const std::size_t nv = mesh.positions.size();
+    const std::size_t pieces = (nv + kPiece - 1) / kPiece;
+    parallel_for(nv >= 2 * kPiece ? plan.threads : 1, pieces, meter.stop(),
+                 [&](std::size_t piece, StopMeter& own, int) {
+                   const std::size_t end = std::min(nv, (piece + 1) * kPiece);
+                   for (std::size_t i = piece * kPiece; i < end; ++i) {
+                     if (own.add(StopMeter::kRowWork)) return;  // a model can have millions of vertices
+                     project_vertex(i);
+                   }
+                 });
+    return !meter.check();
+  }
+
+  void project_vertex(std::size_t i) {
+    world[i] = transform_point(mesh.transform, mesh.positions[i]);
+    const Vec4 c = transform(model_to_clip, mesh.positions[i]);
+    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+      outside[i] = 0x80;
+      return;
+    }
+    const ClipVertex v{c.x, c.y, c.z, c.w, {}};
+    std::uint8_t bits = 0;
+    for (int plane = 0; plane < kPlaneCount; ++plane)
+      bits |= (planes.distance(v, plane) < 0 ? 1 : 0) << plane;
+    outside[i] = bits;
+    if (bits) return;
+    double sx, sy, depth, inv_w;
+    viewport.project(v, sx, sy, depth, inv_w);
+    if (!in_guard_band(sx, sy, inv_w)) {
+      outside[i] = 0x40;  // inside every plane yet not projectable: dropped like a clipped one would be
+      return;
+    }
+    screen[i] = {static_cast<std::int32_t>(snap(sx)), static_cast<std::int32_t>(snap(sy)),
+                 static_cast<float>(depth), static_cast<float>(inv_w)};
+  }
+
+  Rgba8 vertex_color(std::uint32_t vertex) const {
+    return mesh.colors.size() == 1 ? mesh.colors[0] : mesh.colors[vertex];
+  }
+  Rgba8 color_at(std::size_t triangle, std::uint32_t vertex) const {
+    return mesh.face_colors.empty() ? vertex_color(vertex) : mesh.face_colors[triangle];
+  }
+  /// The vertex in clip space (computed again: only clipped primitives need it).
+  ClipVertex clip_vertex(std::uint32_t i, Rgba8 c) const {
+    const Vec4 p = transform(model_to_clip, mesh.positions[i]);
+    ClipVertex v{p.x, p.y, p.z, p.w, {}};
+    v.attr[0] = c.r, v.attr[1] = c.g, v.attr[2] = c.b, v.attr[3] = c.a;
+    return v;
+  }
+};
+
+// A triangle that crosses a clip plane: clipped in homogeneous space, projected, fanned into records.
+void add_clipped(const MeshView& view, std::array<ClipVertex, 9>& poly, std::uint32_t call, bool back,
+                 const Setup& setup, Records& part) {
+  SetupVertex dv[9];
+  const int n = clip_polygon(poly, 3, view.planes);
+  for (int k = 0; k < n; ++k) {
+    double sx, sy, depth, inv_w;
+    view.viewport.project(poly[k], sx, sy, depth, inv_w);
+    if (!in_guard_band(sx, sy, inv_w)) return;
+    dv[k].x = snap(sx), dv[k].y = snap(sy);
+    dv[k].depth = static_cast<float>(depth);
+    dv[k].inv_w = static_cast<float>(inv_w);
+    std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
+    std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
+    std::copy(poly[k].attr + 7, poly[k].attr + 9, dv[k].uv);
+    std::copy(poly[k].attr + 9, poly[k].attr + 12, dv[k].position);
+  }
+  for (int k = 1; k + 1 < n; ++k) setup.add_triangle(part, call, {dv[0], dv[k], dv[k + 1]}, back);
+}
+
+/// What the triangles of one mesh share while they are set up, piece by piece.
+struct TriangleJob {
+  const MeshView& view;
+  const PrimitivePlan& mode;
+  const Setup& setup;
+  std::uint32_t call;                        ///< faces without a texture (or untextured meshes)
+  std::vector<std::uint32_t> texture_calls;  ///< textured: the call of each of the mesh's textures
+  PodArray<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
+  Vec3 forward;            ///< unit view direction
+
+  // Triangles [begin, end) into `part`, in order.
+  void run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const;
+};
+
+void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const {
+  const Mesh& mesh = view.mesh;
+  const ViewPlan& camera = view.plan.view;
+  const PodArray<Vec3>& world = view.world;
+  const bool light_per_pixel = mode.light_per_pixel;
+  const std::size_t floats = static_cast<std::size_t>(setup.calls[call].layout.size);
+  part.triangles.reserve_more(end - begin), part.order.reserve_more(end - begin);
+  part.attributes.reserve_more((end - begin) * floats);
+  for (std::size_t t = begin; t < end; ++t) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return;  // deadline: a mesh can be millions of triangles
+    const auto& tri = mesh.triangles[t];
+    // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
+    // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
+    const std::uint8_t any_out = view.outside[tri[0]] | view.outside[tri[1]] | view.outside[tri[2]];
+    if (any_out & 0xc0) continue;
+    if (view.outside[tri[0]] & view.outside[tri[1]] & view.outside[tri[2]]) continue;  // beyond one plane
+    // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
+    // front when the counter-clockwise normal points toward the eye.
+    const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
+    const Vec3 toward_eye =
+        camera.projection == Projection::perspective ? camera.eye - world[tri[0]] : forward * -1.0;
+    const bool back = dot(face, toward_eye) < 0;
+    if (back && mesh.cull == Cull::back) continue;
+
+    // Inside every plane, the record first: most of a dense mesh's triangles cover no pixel centre and are
+    // dropped before any attribute is looked at.
+    TriangleRecord record;
+    int order[3] = {0, 1, 2};
+    if (any_out == 0) {
+      FastTriangle fast;
+      for (int k = 0; k < 3; ++k) fast.x[k] = view.screen[tri[k]].x, fast.y[k] = view.screen[tri[k]].y;
+      if (!setup.fast_record(fast, record, order)) continue;
+    }
+
+    float shade[3] = {1, 1, 1};
+    if (mode.lit && !light_per_pixel) {  // flat: once per face, lit from the side seen, at its centroid
+      const Vec3 n = normalize(back ? face * -1.0 : face);
+      const Vec3 c = (world[tri[0]] + world[tri[1]] + world[tri[2]]) * (1.0 / 3);
+      double lit[3];
+      light_at(camera.lights, {n.x, n.y, n.z}, {c.x, c.y, c.z}, lit);
+      for (int k = 0; k < 3; ++k) shade[k] = static_cast<float>(lit[k]);
+    }
+    // The vertices' colours (lit per face) and normals, onto the projected vertices or the clip polygon.
+    SetupVertex dv[3];
+    std::uint32_t triangle_call = call;
+    if (mode.textured) {
+      const std::int32_t texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
+      if (texture >= 0) triangle_call = texture_calls[static_cast<std::size_t>(texture)];
+      for (int k = 0; k < 3; ++k) {
+        const auto& uv = mesh.uvs[mesh.uv_triangles[t][k]];
+        dv[k].uv[0] = uv[0], dv[k].uv[1] = uv[1];
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      const Rgba8 c = view.color_at(t, tri[k]);
+      dv[k].color[0] = c.r * shade[0], dv[k].color[1] = c.g * shade[1], dv[k].color[2] = c.b * shade[2];
+      dv[k].color[3] = c.a;
+      if (light_per_pixel) {
+        const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
+        dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
+        dv[k].normal[2] = static_cast<float>(n.z);
+      }
+      if (mode.position_per_pixel) {
+        const Vec3& p = world[tri[k]];
+        dv[k].position[0] = static_cast<float>(p.x), dv[k].position[1] = static_cast<float>(p.y),
+        dv[k].position[2] = static_cast<float>(p.z);
+      }
+    }
+    if (any_out == 0) {  // inside every plane: the vertices were projected once
+      for (int k = 0; k < 3; ++k)
+        dv[k].depth = view.screen[tri[k]].depth, dv[k].inv_w = view.screen[tri[k]].inv_w;
+      setup.append(part, record, triangle_call, {&dv[order[0]], &dv[order[1]], &dv[order[2]]}, back);
+      continue;
+    }
+    std::array<ClipVertex, 9> poly;
+    for (int k = 0; k < 3; ++k) {
+      poly[k] = view.clip_vertex(tri[k], {});
+      std::copy(dv[k].color, dv[k].color + 4, poly[k].attr);
+      std::copy(dv[k].normal, dv[k].normal + 3, poly[k].attr + 4);
+      std::copy(dv[k].uv, dv[k].uv + 2, poly[k].attr + 7);
+      std::copy(dv[k].position, dv[k].position + 3, poly[k].attr + 9);
+    }
+    add_clipped(view, poly, triangle_call, back, setup, part);
+  }
+}
+
+// The mesh's triangles into records: in pieces of kPiece triangles on every render thread, each piece
+// into a part of its own (parts in triangle order, so the image is that of one thread).
+void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  const ViewPlan& camera = view.plan.view;
+  TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye)};
+  if (mode.light_per_pixel) {
+    const Mat4 to_world_normal = normal_matrix(mesh.transform);
+    if (mode.compute_normals)
+      job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
+                                   mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1, meter);
+    else
+      for (const Vec3& n : mesh.normals)
+        job.normals.push_back(normalize(transform_point(to_world_normal, n)));
+    if (meter.stopped()) return;
+  }
+  DrawCall call = make_call(mode);
+  call.lights = camera.lights;
+  job.call = setup.add_call(call);
+  // Textured: one call per texture, the same mode; faces without a texture keep `job.call` (no texture).
+  if (mode.textured)
+    for (const Texture& texture : mesh.textures) {
+      call.texture = &setup.textures.emplace_back(build_mips(texture, &meter));
+      if (meter.stopped()) return;
+      job.texture_calls.push_back(setup.add_call(call));
+    }
+  const std::size_t count = mesh.triangles.size();
+  // Four pieces a thread (some pieces clip, some lie off-screen: threads that finish early take more), of
+  // at least kPiece triangles; the parts do not change the image, only who made it.
+  const int threads = count >= 2 * kPiece ? view.plan.threads : 1;
+  const std::size_t size = threads > 1 ? std::max(kPiece, (count + 4 * threads - 1) / (4 * threads)) : count;
+  const std::size_t pieces = count ? (count + size - 1) / size : 0;
+  if (pieces <= 1) {  // one piece: into the current part, as 2D records are (no part per small mesh)
+    job.run(0, count, setup.last_part(), meter);
+    return;
+  }
+  const std::size_t first = setup.parts.size();
+  setup.parts.resize(first + pieces);
+  parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
+    // Filled on the thread's stack and moved in at the end: parts lie side by side in memory, and two threads
+    // growing neighbouring ones would share the cache line of their sizes.
+    Records part;
+    job.run(piece * size, std::min(count, (piece + 1) * size), part, own);
+    setup.parts[first + piece] = std::move(part);
+  });
+  meter.check();
+  setup.parts.emplace_back();  // what follows the mesh goes after all of its pieces
+}
+
+// A projected segment as the rectangle `width` pixels wide around it (butt caps), two triangles whose depth
+// and 1/w are the endpoints' across the width: how multisampling draws 3D lines, and how wide edges are drawn.
+void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, double ay, double ad, double aw,
+                        double bx, double by, double bd, double bw, double width, std::uint32_t call,
+                        Setup& setup) {
+  const double dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
+  if (!(len > 0)) return;
+  const double nx = -dy / len * 0.5 * width, ny = dx / len * 0.5 * width;
+  SetupVertex q[4];
+  const double px[4] = {ax + nx, bx + nx, bx - nx, ax - nx}, py[4] = {ay + ny, by + ny, by - ny, ay - ny};
+  for (int k = 0; k < 4; ++k) {
+    const bool at_a = k == 0 || k == 3;
+    q[k].x = snap(px[k]), q[k].y = snap(py[k]);
+    std::copy((at_a ? a : b).attr, (at_a ? a : b).attr + 4, q[k].color);
+    q[k].depth = static_cast<float>(at_a ? ad : bd), q[k].inv_w = static_cast<float>(at_a ? aw : bw);
+  }
+  setup.add_triangle(call, {q[0], q[1], q[2]});
+  setup.add_triangle(call, {q[0], q[2], q[3]});
+}
+
+// One 3D segment through clipping and projection: a line record, or with `mode.line_rectangles` the
+// rectangle `width` pixels wide around it.
+void add_segment(const MeshView& view, ClipVertex a, ClipVertex b, const PrimitivePlan& mode, std::uint32_t call,
+                 double width, Setup& setup) {
+  if (!clip_segment(a, b, view.planes)) return;
+  double ax, ay, ad, aw, bx, by, bd, bw;
+  view.viewport.project(a, ax, ay, ad, aw);
+  view.viewport.project(b, bx, by, bd, bw);
+  if (!in_guard_band(ax, ay, aw) || !in_guard_band(bx, by, bw)) return;
+  if (mode.line_rectangles) {
+    add_line_rectangle(a, b, ax, ay, ad, aw, bx, by, bd, bw, width, call, setup);
+    return;
+  }
+  LineRecord line;
+  line.x0 = std::floor(ax), line.y0 = std::floor(ay), line.x1 = std::floor(bx), line.y1 = std::floor(by);
+  line.c0 = to_rgba8(a.attr), line.c1 = to_rgba8(b.attr);
+  line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
+  line.call = call;
+  setup.add_line(line);
+}
+
+// Lines: the mesh's own segments, and for wireframes every triangle edge once.
+void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  std::vector<std::array<std::uint32_t, 2>> segments = mesh.segments;
+  std::vector<std::array<Rgba8, 2>> segment_colors;
+  for (const auto& s : mesh.segments) segment_colors.push_back({view.vertex_color(s[0]), view.vertex_color(s[1])});
+  if (mesh.wireframe) {
+    std::vector<std::tuple<std::uint32_t, std::uint32_t, std::size_t>> edges;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      if (meter.add(StopMeter::kPrimitiveWork)) return;
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+        edges.emplace_back(std::min(a, b), std::max(a, b), t);
+      }
+    }
+    std::sort(edges.begin(), edges.end());  // not interruptible: n log n of the model's edges
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const auto [a, b, t] = edges[i];
+      if (i > 0 && std::get<0>(edges[i - 1]) == a && std::get<1>(edges[i - 1]) == b) continue;
+      segments.push_back({a, b});
+      segment_colors.push_back({view.color_at(t, a), view.color_at(t, b)});
+    }
+  }
+  if (segments.empty()) return;
+  const std::uint32_t line_call = setup.add_call(make_call(line_mode));
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (meter.add(StopMeter::kPrimitiveWork)) break;
+    if ((view.outside[segments[s][0]] | view.outside[segments[s][1]]) & 0x80) continue;
+    add_segment(view, view.clip_vertex(segments[s][0], segment_colors[s][0]),
+                view.clip_vertex(segments[s][1], segment_colors[s][1]), line_mode, line_call, 1, setup);
+  }
+}
+
+// Feature edges (scene.h: Edges): each edge of the triangles once, kept when it bounds one face, is shared by
+// more than two, or its two faces' normals differ by more than the crease angle; drawn in the edge colour
+// with its endpoints moved toward the eye by two pixels' worth of distance (a polygon offset), so the faces
+// they lie on, whose depth at a pixel differs from the line's by up to their slope, do not half-hide them.
+void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  const ViewPlan& camera = view.plan.view;
+  const std::span<const Vec3> world = std::span<const Vec3>(view.world.data(), view.world.size());
+  // Positions with equal coordinates are one point here: models that repeat a corner per face (UV seams,
+  // STL-like soups) still have shared edges, not a boundary around every face.
+  std::vector<std::uint32_t> same(world.size());
+  {
+    std::vector<std::uint32_t> order(world.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto key = [&](std::uint32_t i) { return std::tuple(world[i].x, world[i].y, world[i].z); };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t p, std::uint32_t q) { return key(p) < key(q); });
+    for (std::size_t k = 0; k < order.size(); ++k)
+      same[order[k]] = k > 0 && key(order[k]) == key(order[k - 1]) ? same[order[k - 1]] : order[k];
+  }
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> edges;  // (low, high, triangle)
+  edges.reserve(mesh.triangles.size() * 3);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = same[mesh.triangles[t][k]], b = same[mesh.triangles[t][(k + 1) % 3]];
+      if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t));
+    }
+  }
+  std::sort(edges.begin(), edges.end());  // not interruptible: n log n of the model's edges
+  auto face_normal = [&](std::uint32_t t) {
+    const auto& tri = mesh.triangles[t];
+    return normalize(cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]));
+  };
+  const double cos_crease = std::cos(mesh.edges.crease_deg * std::numbers::pi / 180);
+  const Vec3 forward = normalize(camera.target - camera.eye);
+  const double pixel_at_unit = (camera.projection == Projection::perspective
+                                    ? 2 * std::tan(camera.fov_deg * std::numbers::pi / 360)
+                                    : 0) /
+                               view.plan.height;
+  const double ortho_pixel = camera.height / view.plan.height;
+  // The endpoint in clip space, with the depth it would have two pixels nearer the eye: moving it along its
+  // ray to the eye leaves it where it is on screen and changes only z. The depth stops at the near plane: on
+  // a small image two pixels are more than the 1% margin a fitted near plane leaves in front of the content,
+  // and edges on its nearest face would be clipped away.
+  auto pulled = [&](std::uint32_t i) {
+    const Vec3& p = world[i];
+    Vec3 toward_eye = forward * -1.0;
+    double pixel = ortho_pixel;
+    if (camera.projection == Projection::perspective) {
+      const double d = length(camera.eye - p);
+      toward_eye = normalize(camera.eye - p), pixel = d * pixel_at_unit;
+    }
+    const Vec4 c = transform(camera.world_to_clip, p);
+    const Vec4 nearer = transform(camera.world_to_clip, p + toward_eye * (2 * pixel));
+    double z = c.z;  // reversed depth: z = w at the near plane, larger z / w is nearer
+    if (c.w > 0 && nearer.w > 0) z = std::max(z, std::min(nearer.z / nearer.w, 1.0) * c.w);
+    ClipVertex v{c.x, c.y, z, c.w, {}};
+    const Rgba8 colour = mesh.edges.color;
+    v.attr[0] = colour.r, v.attr[1] = colour.g, v.attr[2] = colour.b, v.attr[3] = colour.a;
+    return v;
+  };
+  const std::uint32_t call = setup.add_call(make_call(edge_mode));
+  for (std::size_t i = 0; i < edges.size();) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return;
+    const auto [a, b, t] = edges[i];
+    std::size_t j = i + 1;
+    while (j < edges.size() && std::get<0>(edges[j]) == a && std::get<1>(edges[j]) == b) ++j;
+    const std::size_t faces = j - i;
+    bool feature = faces != 2;
+    if (faces == 2) {
+      const Vec3 n0 = face_normal(t), n1 = face_normal(std::get<2>(edges[i + 1]));
+      // A degenerate face has no normal (NaN): its edges are not creases of it.
+      feature = dot(n0, n1) < cos_crease;
+    }
+    i = j;
+    if (!feature || ((view.outside[a] | view.outside[b]) & 0x80)) continue;
+    ClipVertex va = pulled(a), vb = pulled(b);
+    if (!(std::isfinite(va.w) && std::isfinite(vb.w))) continue;
+    add_segment(view, va, vb, edge_mode, call, mesh.edges.width, setup);
+  }
+}
+
+}  // namespace
+
+void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup, StopMeter& meter) {
+  MeshView view(mesh, plan);
+  if (!view.project(meter)) return;
+  if (!mesh.wireframe && !mesh.triangles.empty()) add_triangles(view, draw.mode, setup, meter);
+  add_lines(view, draw.line_mode, setup, meter);
+  if (draw.edge_mode.depth) add_edges(view, draw.edge_mode, setup, meter);
+}
+
+}  // namespace raster::detail

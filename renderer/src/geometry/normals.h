@@ -1,0 +1,21 @@
+// Normals: a mesh's smooth-shading normals when it brings none, computed once per vertex in world space.
+#pragma once
+
+#include <span>
+
+#include "base/memory.h"
+#include "raster/scene.h"
+#include "base/stop.h"
+#include "base/vecmath.h"
+
+namespace raster::detail {
+
+/// Angle-weighted vertex normals in world space (Thuermer & Wuethrich): each face adds its unit normal times
+/// the corner angle, so a vertex's normal does not depend on how its neighbourhood is triangulated.
+///
+/// On several threads each takes a range of the vertices and goes through all the triangles, adding only to
+/// its own vertices: every vertex still sums its faces in triangle order, so the normals are the same bits
+/// for any thread count (a triangle whose corners lie in two ranges is measured twice).
+PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, StopMeter& meter);
+
+}  // namespace raster::detail

@@ -1,0 +1,221 @@
+// STL models: binary (an 80-byte header, a triangle count, 50 bytes per triangle) and ASCII ("solid ...
+// facet normal ... outer loop vertex x y z ... endloop endfacet ... endsolid"). Each facet is a triangle of
+// its own: STL shares no corners, and the edges pass finds shared edges by position (geometry3d.cpp).
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "base/budget_ask.h"
+#include "raster/model.h"
+
+namespace raster {
+namespace {
+
+[[noreturn]] void stl_error(const std::string& message, std::size_t line = 0, std::size_t byte = 0) {
+  throw SceneError(ErrorKind::model, "STL: " + message, ErrorLocation{"", byte, line});
+}
+
+void check_facets(std::uint64_t facets, const Limits& limits) {
+  if (facets > static_cast<std::uint64_t>(limits.max_obj_faces))
+    throw SceneError(ErrorKind::limit,
+                     "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+}
+
+std::uint32_t le_u32(const char* p) {
+  std::uint32_t u = 0;
+  for (int k = 3; k >= 0; --k) u = u << 8 | static_cast<unsigned char>(p[k]);
+  return u;
+}
+
+// A little-endian IEEE float at p, as every STL writer stores it.
+float le_float(const char* p) {
+  std::uint32_t u;
+  std::memcpy(&u, p, 4);
+  if constexpr (std::endian::native == std::endian::big) u = __builtin_bswap32(u);
+  float f;
+  std::memcpy(&f, &u, 4);
+  return f;
+}
+
+Mesh read_binary(std::string_view bytes, const Limits& limits) {
+  const std::uint32_t count = le_u32(bytes.data() + 80);
+  // sniff_model matched the size to the count already; a caller naming the format did not. Bytes after the
+  // triangles (some writers pad the file) are left unread; triangles the bytes do not hold are an error.
+  if (bytes.size() < 84 + 50 * std::uint64_t{count})
+    stl_error("a binary STL of " + std::to_string(count) + " triangles is " +
+                  std::to_string(84 + 50 * std::uint64_t{count}) + " bytes; this one has only " +
+                  std::to_string(bytes.size()),
+              0, 81);
+  if (count == 0) stl_error("the model has no triangles");
+  check_facets(count, limits);
+  detail::reserve(limits, cost::kStlPerFacet * count,
+                  [&] { return "the model's " + std::to_string(count) + " facets"; });
+  Mesh mesh;
+  mesh.shading = Shading::flat;
+  mesh.positions.resize(std::size_t{count} * 3);
+  mesh.triangles.resize(count);
+  const char* p = bytes.data() + 84;
+  for (std::uint32_t t = 0; t < count; ++t, p += 50) {
+    if ((t + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
+    // 12 bytes of facet normal (not read: see parse_stl), 3 corners of 12 bytes, 2 attribute bytes.
+    for (int k = 0; k < 3; ++k) {
+      const char* c = p + 12 + 12 * k;
+      const float x = le_float(c), y = le_float(c + 4), z = le_float(c + 8);
+      if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+        stl_error("triangle " + std::to_string(t + 1) + " has a corner that is not a finite number", 0,
+                  static_cast<std::size_t>(c - bytes.data()) + 1);
+      mesh.positions[std::size_t{t} * 3 + k] = {x, y, z};
+    }
+    mesh.triangles[t] = {t * 3, t * 3 + 1, t * 3 + 2};
+  }
+  return mesh;
+}
+
+// Words of an ASCII STL, with the line each is on.
+class Words {
+ public:
+  explicit Words(std::string_view text) : text_(text) {}
+  // The next word, or "" at the end.
+  std::string_view next() {
+    while (at_ < text_.size()) {
+      const char c = text_[at_];
+      if (c == '\n')
+        ++line_;
+      else if (c != ' ' && c != '\t' && c != '\r' && c != '\f' && c != '\v')
+        break;
+      ++at_;
+    }
+    const std::size_t start = at_;
+    while (at_ < text_.size()) {
+      const char c = text_[at_];
+      if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') break;
+      ++at_;
+    }
+    return text_.substr(start, at_ - start);
+  }
+  void skip_line() {
+    const std::size_t eol = text_.find('\n', at_);
+    at_ = eol == std::string_view::npos ? text_.size() : eol;
+  }
+  std::size_t line() const { return line_; }
+
+ private:
+  std::string_view text_;
+  std::size_t at_ = 0, line_ = 1;
+};
+
+bool iequal(std::string_view word, std::string_view keyword) {
+  if (word.size() != keyword.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if ((word[i] >= 'A' && word[i] <= 'Z' ? word[i] + 32 : word[i]) != keyword[i]) return false;
+  return true;
+}
+
+std::string quoted(std::string_view word) {
+  if (word.empty()) return "the end of the file";
+  std::string out(1, '"');  // built by appending: g++ 12 warns falsely (-Wrestrict) on "\"" + string
+  out.append(word.substr(0, 40)).push_back('"');
+  return out;
+}
+
+double number(Words& in) {
+  std::string_view w = in.next();
+  if (w.size() > 1 && w[0] == '+') w.remove_prefix(1);
+  double v = 0;
+  const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+  if (ec != std::errc() || end != w.data() + w.size() || !std::isfinite(v))
+    stl_error("expected a number, got " + quoted(w), in.line());
+  if (std::fabs(v) > kMaxCoordinate)
+    stl_error("the coordinate " + quoted(w) + " is beyond +-2^128, the largest rasterd draws", in.line());
+  return v;
+}
+
+void expect(Words& in, std::string_view keyword) {
+  const std::string_view w = in.next();
+  if (!iequal(w, keyword))
+    stl_error("expected \"" + std::string(keyword) + "\", got " + quoted(w), in.line());
+}
+
+Mesh read_ascii(std::string_view text, const Limits& limits) {
+  Words in(text);
+  Mesh mesh;
+  mesh.shading = Shading::flat;
+  // A facet is at least ~60 bytes of text ("facet normal 0 0 0 outer loop vertex 0 0 0 ... endfacet"):
+  // reserving from that bounds the guess by the text's size.
+  std::size_t reserved = text.size() / 64;  // facets asked of the budget so far, grown in steps below
+  detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved),
+                  [] { return std::string("the model's facets"); });
+  mesh.positions.reserve(reserved * 3);
+  mesh.triangles.reserve(reserved);
+  std::string_view w = in.next();
+  if (!iequal(w, "solid")) stl_error("expected \"solid\", got " + quoted(w), in.line());
+  in.skip_line();  // the solid's name
+  while (true) {
+    w = in.next();
+    if (iequal(w, "endsolid")) {
+      in.skip_line();
+      w = in.next();
+      if (w.empty()) break;
+      if (!iequal(w, "solid"))
+        stl_error("expected \"solid\" or the end of the file, got " + quoted(w), in.line());
+      in.skip_line();
+      continue;
+    }
+    if (!iequal(w, "facet")) stl_error("expected \"facet\" or \"endsolid\", got " + quoted(w), in.line());
+    expect(in, "normal");
+    for (int k = 0; k < 3; ++k) in.next();  // not read (see parse_stl): writers put "nan" here for slivers
+    expect(in, "outer");
+    expect(in, "loop");
+    const std::size_t first = mesh.positions.size();
+    const std::size_t facet_line = in.line();
+    while (true) {
+      w = in.next();
+      if (iequal(w, "endloop")) break;
+      if (!iequal(w, "vertex")) stl_error("expected \"vertex\" or \"endloop\", got " + quoted(w), in.line());
+      const double x = number(in), y = number(in), z = number(in);
+      mesh.positions.push_back({x, y, z});
+    }
+    const std::size_t corners = mesh.positions.size() - first;
+    if (corners < 3)
+      stl_error("a facet has " + std::to_string(corners) + " vertices; it needs 3", facet_line);
+    // A loop of more than three corners (which some writers emit for planar polygons) as a fan.
+    for (std::size_t k = 1; k + 1 < corners; ++k) {
+      check_facets(mesh.triangles.size() + 1, limits);
+      if (mesh.triangles.size() == reserved) {  // fans of many corners: more triangles than the text's guess
+        detail::stop_if_expired(limits);
+        detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved + 1),
+                        [] { return std::string("the model's facets"); });
+        reserved = 2 * reserved + 1;
+      }
+      mesh.triangles.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + k),
+                                static_cast<std::uint32_t>(first + k + 1)});
+    }
+    expect(in, "endfacet");
+  }
+  if (mesh.triangles.empty()) stl_error("the model has no facets");
+  return mesh;
+}
+
+}  // namespace
+
+Mesh parse_stl(std::string_view bytes, const Limits& limits) {
+  // ASCII when it starts with "solid", unless its second line is not a facet and its size holds the
+  // triangles its header counts: some binary writers start the header with "solid" too (and some pad the
+  // file). Text's bytes 80..83 count at least 0x09090909 triangles, which no text is long enough to hold.
+  Words words(bytes);
+  const bool solid = iequal(words.next(), "solid");
+  words.skip_line();
+  const std::string_view second = words.next();
+  const bool binary_size =
+      bytes.size() >= 84 && bytes.size() >= 84 + 50 * std::uint64_t{le_u32(bytes.data() + 80)};
+  if (solid && (!binary_size || iequal(second, "facet") || iequal(second, "endsolid")))
+    return read_ascii(bytes, limits);
+  if (bytes.size() < 84)
+    stl_error("the file is " + std::to_string(bytes.size()) +
+              " bytes: shorter than a binary STL's 84-byte header, and not ASCII STL (\"solid ...\")");
+  return read_binary(bytes, limits);
+}
+
+}  // namespace raster

@@ -1,0 +1,142 @@
+// validate(): what a scene's own data must satisfy, whoever built it (the JSON reader or code).
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "raster/scene.h"
+#include "scene/scene_format.h"
+
+namespace raster {
+namespace {
+
+void check_references(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const Primitive& p = scene.primitives[i];
+    if (p.kind == PrimitiveKind::mesh) continue;  // checked below
+    const std::size_t colors = p.per_vertex_color ? p.point_count : 1;
+    const bool ok = std::size_t{p.first_point} + p.point_count <= scene.points.size() &&
+                    std::size_t{p.first_color} + colors <= scene.colors.size() &&
+                    p.point_count == (p.kind == PrimitiveKind::triangle ? 3u
+                                      : p.kind == PrimitiveKind::line   ? 2u
+                                                                        : std::max(p.point_count, 2u));
+    if (!format::kLineWidth.contains(p.width))
+      throw SceneError(ErrorKind::invalid, format::kLineWidth.rule,
+                       {"/primitives/" + std::to_string(i) + "/width", 0, 0});
+    if (!ok)
+      throw SceneError(ErrorKind::invalid, "primitive refers to points or colours the scene does not have",
+                       {"/primitives/" + std::to_string(i), 0, 0});
+  }
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const Primitive& p = scene.primitives[i];
+    if (p.kind != PrimitiveKind::mesh) continue;
+    const std::string where = "/primitives/" + std::to_string(i);
+    if (p.mesh >= scene.meshes.size())
+      throw SceneError(ErrorKind::invalid, "mesh primitive refers to a missing mesh", {where, 0, 0});
+    const Mesh& m = scene.meshes[p.mesh];
+    if (!format::kEdgeWidth.contains(m.edges.width) || !format::kCreaseAngle.contains(m.edges.crease_deg))
+      throw SceneError(ErrorKind::invalid,
+                       std::string(format::kEdgeWidth.rule) + "; " + format::kCreaseAngle.rule,
+                       {where + "/edges", 0, 0});
+    const std::size_t n = m.positions.size();
+    bool ok = (m.colors.size() == 1 || m.colors.size() == n) &&
+              (m.face_colors.empty() || m.face_colors.size() == m.triangles.size()) &&
+              (m.normal_triangles.empty() || m.normal_triangles.size() == m.triangles.size());
+    for (const auto& t : m.triangles) ok = ok && t[0] < n && t[1] < n && t[2] < n;
+    for (const auto& s : m.segments) ok = ok && s[0] < n && s[1] < n;
+    for (const auto& t : m.normal_triangles)
+      ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
+    ok = ok && (m.uv_triangles.empty() || m.uv_triangles.size() == m.triangles.size()) &&
+         (m.face_textures.empty() || m.face_textures.size() == m.triangles.size());
+    for (const auto& t : m.uv_triangles) ok = ok && t[0] < m.uvs.size() && t[1] < m.uvs.size() && t[2] < m.uvs.size();
+    for (const auto& uv : m.uvs) ok = ok && std::isfinite(uv[0]) && std::isfinite(uv[1]);
+    for (std::int32_t f : m.face_textures) ok = ok && f >= -1 && f < static_cast<std::int32_t>(m.textures.size());
+    for (const Texture& t : m.textures)
+      ok = ok && t.width >= 1 && t.height >= 1 && t.width <= kMaxTextureSide && t.height <= kMaxTextureSide &&
+           t.rgba.size() == std::size_t(t.width) * std::size_t(t.height) * 4 && std::isfinite(t.scale[0]) &&
+           std::isfinite(t.scale[1]) && std::isfinite(t.offset[0]) && std::isfinite(t.offset[1]);
+    for (const Vec3& q : m.positions)
+      ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate &&
+           std::fabs(q.z) <= kMaxCoordinate;
+    if (!ok)
+      throw SceneError(ErrorKind::invalid,
+                       "mesh has indices, colours, normals, texture coordinates or textures that do not match its "
+                       "positions", {where, 0, 0});
+  }
+  // Scenes built in code skip the parser's checks; coverage relies on these bounds.
+  for (std::size_t i = 0; i < scene.points.size(); ++i) {
+    const Point2& q = scene.points[i];
+    if (!(std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate))
+      throw SceneError(ErrorKind::invalid,
+                       "point " + std::to_string(i) + " is not finite or outside +-2^128");
+  }
+}
+
+void check_camera_and_light(const Scene& scene) {
+  const Camera& c = scene.camera;
+  auto invalid = [](const char* pointer, const std::string& message) {
+    throw SceneError(ErrorKind::invalid, message, {pointer, 0, 0});
+  };
+  // The ranges the JSON reader applies, in the same words (scene_format.h).
+  auto within = [&](bool given, double v, const format::Range& range, const char* pointer) {
+    if (given && !range.contains(v)) invalid(pointer, range.rule);
+  };
+  if (c.up.x == 0 && c.up.y == 0 && c.up.z == 0) invalid("/camera/up", "\"up\" must not be the zero vector");
+  within(true, c.fov_deg, format::kFov, "/camera/fov");
+  within(c.has_near, c.near, format::kNear, "/camera/near");
+  within(c.has_far, c.far, format::kFar, "/camera/far");
+  if (c.has_near && c.has_far && !(c.near < c.far)) invalid("/camera/far", "\"far\" must be greater than \"near\"");
+  within(c.has_height, c.height, format::kViewHeight, "/camera/height");
+  if (c.has_eye && c.has_target && c.eye == c.target)
+    invalid("/camera/target", "\"eye\" and \"target\" are the same point: the camera has no view direction");
+  if (scene.lights.size() > kMaxLights)
+    invalid("/lights", "at most " + std::to_string(kMaxLights) + " lights");
+  for (const Light& l : scene.lights) {
+    const double d = std::hypot(l.direction.x, l.direction.y, l.direction.z);
+    if (l.kind == LightKind::directional && !(d > 0 && std::isfinite(d)))
+      invalid("/lights", "a directional light's direction must be finite and not the zero vector");
+    if (l.kind == LightKind::point && !std::isfinite(std::hypot(l.position.x, l.position.y, l.position.z)))
+      invalid("/lights", "a point light's position must be finite");
+    within(true, l.intensity, format::kIntensity, "/lights");
+    for (double c : {l.color.x, l.color.y, l.color.z})
+      if (!(c >= 0 && c <= 1)) invalid("/lights", "light colour components are in 0..1");
+  }
+}
+
+
+// A light of `kind` and `intensity`; camera-space directional lights travel `direction`.
+Light make_light(LightKind kind, double intensity, bool camera_space = false, Vec3 direction = {0, 0, -1}) {
+  Light l;
+  l.kind = kind, l.intensity = intensity, l.camera_space = camera_space, l.direction = direction;
+  return l;
+}
+
+}  // namespace
+
+std::vector<Light> default_lights() {
+  return {
+      make_light(LightKind::ambient, 0.35),
+      // From the viewer's upper left, as a photographer's key: travels right, down and away from the viewer.
+      make_light(LightKind::directional, 0.45, true, {1, -1, -1}),
+      // Along the view direction: every face seen gets some light, so none is left black.
+      make_light(LightKind::directional, 0.25, true, {0, 0, -1}),
+  };
+}
+
+std::vector<Light> single_light(double ambient, const Vec3* direction) {
+  if (direction) return {make_light(LightKind::ambient, ambient), make_light(LightKind::directional, 1 - ambient, false, *direction)};
+  return {make_light(LightKind::ambient, ambient), make_light(LightKind::directional, 1 - ambient, true)};  // the headlight
+}
+
+void validate(const Scene& scene) {
+  if (scene.width < 1 || scene.height < 1)
+    throw SceneError(ErrorKind::invalid, "image size must be at least 1x1");
+  if (scene.samples != 1 && scene.samples != 4 && scene.samples != 8 && scene.samples != 16)
+    throw SceneError(ErrorKind::invalid, "\"antialias\" must be 1, 4, 8 or 16 samples", {"/antialias", 0, 0});
+  if (scene.area && scene.samples != 1)
+    throw SceneError(ErrorKind::invalid, "\"antialias\" is either \"area\" or a sample count, not both",
+                     {"/antialias", 0, 0});
+  check_references(scene);
+  check_camera_and_light(scene);
+}
+
+}  // namespace raster

@@ -1,0 +1,270 @@
+#include "setup/setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace raster::detail {
+namespace {
+
+// y down, interior on the side E > 0: a "left" edge runs upward (dy < 0); a "top" edge is horizontal and
+// runs right (dy == 0, dx > 0), with the interior below it.
+template <typename T>
+bool is_top_left(const T& dx, const T& dy) {
+  return dy < T(0) || (dy == T(0) && dx > T(0));
+}
+
+// Edges of a triangle with positive area; edge k runs between the other two vertices, so E_k is vertex
+// k's weight times the area.
+template <typename T>
+Edges<T> make_edges(const T (&x)[3], const T (&y)[3], const T& area) {
+  Edges<T> e;
+  e.area = area;
+  using Coefficient = typename Edges<T>::Coefficient;
+  for (int k = 0; k < 3; ++k) {
+    const int from = (k + 1) % 3, to = (k + 2) % 3;
+    const T a = y[from] - y[to], b = x[to] - x[from];
+    e.a[k] = static_cast<Coefficient>(a), e.b[k] = static_cast<Coefficient>(b);
+    const T bias = is_top_left(b, -a) ? T(0) : T(1);  // centres on an edge count for top/left only
+    e.c[k] = -(a * x[from]) - b * y[from] - bias;
+  }
+  return e;
+}
+
+// Pixels whose square holds a point of [lo, hi] (1/256 px units), clipped to [0, size).
+std::pair<int, int> pixel_span(double lo, double hi, int size) {
+  const double first = std::floor(lo / kSubpixelScale), last = std::floor(hi / kSubpixelScale);
+  return {static_cast<int>(std::clamp(first, 0.0, static_cast<double>(size))),
+          static_cast<int>(std::clamp(last + 1, 0.0, static_cast<double>(size)))};
+}
+
+// Pixels whose centre lies in [lo, hi] (1/256 px units), clipped to [0, size): with centre coverage no other
+// pixel can be covered, so the box is no larger than the samples it may hold (often empty for a sliver).
+std::pair<int, int> centre_span(double lo, double hi, int size) {
+  const double half = kSubpixelScale / 2;
+  const double first = std::ceil((lo - half) / kSubpixelScale),
+               last = std::floor((hi - half) / kSubpixelScale);
+  return {static_cast<int>(std::clamp(first, 0.0, static_cast<double>(size))),
+          static_cast<int>(std::clamp(last + 1, 0.0, static_cast<double>(size)))};
+}
+
+// True when a pixel centre of `box` is covered by `e` (the box holds at most kProbePixels pixels).
+constexpr int kProbePixels = 16;
+bool covers_a_centre(const Edges<std::int64_t>& e, Rect box) {
+  for (int y = box.y0; y < box.y1; ++y)
+    for (int x = box.x0; x < box.x1; ++x) {
+      const std::int64_t X = std::int64_t{x} * kSubpixelScale + kSubpixelScale / 2,
+                         Y = std::int64_t{y} * kSubpixelScale + kSubpixelScale / 2;
+      if (e.a[0] * X + e.b[0] * Y + e.c[0] >= 0 && e.a[1] * X + e.b[1] * Y + e.c[1] >= 0 &&
+          e.a[2] * X + e.b[2] * Y + e.c[2] >= 0)
+        return true;
+    }
+  return false;
+}
+
+// False when the whole of `tile`'s sample points (any sample position) lies outside an edge of `e`.
+bool may_touch(const Edges<std::int64_t>& e, Rect tile) {
+  const double x0 = double(tile.x0) * kSubpixelScale, x1 = double(tile.x1) * kSubpixelScale - 1;
+  const double y0 = double(tile.y0) * kSubpixelScale, y1 = double(tile.y1) * kSubpixelScale - 1;
+  for (int k = 0; k < 3; ++k) {
+    const double a = double(e.a[k]), b = double(e.b[k]);
+    const double most = (a > 0 ? a * x1 : a * x0) + (b > 0 ? b * y1 : b * y0) + double(e.c[k]);  // exact
+    if (most < 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+AttributeLayout AttributeLayout::of(const PrimitivePlan& mode) {
+  AttributeLayout l;
+  l.size = mode.varying_color ? 12 : 4;
+  if (mode.depth) {
+    l.depth = l.size, l.size += 3;
+    if (mode.smooth) l.inv_w = l.size, l.size += 3;
+  }
+  if (mode.light_per_pixel) l.normal = l.size, l.size += 9;
+  if (mode.textured) l.uv = l.size, l.size += 6;
+  if (mode.position_per_pixel) l.position = l.size, l.size += 9;
+  return l;
+}
+
+std::uint32_t Setup::add_call(const DrawCall& call) {
+  calls.push_back(call);
+  calls.back().layout = AttributeLayout::of(call.mode);
+  return static_cast<std::uint32_t>(calls.size() - 1);
+}
+
+bool Setup::fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3]) const {
+  std::int64_t x[3] = {t.x[0], t.x[1], t.x[2]}, y[3] = {t.y[0], t.y[1], t.y[2]};
+  // The box in integers (the same pixels as pixel_span / centre_span give for these values): the pixels
+  // whose square, or with centre coverage whose centre, holds a point of the vertices' range.
+  const std::int64_t lo[2] = {std::min({x[0], x[1], x[2]}), std::min({y[0], y[1], y[2]})};
+  const std::int64_t hi[2] = {std::max({x[0], x[1], x[2]}), std::max({y[0], y[1], y[2]})};
+  const std::int64_t size[2] = {width, height};
+  int first[2], end[2];
+  for (int d = 0; d < 2; ++d) {
+    const std::int64_t f =
+        centre_samples ? (lo[d] + kSubpixelScale / 2 - 1) >> kSubpixelBits : lo[d] >> kSubpixelBits;
+    const std::int64_t l =
+        centre_samples ? (hi[d] - kSubpixelScale / 2) >> kSubpixelBits : hi[d] >> kSubpixelBits;
+    first[d] = static_cast<int>(std::clamp<std::int64_t>(f, 0, size[d]));
+    end[d] = static_cast<int>(std::clamp<std::int64_t>(l + 1, 0, size[d]));
+  }
+  r.box = {first[0], first[1], end[0], end[1]};
+  if (r.box.empty()) return false;
+  std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+  if (area == 0) return false;  // degenerate: covers nothing
+  order[0] = 0, order[1] = 1, order[2] = 2;
+  if (area < 0) {  // both windings are drawn: normalize to positive area
+    std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(order[1], order[2]);
+    area = -area;
+  }
+  r.edges = make_edges(x, y, area);
+  r.wide = TriangleRecord::kFast;
+  // A small triangle that holds no pixel centre draws nothing: it gets no record (most of a dense model's
+  // triangles are smaller than a pixel).
+  return !(centre_samples && (r.box.x1 - r.box.x0) * (r.box.y1 - r.box.y0) <= kProbePixels &&
+           !covers_a_centre(r.edges, r.box));
+}
+
+void Setup::add_triangle(Records& part, std::uint32_t call, const SetupVertex (&given)[3],
+                         bool back_facing) const {
+  const SetupVertex* v[3] = {&given[0], &given[1], &given[2]};
+  const double min_x = std::min({given[0].x, given[1].x, given[2].x}),
+               max_x = std::max({given[0].x, given[1].x, given[2].x});
+  const double min_y = std::min({given[0].y, given[1].y, given[2].y}),
+               max_y = std::max({given[0].y, given[1].y, given[2].y});
+  TriangleRecord r;
+  constexpr double kFastUnits = kFastRangePx * kSubpixelScale;
+  const bool wide = !(std::max(std::fabs(min_x), std::fabs(max_x)) <= kFastUnits &&
+                      std::max(std::fabs(min_y), std::fabs(max_y)) <= kFastUnits);
+  if (!wide) {
+    FastTriangle t;
+    for (int k = 0; k < 3; ++k)
+      t.x[k] = static_cast<std::int64_t>(v[k]->x), t.y[k] = static_cast<std::int64_t>(v[k]->y);
+    int order[3];
+    if (!fast_record(t, r, order)) return;
+    for (int k = 0; k < 3; ++k) v[k] = &given[order[k]];
+  } else {
+    const auto span = centre_samples ? centre_span : pixel_span;
+    std::tie(r.box.x0, r.box.x1) = span(min_x, max_x, width);
+    std::tie(r.box.y0, r.box.y1) = span(min_y, max_y, height);
+    if (r.box.empty()) return;
+    Wide x[3], y[3];
+    for (int k = 0; k < 3; ++k) x[k] = Wide::from_double(v[k]->x), y[k] = Wide::from_double(v[k]->y);
+    Wide area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    if (area == Wide(0)) return;
+    if (area.negative()) {
+      std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(v[1], v[2]);
+      area = -area;
+    }
+    r.wide = static_cast<std::uint32_t>(part.wide_edges.size());
+    part.wide_edges.push_back(make_edges(x, y, area));
+  }
+
+  append(part, r, call, v, back_facing);
+}
+
+void Setup::append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
+                   bool back_facing) const {
+  // Attributes in the normalized vertex order, only those the call's layout has.
+  const PrimitivePlan& mode = calls[call].mode;
+  const AttributeLayout& layout = calls[call].layout;
+  r.attributes = static_cast<std::uint32_t>(part.attributes.size());
+  float* out = part.attributes.grow(static_cast<std::size_t>(layout.size));
+  for (int k = 0; k < (mode.varying_color ? 3 : 1); ++k) std::copy(v[k]->color, v[k]->color + 4, out + 4 * k);
+  for (int k = 0; k < 3; ++k) {
+    if (layout.depth >= 0) out[layout.depth + k] = v[k]->depth;
+    if (layout.inv_w >= 0) out[layout.inv_w + k] = v[k]->inv_w;
+    if (layout.normal >= 0) std::copy(v[k]->normal, v[k]->normal + 3, out + layout.normal + 3 * k);
+    if (layout.uv >= 0) std::copy(v[k]->uv, v[k]->uv + 2, out + layout.uv + 2 * k);
+    if (layout.position >= 0) std::copy(v[k]->position, v[k]->position + 3, out + layout.position + 3 * k);
+  }
+  r.call = call;
+  r.back_facing = back_facing;
+  part.order.push_back({static_cast<std::uint32_t>(part.triangles.size())});
+  part.triangles.push_back(r);
+}
+
+std::size_t Setup::record_count() const {
+  std::size_t n = 0;
+  for (const Records& part : parts) n += part.order.size();
+  return n;
+}
+
+void Setup::add_line(LineRecord line) {
+  std::tie(line.box.x0, line.box.x1) = pixel_span(std::min(line.x0, line.x1) * kSubpixelScale,
+                                                  std::max(line.x0, line.x1) * kSubpixelScale, width);
+  std::tie(line.box.y0, line.box.y1) = pixel_span(std::min(line.y0, line.y1) * kSubpixelScale,
+                                                  std::max(line.y0, line.y1) * kSubpixelScale, height);
+  if (line.box.empty()) return;
+  Records& part = last_part();
+  part.order.push_back({RecordRef::kLineBit | static_cast<std::uint32_t>(part.lines.size())});
+  part.lines.push_back(line);
+}
+
+Rect Bins::tile_rect(int index, int width, int height) const {
+  const int tx = index % columns, ty = index / columns;
+  return {tx * tile, ty * tile, std::min(width, (tx + 1) * tile), std::min(height, (ty + 1) * tile)};
+}
+
+std::size_t Bins::entry_count() const {
+  std::size_t n = 0;
+  for (const Part& part : parts) n += part.records.size();
+  return n;
+}
+
+Bins bin_grid(const Setup& setup, int tile) {
+  Bins bins;
+  bins.tile = tile;
+  bins.columns = (setup.width + tile - 1) / tile;
+  bins.rows = (setup.height + tile - 1) / tile;
+  return bins;
+}
+
+Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, StopMeter& meter) {
+  const int tile = grid.tile;
+  const std::size_t tiles = static_cast<std::size_t>(grid.columns) * grid.rows;
+  Bins::Part bins;
+  std::vector<std::uint32_t> count(tiles + 1, 0);
+  // Calls visit(tile index) for every tile record `ref` may touch.
+  auto for_each_tile = [&](RecordRef ref, auto&& visit) {
+    const bool line = ref.value & RecordRef::kLineBit;
+    const std::uint32_t index = ref.value & ~RecordRef::kLineBit;
+    const Rect box = line ? part.lines[index].box : part.triangles[index].box;
+    const int tx0 = box.x0 / tile, tx1 = (box.x1 - 1) / tile, ty0 = box.y0 / tile, ty1 = (box.y1 - 1) / tile;
+    if (tx0 == tx1 && ty0 == ty1) return visit(ty0 * grid.columns + tx0);  // one tile: no test
+    const TriangleRecord* t = line ? nullptr : &part.triangles[index];
+    const bool test = t && t->wide == TriangleRecord::kFast;
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        const int at = ty * grid.columns + tx;
+        if (test && !may_touch(t->edges, grid.tile_rect(at, setup.width, setup.height))) continue;
+        visit(at);
+      }
+  };
+  // Both passes look at the deadline: millions of records take tens of milliseconds.
+  for (const RecordRef ref : part.order) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return bins;  // the caller sees meter.stopped()
+    for_each_tile(ref, [&](int at) { ++count[at + 1]; });
+  }
+  for (std::size_t t = 0; t < tiles; ++t) count[t + 1] += count[t];
+  // Counted, not yet allocated: a few huge triangles over many tiles can need more than their records.
+  if (!meter.stop().reserve(cost::kRenderPerBinEntry * static_cast<std::int64_t>(count[tiles]))) return bins;
+  bins.offsets = count;
+  bins.records.resize_uninitialized(count[tiles]);
+  for (const RecordRef ref : part.order) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return bins;
+    for_each_tile(ref, [&](int at) { bins.records[count[at]++] = ref; });
+  }
+  return bins;
+}
+
+double snap(double px) {
+  const double units = px * static_cast<double>(kSubpixelScale);  // exact: a power-of-two scale
+  // From 2^52 up every double is already an integer; adding 0.5 there would round to even instead.
+  return std::fabs(units) >= 0x1p52 ? units : std::floor(units + 0.5);
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,243 @@
+// Setup: geometry's screen-space primitives -> one record per triangle or line, made once per render, and
+// the tile bins that list, per tile and in scene order, the records that may touch it. Nothing after this
+// stage recomputes an edge, a bounding box or an attribute's weights.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "base/memory.h"
+#include "raster/plan.h"
+#include "raster/scene.h"
+#include "base/stop.h"
+#include "shade/texture.h"
+#include "base/wide.h"
+
+namespace raster::detail {
+
+inline constexpr int kSubpixelBits = 8;                             ///< GPU-style 8 sub-pixel bits
+inline constexpr std::int64_t kSubpixelScale = 1 << kSubpixelBits;  ///< fixed-point units per pixel
+
+/// Triangles whose vertices all lie within +-kFastRangePx take the int64 records: snapped coordinates fit
+/// in 24 bits, so every edge value at a pixel of the image fits in 50 bits (exact in a double, too).
+/// Others take the exact wide records (wide.h).
+inline constexpr double kFastRangePx = 32768.0;
+
+/// Coverage works on square blocks of this many pixels a side; tiles are whole blocks.
+inline constexpr int kBlock = 8;
+
+/// A half-open pixel rectangle [x0, x1) x [y0, y1): tiles, bounding boxes, clip regions.
+struct Rect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+/// Where in each pixel coverage is tested: 1/256 px from the pixel's top-left corner; (128, 128) is the
+/// centre. Multisampling tests every position of a standard pattern.
+struct SamplePoint {
+  std::int32_t x = 128, y = 128;
+};
+
+/// Where a tile draws: a tile's own colour (and depth) storage, row-major, holding the pixels of image
+/// rectangle [x0, x0 + width) x [y0, ...). Small and contiguous, so a tile's pixels stay in the nearest
+/// cache however wide the image is (rows of a 1024-px RGB image are 3 KiB apart and alias in the L1).
+struct Surface {
+  std::uint8_t* color = nullptr;  ///< channels per pixel as the image's format
+  float* depth = nullptr;         ///< z / w (reversed: larger is nearer) per sample, or nullptr without 3D;
+                                  ///< multisampled: `sample_count` planes of `plane` values, sample-major
+  float* coverage = nullptr;      ///< area coverage of union primitives: kUnionFloats (pixel.h) a pixel
+  int width = 0;                  ///< pixels per row of all of them (whole blocks)
+  int x0 = 0, y0 = 0;             ///< image coordinates of the first pixel
+  int channels = 3;
+  // Multisampling (sample_count > 1). A pixel whose samples all hold one colour keeps it in `color` alone;
+  // its bit in `expanded` says when they differ, and then `samples` holds one colour per sample.
+  int sample_count = 1;
+  const SamplePoint* pattern = nullptr;  ///< the sample positions, sample_count of them
+  std::size_t plane = 0;                 ///< pixels per sample plane (width x the tile's rows in blocks)
+  std::uint8_t* samples = nullptr;       ///< sample_count planes of colour, each laid out like `color`
+  /// One word per 8x8 block, row-major, bit 8 r + i per pixel: multisampling, the pixels whose samples
+  /// differ; area coverage, the pixels a union primitive has accumulated coverage in.
+  std::uint64_t* expanded = nullptr;
+  std::int64_t* shaded = nullptr;        ///< counts pixels shaded (once per pixel per triangle)
+  Simd simd = Simd::sse2;                ///< the plan's choice of kernels
+  std::uint64_t& expanded_bits(int bx, int by) const {  // the word of the block at image pixel (bx, by)
+    return expanded[static_cast<std::size_t>((by - y0) / 8) * static_cast<std::size_t>(width / 8) +
+                    static_cast<std::size_t>((bx - x0) / 8)];
+  }
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x - x0);
+  }
+  std::uint8_t* pixel(int x, int y) const { return color + index(x, y) * static_cast<std::size_t>(channels); }
+  template <int C>  ///< the same, for kernels compiled for C channels (== channels)
+  std::uint8_t* pixel(int x, int y) const {
+    return color + index(x, y) * C;
+  }
+};
+
+/// Attribute floats of a record, in this order, only those its call needs:
+///   colour: 3 x RGBA (mode.varying_color), or 1 x RGBA
+///   depth: 3 x z/w                         (mode.depth)
+///   inv_w: 3 x 1/w                         (mode.depth && mode.smooth)
+///   normal: 3 x xyz                        (mode.light_per_pixel)
+///   uv: 3 x (u, v)                         (mode.textured)
+///   position: 3 x xyz                      (mode.position_per_pixel)
+struct AttributeLayout {
+  int color = 0, depth = -1, inv_w = -1, normal = -1, uv = -1, position = -1, size = 0;
+  static AttributeLayout of(const PrimitivePlan& mode);
+};
+
+/// What a record is drawn with: the plan's decisions for its primitive plus the constants shading needs.
+struct DrawCall {
+  PrimitivePlan mode;
+  AttributeLayout layout;  ///< what its records' attributes hold (set by Setup::add_call from the mode)
+  /// 3D lighting: the view's lights (ViewPlan::lights, which outlives the render).
+  std::span<const LightPlan> lights;
+  /// Textured modes: the texture its triangles sample (in Setup::textures), or nullptr for faces without one.
+  const MipChain* texture = nullptr;
+};
+
+/// A draw call for `mode`, lighting at its defaults.
+inline DrawCall make_call(const PrimitivePlan& mode) {
+  DrawCall call;
+  call.mode = mode;
+  return call;
+}
+
+/// The three vertices of a triangle, snapped, in either winding; colours (0..255 straight RGBA) per vertex.
+/// 3D triangles also carry what the shading interpolates.
+struct SetupVertex {
+  double x = 0, y = 0;  ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
+  float color[4] = {};  ///< straight RGBA, 0..255 (3D flat lighting already applied)
+  float depth = 0;      ///< 3D: z / w in [0, 1], 1 at the near plane (reversed)
+  float inv_w = 1;      ///< 3D: 1 / w, for perspective-correct interpolation
+  float normal[3] = {};  ///< 3D per-pixel lighting: world-space unit normal
+  float uv[2] = {};      ///< 3D textured: texture coordinates (scene.h: Mesh::uvs)
+  float position[3] = {};  ///< 3D lit by a point light per pixel: world position
+};
+
+/// Edge functions of one triangle on the 1/256 px grid, in the triangle's own integer type T (int64 for the
+/// fast range, Wide beyond): E_k(X, Y) = a[k] X + b[k] Y + c[k] at the sample point (X, Y) in 1/256 px, with
+/// the top-left rule folded into c (an edge that is not top or left has 1 subtracted), so a sample is
+/// covered exactly when all three are >= 0. E_k is vertex k's barycentric weight times `area`.
+template <typename T>
+struct Edges {
+  /// In the fast range a and b are coordinate differences below 2^24: 32 bits hold them.
+  using Coefficient = std::conditional_t<std::is_same_v<T, std::int64_t>, std::int32_t, T>;
+  Coefficient a[3], b[3];
+  T c[3];
+  T area;  ///< twice the triangle's area in 1/256 px units squared, > 0
+};
+
+/// One triangle, set up: its edges, the pixels it may touch, and its attributes in barycentric form.
+/// Attributes are planes: any attribute v is the affine function sum_k E_k(X, Y) v_k / area, evaluated
+/// from the exact edge values, so a pixel's value does not depend on which tile or block computes it.
+struct TriangleRecord {
+  static constexpr std::uint32_t kFast = ~0u;
+  Edges<std::int64_t> edges;     ///< the edges, when in the fast range (kept here: one fetch per record)
+  Rect box;                      ///< pixels whose sample point may be covered, clipped to the image
+  std::uint32_t call = 0;        ///< index into Setup::calls
+  std::uint32_t attributes = 0;  ///< index into Setup::attributes of this record's first float (see below)
+  std::uint32_t wide = kFast;    ///< kFast, or the index of its edges in Setup::wide_edges
+  bool back_facing = false;      ///< 3D: seen from behind (per-pixel lighting flips the normal)
+};
+
+
+/// A 1-px line between the pixels that contain its endpoints. Pixel indices are integers held exactly in
+/// doubles (|value| <= 2^128). Coverage orders the endpoints canonically, so a->b and b->a are the same.
+struct LineRecord {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixel column and row of each endpoint, integral values
+  Rgba8 c0, c1;                           ///< colours at the two endpoints
+  bool draw_first = true;        ///< false: endpoint 0's pixel belongs to the previous polyline segment
+  bool draw_last = true;         ///< false: endpoint 1's pixel belongs to the next segment (closing segment)
+  float depth0 = 0, depth1 = 0;  ///< 3D lines (mode.depth): z / w at each endpoint, reversed
+  std::uint32_t call = 0;        ///< index into Setup::calls
+  Rect box;                      ///< pixels it may touch, clipped to the image
+};
+
+/// A record in scene order: which kind and its index in that kind's array.
+struct RecordRef {
+  static constexpr std::uint32_t kLineBit = 1u << 31;
+  std::uint32_t value = 0;  ///< index into its part's triangles, or kLineBit | index into its part's lines
+};
+
+/// A run of records in scene order, with the storage they index. A setup is a sequence of parts so that the
+/// triangles of a large mesh can be set up on every render thread at once, each thread filling its own
+/// parts; the tiles draw the parts in order, so the image does not depend on how the work was split.
+struct Records {
+  PodArray<TriangleRecord> triangles;
+  std::vector<Edges<Wide>> wide_edges;  ///< TriangleRecord::wide indexes these
+  PodArray<float> attributes;           ///< TriangleRecord::attributes indexes these
+  std::vector<LineRecord> lines;
+  PodArray<RecordRef> order;  ///< every record of the part once, in the order the scene draws them
+};
+
+/// A triangle in the fast range, snapped (1/256 px, either winding), before its record exists.
+struct FastTriangle {
+  std::int64_t x[3], y[3];
+};
+
+/// Everything the tiles draw, in scene order.
+struct Setup {
+  std::vector<DrawCall> calls;
+  std::vector<Records> parts;     ///< in scene order; a part's records all follow the previous part's
+  std::deque<MipChain> textures;  ///< the mip chains textured calls sample (a deque: calls point into it)
+  int width = 0, height = 0;      ///< the image, pixels
+  /// The plan's coverage samples each pixel at its centre only (no multisampling, no area): boxes hold the
+  /// pixels whose centre they contain, and a triangle that covers no centre gets no record.
+  bool centre_samples = false;
+
+  /// Adds a draw call; returns its index.
+  std::uint32_t add_call(const DrawCall& call);
+  /// The part records are appended to (a new one when there is none).
+  Records& last_part() { return parts.empty() ? parts.emplace_back() : parts.back(); }
+  /// Sets up a triangle from three snapped vertices into `part`; degenerate ones and ones that miss the
+  /// image are not added. Colours only (2D) or every attribute of `call`'s layout (3D). Reads only the
+  /// setup's calls and image: threads may fill different parts at once.
+  void add_triangle(Records& part, std::uint32_t call, const SetupVertex (&v)[3],
+                    bool back_facing = false) const;
+  void add_triangle(std::uint32_t call, const SetupVertex (&v)[3], bool back_facing = false) {
+    add_triangle(last_part(), call, v, back_facing);
+  }
+  /// The record of a fast-range triangle, its vertices put in the order of positive area (`order[k]` is the
+  /// given vertex that became vertex k); false when it has no area or can cover nothing of the image. The
+  /// caller appends it with its attributes in that order (as add_triangle does).
+  bool fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3]) const;
+  /// Appends `r` (from fast_record, or with its edges and box set) to `part` with the attributes of `call`'s
+  /// layout taken from `v`, already in the record's vertex order.
+  void append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
+              bool back_facing) const;
+  /// Adds a 1-px line record (its box is computed here).
+  void add_line(LineRecord line);
+  /// Records of every part.
+  std::size_t record_count() const;
+};
+
+/// Per tile, the records that may touch it, in scene order: for each part of the setup a flat array of
+/// record references and, for tile t, the range [offsets[t], offsets[t + 1]) of it.
+struct Bins {
+  int tile = 64;              ///< tile side, pixels (a multiple of kBlock)
+  int columns = 0, rows = 0;  ///< tiles across and down
+  struct Part {
+    std::vector<std::uint32_t> offsets;  ///< columns * rows + 1 entries
+    PodArray<RecordRef> records;         ///< references into the setup part of the same index
+  };
+  std::vector<Part> parts;  ///< one per Setup::parts, in the same order
+  Rect tile_rect(int index, int width, int height) const;
+  /// Record-tile pairs of every part.
+  std::size_t entry_count() const;
+};
+
+/// The bins' grid for `setup` and a tile side, with no part binned yet.
+Bins bin_grid(const Setup& setup, int tile);
+/// Bins every record of `part` by its bounding box, skipping tiles a triangle's edges exclude entirely.
+/// Returns early, incomplete, once `meter` says the render must stop.
+Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, StopMeter& meter);
+
+/// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
+/// whole pixels translates the result exactly.
+double snap(double px);
+
+}  // namespace raster::detail

@@ -1,0 +1,362 @@
+// Shade: covered blocks (coverage.h) + a record's attributes -> pixels. With pixel.h (how a colour
+// becomes bytes) and fill.h (the 2D colour kernels), the only place a colour is computed: interpolation of
+// the attribute planes, perspective correction, Lambert lighting per pixel, textures, depth and samples.
+// Templated on the framebuffer's channel count so the per-pixel code has no format branches.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "coverage/coverage.h"
+#include "shade/fill.h"
+#include "shade/pixel.h"
+#include "raster/image.h"
+#include "raster/scene.h"
+#include "setup/setup.h"
+
+namespace raster::detail {
+
+/// Shades the blocks of one triangle record inside one tile. Made per record per tile: everything that
+/// depends only on the record is worked out here, once, not per block.
+template <int C>
+class TriangleShader {
+ public:
+  /// `step_x` and `step_y` are the record's edge-value steps per pixel right and down (256 a_k, 256 b_k) and
+  /// `area` its doubled area, as doubles (exact for the fast range).
+  TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
+                 const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
+      : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
+        flip_(record.back_facing ? -1.0 : 1.0), union_(call.mode.union_coverage && surface.coverage),
+        msaa_(surface.sample_count > 1) {
+    const AttributeLayout& layout = call.layout;
+    depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
+    inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;
+    normal_at_ = layout.normal >= 0 ? attr_ + layout.normal : nullptr;
+    position_at_ = layout.position >= 0 ? attr_ + layout.position : nullptr;
+    if (layout.uv >= 0 && call.texture) {
+      uv_at_ = attr_ + layout.uv;
+      for (int k = 0; k < 3; ++k) dl_dx_[k] = step_x[k] / area, dl_dy_[k] = step_y[k] / area;
+    }
+    flat_ = {to_byte(attr_[0]), to_byte(attr_[1]), to_byte(attr_[2]), to_byte(attr_[3])};
+    kind_ = depth_at_ ? Kind::depth : mode_.varying_color ? Kind::smooth : Kind::flat;
+    if (msaa_ && depth_at_) {
+      // Depth is affine in screen space: each sample's z is the centre's plus a constant per sample.
+      double dz_dx = 0, dz_dy = 0;
+      for (int k = 0; k < 3; ++k) dz_dx += step_x[k] * depth_at_[k] / area, dz_dy += step_y[k] * depth_at_[k] / area;
+      for (int s = 0; s < surface.sample_count; ++s)
+        z_offset_[s] = static_cast<float>(dz_dx * (surface.pattern[s].x - 128) / 256.0 +
+                                          dz_dy * (surface.pattern[s].y - 128) / 256.0);
+    }
+    if (kind_ == Kind::flat) fill_ = FlatFill<C>(surface, flat_, mode_.blend);
+    if (kind_ == Kind::smooth) planes_ = ColorPlanes<C>(surface, attr_, step_x, step_y, area, mode_.blend);
+  }
+
+  /// Every pixel of `clip` is covered; `first` is the block at the clip's block-grid origin (its mask is
+  /// all ones, its values exact). Flat opaque colour fills the rows as long runs; anything else is shaded
+  /// block by block with exactly the values the blocks would have had.
+  void rect(Rect clip, const Block& first) {
+    if (kind_ == Kind::flat && !mode_.blend && !union_) {
+      for (int y = clip.y0; y < clip.y1; ++y) fill_.run(surface_.pixel<C>(clip.x0, y), clip.x1 - clip.x0);
+      if (msaa_) {  // every sample of these pixels now holds the colour: one value each again
+        for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock)
+          for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock)
+            surface_.expanded_bits(x0, y0) &=
+                ~(coverage_detail::row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0)) &
+                  coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0)));
+        *surface_.shaded += std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0);
+      }
+      return;
+    }
+    if (kind_ == Kind::smooth && !union_ && !msaa_) return planes_.rect(clip, first);
+    Block b = first;
+    for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
+      const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
+      const std::uint64_t rows = coverage_detail::row_mask(r0, r1);
+      for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock) {
+        b.x0 = x0, b.y0 = y0;
+        b.mask = rows & coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+        const double bx = (x0 - first.x0) / kBlock, by = (y0 - first.y0) / kBlock;  // exact steps
+        for (int k = 0; k < 3; ++k) b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
+        (*this)(b);
+      }
+    }
+  }
+
+  void operator()(const Block& b) {
+    if (union_) return accumulate(b, nullptr);
+    if (msaa_) return whole(b);
+    shade_aliased(b);
+  }
+
+  /// Multisampling: `masks[s]` are the pixels whose sample s is covered, `b.mask` their union. Each pixel
+  /// is shaded once (at its centre, or at the centroid of its covered samples when the centre is outside)
+  /// and the colour goes to the covered samples; whole pixels take the aliased path.
+  void samples(const Block& b, const std::uint64_t* masks) {
+    const int n = surface_.sample_count;
+    if (kind_ == Kind::depth) return depth_samples(b, masks);
+    std::uint64_t all = b.mask;
+    for (int s = 0; s < n; ++s) all &= masks[s];
+    if (all) {
+      Block w = b;
+      w.mask = all;
+      whole(w);
+    }
+    std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
+    for (std::uint64_t m = b.mask & ~all; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      unsigned covered = 0;
+      for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
+      const Rgba8 c = color_at(b, i, r, covered);
+      const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
+      if (!((expanded >> bit) & 1)) expand(index), expanded |= std::uint64_t{1} << bit;
+      for (unsigned k = covered; k; k &= k - 1) put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
+    }
+    *surface_.shaded += std::popcount(b.mask & ~all);
+  }
+
+  void shade_aliased(const Block& b) {
+    switch (kind_) {
+      case Kind::flat:
+        return fill_.block(b);
+      case Kind::smooth:
+        return planes_.block(b);
+      case Kind::depth:
+        return shade_depth(b);
+    }
+  }
+
+  /// Area coverage: the pixels of `b.mask` are cut by an edge; each takes its colour at the pixel centre
+  /// at opacity share x alpha (or, for a union, adds its share to the primitive's accumulation).
+  void area(const Block& b, const AreaCover& cut) {
+    if (union_) return accumulate(b, cut.share);
+    for (std::uint64_t m = b.mask; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const Rgba8 c = color_at(b, i, r);
+      blend_weighted<C>(surface_.pixel<C>(b.x0 + i, b.y0 + r), c, cut.share[bit] * (c.a / 255.0f));
+    }
+  }
+
+ private:
+  std::uint8_t* sample_pixel(int s, std::size_t index) const {
+    return surface_.samples + (static_cast<std::size_t>(s) * surface_.plane + index) * C;
+  }
+
+  // A pixel about to get different colours in different samples: each sample starts as its one colour.
+  void expand(std::size_t index) const {
+    const std::uint8_t* from = surface_.color + index * C;
+    for (int s = 0; s < surface_.sample_count; ++s) std::memcpy(sample_pixel(s, index), from, C);
+  }
+
+  // Multisampling, pixels with every sample covered (2D). Opaque stores make a pixel's samples one colour
+  // again; blending keeps them apart, each sample blended.
+  void whole(const Block& b) {
+    if (kind_ == Kind::depth) {
+      std::uint64_t masks[16];
+      std::fill_n(masks, surface_.sample_count, b.mask);
+      return depth_samples(b, masks);
+    }
+    std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
+    *surface_.shaded += std::popcount(b.mask);
+    if (!mode_.blend) {
+      expanded &= ~b.mask;
+      return shade_aliased(b);
+    }
+    const std::uint64_t mixed = b.mask & expanded;
+    if (mixed != b.mask) {
+      Block u = b;
+      u.mask = b.mask & ~mixed;
+      shade_aliased(u);
+    }
+    const unsigned all = (1u << surface_.sample_count) - 1;
+    for (std::uint64_t m = mixed; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const Rgba8 c = color_at(b, i, r, all);
+      const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
+      for (int s = 0; s < surface_.sample_count; ++s) blend<C>(sample_pixel(s, index), c);
+    }
+  }
+
+  // 3D multisampling: depth tested per sample (the plane at each position), shaded once per pixel.
+  void depth_samples(const Block& b, const std::uint64_t* masks) {
+    const int n = surface_.sample_count;
+    const unsigned all = (1u << n) - 1;
+    const double inv_area = 1.0 / b.area;
+    const float* z = depth_at_;
+    std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
+    for (std::uint64_t m = b.mask; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
+      double l[3];
+      for (int k = 0; k < 3; ++k) l[k] = (b.e[k] + i * b.dx[k] + r * b.dy[k]) * inv_area;
+      const float centre = static_cast<float>(l[0] * z[0] + l[1] * z[1] + l[2] * z[2]);
+      unsigned pass = 0;
+      for (int s = 0; s < n; ++s) {
+        if (!((masks[s] >> bit) & 1)) continue;
+        const float depth = centre + z_offset_[s];
+        float& stored = surface_.depth[static_cast<std::size_t>(s) * surface_.plane + index];
+        if (depth > stored) stored = depth, pass |= 1u << s;
+      }
+      if (!pass) continue;
+      ++*surface_.shaded;
+      unsigned covered = 0;
+      for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
+      shading_point(b, i, r, covered, l);
+      const Rgba8 c = mode_.smooth ? smooth_color(l) : flat_;
+      if (pass == all && !mode_.blend) {
+        store<C>(surface_.color + index * C, c);
+        expanded &= ~(std::uint64_t{1} << bit);
+        continue;
+      }
+      if (!((expanded >> bit) & 1)) {
+        if (pass == all) {  // blending over a pixel whose samples agree: still one colour
+          blend<C>(surface_.color + index * C, c);
+          continue;
+        }
+        expand(index), expanded |= std::uint64_t{1} << bit;
+      }
+      for (unsigned k = pass; k; k &= k - 1) put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
+    }
+  }
+
+  // Barycentric weights where a pixel is shaded: its centre when the triangle covers the centre (or every
+  // sample), else the centroid of its covered samples. `l` holds the centre's on entry.
+  void shading_point(const Block& b, int i, int r, unsigned covered, double (&l)[3]) const {
+    const unsigned all = (1u << surface_.sample_count) - 1;
+    if (covered == all || (!(b.e[0] + i * b.dx[0] + r * b.dy[0] < 0) && !(b.e[1] + i * b.dx[1] + r * b.dy[1] < 0) &&
+                           !(b.e[2] + i * b.dx[2] + r * b.dy[2] < 0)))
+      return;
+    double cx = 0, cy = 0;
+    for (unsigned k = covered; k; k &= k - 1) {
+      const SamplePoint p = surface_.pattern[std::countr_zero(k)];
+      cx += p.x - 128, cy += p.y - 128;
+    }
+    const double count = std::popcount(covered) * 256.0;
+    cx /= count, cy /= count;  // pixels from the centre
+    for (int k = 0; k < 3; ++k) l[k] += (cx * b.dx[k] + cy * b.dy[k]) / b.area;
+  }
+
+  // The colour at a pixel's centre, from the exact edge values; smooth colours clamp to the vertices' range
+  // (a cut pixel's centre may lie outside the triangle).
+  // Multisampled, the shading point of a pixel whose samples `covered` are covered (see shading_point).
+  Rgba8 color_at(const Block& b, int i, int r, unsigned covered = 0) const {
+    if (kind_ != Kind::smooth) return flat_;
+    double l[3];
+    for (int k = 0; k < 3; ++k) l[k] = (b.e[k] + i * b.dx[k] + r * b.dy[k]) / b.area;
+    if (covered) shading_point(b, i, r, covered, l);
+    return planes_.at(l);
+  }
+
+  // Union coverage: adds share (1 for whole pixels, `shares` for cut ones) and share x colour per pixel.
+  void accumulate(const Block& b, const float* shares) const {
+    surface_.expanded_bits(b.x0, b.y0) |= b.mask;
+    for (std::uint64_t m = b.mask; m; m &= m - 1) {
+      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
+      const Rgba8 c = color_at(b, i, r);
+      const float share = shares ? shares[bit] : 1.0f;
+      float* acc = surface_.coverage + surface_.index(b.x0 + i, b.y0 + r) * kUnionFloats;
+      acc[0] += share, acc[1] += share * c.r, acc[2] += share * c.g, acc[3] += share * c.b, acc[4] += share * c.a;
+    }
+  }
+
+  // 3D: depth test (reversed: larger is nearer; ties keep what was drawn first), then perspective-correct
+  // colour and, when lit per pixel, the interpolated normal's Lambert term.
+  void shade_depth(const Block& b) const {
+    const double inv_area = 1.0 / b.area;
+    const float* z = depth_at_;
+    for (int r = 0; r < kBlock; ++r) {
+      unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (!bits) continue;
+      const std::size_t row = surface_.index(b.x0, b.y0 + r);
+      for (; bits; bits &= bits - 1) {
+        const int i = std::countr_zero(bits);
+        // screen-space barycentrics; depth (z / w) is affine in screen space
+        const double l[3] = {(b.e[0] + i * b.dx[0] + r * b.dy[0]) * inv_area,
+                             (b.e[1] + i * b.dx[1] + r * b.dy[1]) * inv_area,
+                             (b.e[2] + i * b.dx[2] + r * b.dy[2]) * inv_area};
+        const float depth = static_cast<float>(l[0] * z[0] + l[1] * z[1] + l[2] * z[2]);
+        float& stored = surface_.depth[row + i];
+        if (!(depth > stored)) continue;
+        stored = depth;
+        std::uint8_t* p = surface_.color + (row + i) * C;
+        if (!mode_.smooth) {
+          put<C>(p, flat_, mode_.blend);
+          continue;
+        }
+        put<C>(p, smooth_color(l), mode_.blend);
+      }
+    }
+  }
+
+  Rgba8 smooth_color(const double (&l)[3]) const {
+    // perspective-correct weights: interpolate attribute / w and 1 / w, then divide
+    double q[3], sum = 0;
+    for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * inv_w_at_[k];
+    for (double& qk : q) qk /= sum;
+    double rgba[4];
+    if (mode_.varying_color)
+      for (int c = 0; c < 4; ++c) rgba[c] = q[0] * attr_[c] + q[1] * attr_[4 + c] + q[2] * attr_[8 + c];
+    else
+      for (int c = 0; c < 4; ++c) rgba[c] = attr_[c];
+    if (uv_at_) texture(l, sum, rgba);
+    if (normal_at_) {
+      const float* n = normal_at_;
+      double nrm[3], p[3] = {0, 0, 0}, shade[3];
+      for (int c = 0; c < 3; ++c) nrm[c] = q[0] * n[c] + q[1] * n[3 + c] + q[2] * n[6 + c];
+      const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+      // A degenerate interpolated normal (opposite vertex normals cancelling) gets the ambient light only.
+      const double scale = len > 0 ? flip_ / len : 0;
+      for (double& c : nrm) c *= scale;
+      if (position_at_)
+        for (int c = 0; c < 3; ++c)
+          p[c] = q[0] * position_at_[c] + q[1] * position_at_[3 + c] + q[2] * position_at_[6 + c];
+      light_at(call_.lights, nrm, p, shade);
+      for (int c = 0; c < 3; ++c) rgba[c] *= shade[c];
+    }
+    return {to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]), to_byte(rgba[3])};
+  }
+
+  // Multiplies `rgba` by the texture at the perspective-correct coordinates of barycentrics `l` (sum: their
+  // 1/w-weighted sum). The level of detail comes from the exact screen derivatives of u / w over 1 / w.
+  void texture(const double (&l)[3], double sum, double (&rgba)[4]) const {
+    const float* uv = uv_at_;
+    double u = 0, v = 0, su_x = 0, sv_x = 0, su_y = 0, sv_y = 0, s_x = 0, s_y = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double w = inv_w_at_[k], wu = w * uv[2 * k], wv = w * uv[2 * k + 1];
+      u += l[k] * wu, v += l[k] * wv;
+      su_x += dl_dx_[k] * wu, sv_x += dl_dx_[k] * wv, s_x += dl_dx_[k] * w;
+      su_y += dl_dy_[k] * wu, sv_y += dl_dy_[k] * wv, s_y += dl_dy_[k] * w;
+    }
+    u /= sum, v /= sum;
+    const MipChain& tex = *call_.texture;
+    const double sx = tex.texture->scale[0], sy = tex.texture->scale[1];
+    const double lod = mip_lod((su_x - u * s_x) / sum * sx, (sv_x - v * s_x) / sum * sy, (su_y - u * s_y) / sum * sx,
+                               (sv_y - v * s_y) / sum * sy, tex.levels[0].width, tex.levels[0].height);
+    float texel[4];
+    tex.sample(u, v, lod, texel);
+    for (int c = 0; c < 4; ++c) rgba[c] *= texel[c];
+  }
+
+  const DrawCall& call_;
+  const PrimitivePlan mode_;
+  const float* attr_;
+  const Surface& surface_;
+  const double flip_;  // two-sided lighting: a back face is lit from the side seen
+  const bool union_;   // area coverage of a multi-triangle primitive: accumulated, composited at its end
+  const bool msaa_;    // multisampling: samples() and whole() keep the pixels' samples
+  float z_offset_[16] = {};  // 3D multisampling: each sample's depth minus the pixel centre's
+  const float* depth_at_ = nullptr;
+  const float* inv_w_at_ = nullptr;
+  const float* normal_at_ = nullptr;
+  const float* position_at_ = nullptr;  // lit by a point light per pixel: 3 x world xyz
+  const float* uv_at_ = nullptr;  // textured calls with a texture: 3 x (u, v)
+  double dl_dx_[3] = {}, dl_dy_[3] = {};  // textured: barycentric change per pixel right and down
+  Rgba8 flat_;
+  enum class Kind : std::uint8_t { flat, smooth, depth } kind_ = Kind::flat;
+  FlatFill<C> fill_;       // Kind::flat
+  ColorPlanes<C> planes_;  // Kind::smooth
+};
+
+}  // namespace raster::detail
