@@ -148,7 +148,7 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
                       std::min(rect.y1, t.box.y1)};
       if (t.call != open) {
         close();
-        if (surface.coverage && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
+        if (coverage == Coverage::area && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
       } else {
         reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0),
                    std::max(reached.x1, clip.x1), std::max(reached.y1, clip.y1)};
@@ -187,7 +187,8 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
   surface.shaded = &scratch.shaded;
   surface.simd = f.plan.simd;
   surface.plane = static_cast<std::size_t>(stride) * block_rows;
-  if (f.plan.samples > 1) {
+  surface.coverage_mode = f.plan.coverage;
+  if (f.plan.coverage == Coverage::samples) {
     surface.sample_count = f.plan.samples;
     surface.pattern = detail::sample_pattern(f.plan.samples).data();
     surface.samples = scratch.samples.get();

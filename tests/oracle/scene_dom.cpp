@@ -1067,12 +1067,11 @@ void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
   if (auto it = doc.find("antialias"); it != doc.end()) {
     const Path at(kRoot, "antialias");
     if (it->is_string() && *it == "area") {
-      scene.area = true;
+      scene.antialias = raster::Antialias::area;
     } else {
       const std::int64_t n = it->is_string() ? 0 : read_integer(*it, at);
-      if (n != 1 && n != 4 && n != 8 && n != 16)
+      if (!raster::antialias_of_samples(n, scene.antialias))
         invalid(at, "\"antialias\" is \"area\" or the samples per pixel: 1, 4, 8 or 16; got " + it->dump());
-      scene.samples = static_cast<int>(n);
     }
   }
   if (auto it = doc.find("background"); it != doc.end())

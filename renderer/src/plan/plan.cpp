@@ -29,7 +29,7 @@ constexpr std::size_t kSmallScenePrimitives = 100;
 constexpr int kTile = 128;
 constexpr int kSampleTile = 64;
 // "antialias": "area" on a scene with 3D content: multisampling at this many samples (docs/accuracy.md).
-constexpr int kAreaFallbackSamples = 8;
+constexpr Antialias kAreaFallback3d = Antialias::msaa8;
 
 struct Box {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -299,8 +299,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
       continue;
     }
     const bool filled = prim.kind == PrimitiveKind::triangle && prim.fill;
-    pp.line_rectangles = !filled && (scene.samples > 1 || scene.area || prim.width != 1);
-    pp.union_coverage = pp.line_rectangles && scene.area;
+    pp.line_rectangles = !filled && (scene.antialias != Antialias::none || prim.width != 1);
+    pp.union_coverage = pp.line_rectangles && scene.antialias == Antialias::area;
     any_union |= pp.union_coverage;
     Box b = bounds(scene, prim);
     if (!filled) {  // a wide line reaches half its width beyond its points
@@ -329,17 +329,18 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
     out.draws.push_back(draw);
   }
 
-  work *= scene.samples;  // every sample plane is drawn
+  work *= sample_count(scene.antialias);  // every sample plane is drawn
   out.format = grey ? (alpha ? PixelFormat::grey_alpha8 : PixelFormat::grey8)
                     : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
   out.memory.color_bytes = image_pixels * channel_count(out.format);
   // "area" is exact for 2D shapes composited one after another; with depth the share of a pixel each
   // triangle covers is not what is visible (and abutting mesh triangles would seam), so 3D gets samples.
-  out.samples = scene.area && any_3d ? kAreaFallbackSamples : scene.samples;
-  out.coverage = scene.area && !any_3d ? Coverage::area
-                 : out.samples > 1     ? Coverage::samples
-                                       : Coverage::centre;
-  if (scene.area && any_3d)
+  const bool area = scene.antialias == Antialias::area;
+  out.samples = sample_count(area && any_3d ? kAreaFallback3d : scene.antialias);
+  out.coverage = area && !any_3d     ? Coverage::area
+                 : out.samples > 1 ? Coverage::samples
+                                   : Coverage::centre;
+  if (area && any_3d)
     for (DrawPlan& d : out.draws) d.mode.union_coverage = false, any_union = false;
   // Multisampled 3D lines are rectangles a pixel wide, so their edges are covered per sample like the rest.
   for (DrawPlan& d : out.draws) {

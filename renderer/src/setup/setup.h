@@ -52,6 +52,9 @@ struct Surface {
   int width = 0;                  ///< pixels per row of all of them (whole blocks)
   int x0 = 0, y0 = 0;             ///< image coordinates of the first pixel
   int channels = 3;
+  /// The plan's coverage: which storage below is in use (samples: `samples` and `expanded`; area, for union
+  /// primitives: `coverage` and `expanded`). Shading reads the mode here; it never infers it.
+  Coverage coverage_mode = Coverage::centre;
   // Multisampling (sample_count > 1). A pixel whose samples all hold one colour keeps it in `color` alone;
   // its bit in `expanded` says when they differ, and then `samples` holds one colour per sample.
   int sample_count = 1;
