@@ -7,11 +7,11 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
-#include <memory>
 #include <vector>
 
 #include "coverage/coverage.h"
 #include "framebuffer/framebuffer.h"
+#include "framebuffer/tiles.h"
 #include "geometry/geometry.h"
 #include "coverage/line.h"
 #include "base/parallel.h"
@@ -29,20 +29,6 @@ struct Frame {
   const detail::Bins& bins;
   const RenderPlan& plan;
   Image& image;
-};
-
-/// One thread's tile storage (RenderPlan::memory): the tile's colour, depth for 3D, and the accumulation
-/// of union-coverage primitives for area coverage.
-struct Scratch {
-  std::vector<std::uint8_t> color;
-  std::vector<float> depth;     // a plane per sample
-  std::vector<float> coverage;  // area: union primitives' accumulation
-  // Multisampling: a colour plane per sample, written before it is read (so never cleared).
-  std::unique_ptr<std::uint8_t[]> samples;
-  std::size_t sample_bytes = 0;
-  std::vector<std::uint64_t> expanded;  // a word per block: which pixels' samples differ (or, area: are
-                                        // accumulated in)
-  std::int64_t shaded = 0;              // pixels shaded, for RenderStats
 };
 
 // The coverage routine the plan's anti-aliasing asks for.
@@ -163,7 +149,7 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
 // (filled from the image, which holds the background there, with depth and the multisampling state
 // cleared), resolved when multisampled, copied back.
 template <int C>
-void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
+void draw_tile(const Frame& f, int tile, detail::TileStorage& scratch, detail::StopMeter& meter) {
   if (f.plan.tiles_in_place) {  // the image is the storage: its rows are whole blocks wide
     detail::Surface surface{f.image.pixels.data(), nullptr, nullptr, f.image.width, 0, 0, C};
     surface.shaded = &scratch.shaded;
@@ -211,7 +197,7 @@ void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& me
   for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(row_of(y), surface.pixel(rect.x0, y), row_bytes);
 }
 
-void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
+void draw_tile(const Frame& f, int tile, detail::TileStorage& scratch, detail::StopMeter& meter) {
   switch (f.image.channels()) {
     case 1:
       return draw_tile<1>(f, tile, scratch, meter);
@@ -261,26 +247,13 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
 
   const int tiles = bins.columns * bins.rows;
   const int threads = std::min(plan.threads, tiles);
-  // Each thread's tile storage, allocated here so the stats below can count it.
-  std::vector<Scratch> scratch(static_cast<std::size_t>(std::max(threads, 1)));
-  const std::size_t tile_pixels = static_cast<std::size_t>(plan.tile_width()) * plan.tile_height();
-  const auto samples = static_cast<std::size_t>(plan.samples);
-  for (Scratch& t : scratch) {
-    if (!plan.tiles_in_place) t.color.resize(tile_pixels * image.channels());
-    if (plan.depth_buffer) t.depth.resize(tile_pixels * samples);
-    if (plan.memory.coverage_bytes) t.coverage.resize(tile_pixels * detail::kUnionFloats);
-    if (samples > 1) {
-      t.sample_bytes = tile_pixels * samples * image.channels();
-      t.samples.reset(new std::uint8_t[t.sample_bytes]);
-    }
-    if (samples > 1 || plan.memory.coverage_bytes) t.expanded.resize(tile_pixels / 64);
-  }
+  // Each thread's tile storage, as the plan sized it; allocated here so the stats below can count it.
+  std::vector<detail::TileStorage> scratch;
+  scratch.reserve(static_cast<std::size_t>(std::max(threads, 1)));
+  for (int t = 0; t < std::max(threads, 1); ++t) scratch.emplace_back(plan.tile_storage);
   if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
     std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
-    for (const Scratch& t : scratch)
-      bytes +=
-          static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float) +
-                                    t.sample_bytes + t.expanded.size() * sizeof(std::uint64_t));
+    for (const detail::TileStorage& t : scratch) bytes += t.bytes();
     control.stats->pixel_bytes = bytes;
     std::size_t bin_bytes = 0;
     for (const detail::Bins::Part& part : bins.parts)
@@ -306,7 +279,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   lap(&RenderStats::tiles_ms);
   if (control.stats) {
     control.stats->shaded_pixels = 0;
-    for (const Scratch& t : scratch) control.stats->shaded_pixels += t.shaded;
+    for (const detail::TileStorage& t : scratch) control.stats->shaded_pixels += t.shaded;
   }
   return image;
 }

@@ -1,5 +1,5 @@
 // Framebuffer: RenderPlan -> the colour buffer in the plan's pixel format, cleared to the background.
-// (Depth, samples and coverage accumulation live in each thread's tile storage, see render.cpp.)
+// (Depth, samples and coverage accumulation live in each thread's tile storage, framebuffer/tiles.h.)
 #pragma once
 
 #include <cstdint>

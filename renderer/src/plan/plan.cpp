@@ -202,6 +202,32 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   return v;
 }
 
+// Every buffer's size, worked out here once: the colour buffer (the output image), and each thread's tile
+// storage, which the framebuffer allocates exactly as `out.tile_storage` says and MemoryPlan counts
+// `out.threads` times. Reads the plan's format, coverage, samples, tile, threads and tiles_in_place.
+void plan_buffers(RenderPlan& out, bool any_union) {
+  const std::int64_t channels = channel_count(out.format), threads = out.threads;
+  TileStoragePlan& t = out.tile_storage;
+  // Each thread draws a tile at a time into storage of its own: the tile's colour and, for 3D, its depth
+  // (the only depth buffer there is). Counted against the limit like the rest; small next to the image.
+  t.pixels = std::int64_t{out.tile_width()} * out.tile_height();
+  t.color_bytes = out.tiles_in_place ? 0 : t.pixels * channels;
+  t.depth_floats = out.depth_buffer ? t.pixels * out.samples : 0;
+  // Multisampling: a colour per sample, used only where a pixel's samples differ (one bit a pixel says so).
+  t.sample_bytes = out.coverage == Coverage::samples ? t.pixels * out.samples * channels : 0;
+  // Union coverage: its accumulation, and a bit a pixel saying which pixels were reached.
+  t.coverage_floats = any_union ? t.pixels * kUnionFloats : 0;
+  t.expanded_words = t.sample_bytes > 0 || t.coverage_floats > 0 ? t.pixels / 64 : 0;
+
+  MemoryPlan& m = out.memory;
+  const std::int64_t expanded_bytes = threads * t.expanded_words * std::int64_t{sizeof(std::uint64_t)};
+  m.color_bytes = std::int64_t{out.width} * out.height * channels;
+  m.tile_bytes = threads * t.color_bytes;
+  m.depth_bytes = threads * t.depth_floats * std::int64_t{sizeof(float)};
+  m.sample_bytes = t.sample_bytes > 0 ? threads * t.sample_bytes + expanded_bytes : 0;
+  m.coverage_bytes = t.coverage_floats > 0 ? threads * t.coverage_floats * std::int64_t{sizeof(float)} + expanded_bytes : 0;
+}
+
 }  // namespace
 
 Simd best_simd() {
@@ -332,7 +358,6 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   work *= sample_count(scene.antialias);  // every sample plane is drawn
   out.format = grey ? (alpha ? PixelFormat::grey_alpha8 : PixelFormat::grey8)
                     : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
-  out.memory.color_bytes = image_pixels * channel_count(out.format);
   // "area" is exact for 2D shapes composited one after another; with depth the share of a pixel each
   // triangle covers is not what is visible (and abutting mesh triangles would seam), so 3D gets samples.
   const bool area = scene.antialias == Antialias::area;
@@ -369,20 +394,8 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   out.threads = small || work < kParallelWorkThreshold ? 1 : std::clamp(tiles, 1, cores);
   out.scalar_coverage = options.scalar_coverage;
   out.simd = std::min(best_simd(), options.max_simd);
-  // Each thread draws a tile at a time into storage of its own: the tile's colour and, for 3D, its depth
-  // (the only depth buffer there is). Counted against the limit like the rest; small next to the image.
-  const std::int64_t tile_pixels = std::int64_t{out.tile_width()} * out.tile_height();
   out.tiles_in_place = !any_3d && out.coverage == Coverage::centre && scene.width % 8 == 0;
-  out.memory.tile_bytes = out.tiles_in_place ? 0 : out.threads * tile_pixels * channel_count(out.format);
-  out.memory.depth_bytes =
-      any_3d ? out.threads * tile_pixels * out.samples * static_cast<std::int64_t>(sizeof(float)) : 0;
-  // Multisampling: a colour per sample, used only where a pixel's samples differ (one bit a pixel says so).
-  if (out.samples > 1)
-    out.memory.sample_bytes =
-        out.threads * tile_pixels * (out.samples * channel_count(out.format)) + out.threads * tile_pixels / 8;
-  if (any_union)  // 5 floats a pixel, and a bit a pixel saying which were reached
-    out.memory.coverage_bytes =
-        out.threads * tile_pixels * 5 * std::int64_t{sizeof(float)} + out.threads * tile_pixels / 8;
+  plan_buffers(out, any_union);
   if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +

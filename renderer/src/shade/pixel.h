@@ -112,10 +112,6 @@ inline void blend_weighted(std::uint8_t* px, Rgba8 c, float w) {
   }
 }
 
-/// Floats a pixel of a union-coverage tile holds (Surface::coverage): the summed share, then the sums of
-/// share x R, G, B, A (0..255 scale).
-inline constexpr int kUnionFloats = 5;
-
 /// Composites the primitive accumulated in `surface.coverage` over `rect`: each pixel with a share takes the
 /// share-weighted mean colour at opacity min(1, summed share) x alpha; the accumulation is cleared for the
 /// next primitive.
