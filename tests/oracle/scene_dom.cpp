@@ -14,7 +14,7 @@
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_dom.h"
-#include "shade/texture.h"
+#include "base/base64.h"
 #include "base/vecmath.h"
 
 namespace raster::scene_json {
@@ -438,7 +438,7 @@ std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const Path
   return out;
 }
 
-// Base64 is the library's own decoder (texture.h): the oracle checks how a scene is read, not base64.
+// Base64 is the library's own decoder (base/base64.h): the oracle checks how a scene is read, not base64.
 // Texels the scene's textures hold so far: what is left of the limit is what the next one may take.
 std::int64_t texels_left(const Scene& scene, const Limits& limits) {
   std::int64_t used = 0;

@@ -25,7 +25,8 @@
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene/scene_format.h"
-#include "shade/texture.h"
+#include "base/base64.h"
+#include "base/stop.h"
 #include "base/vecmath.h"
 
 namespace raster {
