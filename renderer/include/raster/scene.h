@@ -251,7 +251,8 @@ struct Limits {
 /// (wide integers of 384 bits hold every product); beyond it a scene is rejected, not approximated.
 inline constexpr double kMaxCoordinate = 0x1p128;
 
-/// The hard ceiling of the fixed-point design (see geometry.h): no Limits can raise an image above it.
+/// The hard ceiling of the fixed-point design (the 1/256 px grid of renderer/src/base/grid.h and the fast
+/// range of setup/setup.h): no Limits can raise an image above it.
 inline constexpr int kMaxImageSide = 16384;
 
 /// Named uploads a scene can refer to: {"type": "obj", "source": "model"} reads uploads.at("model").

@@ -19,6 +19,7 @@
 #include <immintrin.h>
 #endif
 
+#include "base/grid.h"
 #include "setup/setup.h"
 #include "base/stop.h"
 

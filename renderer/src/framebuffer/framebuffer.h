@@ -8,7 +8,6 @@
 #include "raster/image.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
-#include "setup/setup.h"
 #include "base/stop.h"
 
 namespace raster::detail {

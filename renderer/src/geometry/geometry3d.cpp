@@ -11,7 +11,8 @@
 #include "base/memory.h"
 #include "geometry/normals.h"
 #include "base/parallel.h"
-#include "shade/pixel.h"
+#include "shade/light.h"
+#include "shade/pixel.h"  // to_byte: a line's endpoint colours become bytes as pixels do
 #include "base/vecmath.h"
 
 namespace raster::detail {

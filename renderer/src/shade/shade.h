@@ -12,6 +12,7 @@
 
 #include "coverage/coverage.h"
 #include "shade/fill.h"
+#include "shade/light.h"
 #include "shade/pixel.h"
 #include "raster/image.h"
 #include "raster/scene.h"
