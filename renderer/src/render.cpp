@@ -146,67 +146,33 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
 }
 
 // Draws one tile: straight into the image when the plan says so; else its bin into the thread's tile storage
-// (filled from the image, which holds the background there, with depth and the multisampling state
-// cleared), resolved when multisampled, copied back.
+// (framebuffer/tiles.h), resolved when multisampled, copied back.
 template <int C>
-void draw_tile(const Frame& f, int tile, detail::TileStorage& scratch, detail::StopMeter& meter) {
-  if (f.plan.tiles_in_place) {  // the image is the storage: its rows are whole blocks wide
-    detail::Surface surface{f.image.pixels.data(), nullptr, nullptr, f.image.width, 0, 0, C};
-    surface.shaded = &scratch.shaded;
-    surface.simd = f.plan.simd;
-    return draw_bin<C>(f, tile, surface, meter);
-  }
+void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
+  if (f.plan.tiles_in_place) return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), meter);
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
-  const int w = rect.x1 - rect.x0, rows = rect.y1 - rect.y0;
-  const std::size_t row_bytes = static_cast<std::size_t>(w) * C;
-  // Rows of the storage are whole blocks wide (and planes whole blocks tall): a block at the image's edge
-  // stays in its own rows.
-  const int stride = (w + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
-  const int block_rows = (rows + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
-  detail::Surface surface{scratch.color.data(),
-                          scratch.depth.empty() ? nullptr : scratch.depth.data(),
-                          scratch.coverage.empty() ? nullptr : scratch.coverage.data(),
-                          stride,
-                          rect.x0,
-                          rect.y0,
-                          C};
-  surface.shaded = &scratch.shaded;
-  surface.simd = f.plan.simd;
-  surface.plane = static_cast<std::size_t>(stride) * block_rows;
-  surface.coverage_mode = f.plan.coverage;
-  if (f.plan.coverage == Coverage::samples) {
-    surface.sample_count = f.plan.samples;
-    surface.pattern = detail::sample_pattern(f.plan.samples).data();
-    surface.samples = scratch.samples.get();
-  }
-  if (!scratch.expanded.empty()) {
-    surface.expanded = scratch.expanded.data();
-    std::fill_n(surface.expanded, surface.plane / 64, 0);
-  }
-  auto row_of = [&](int y) {
-    return f.image.pixels.data() + (static_cast<std::size_t>(y) * f.image.width + rect.x0) * C;
-  };
-  for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(surface.pixel(rect.x0, y), row_of(y), row_bytes);
-  if (surface.depth) std::fill_n(surface.depth, surface.plane * surface.sample_count, 0.0f);
+  const detail::SamplePoint* pattern =
+      f.plan.coverage == Coverage::samples ? detail::sample_pattern(f.plan.samples).data() : nullptr;
+  const detail::Surface surface = detail::open_tile<C>(storage, f.plan, pattern, rect, f.image);
   draw_bin<C>(f, tile, surface, meter);
   if (meter.stopped()) return;
   if (surface.sample_count > 1) {
     detail::resolve_samples<C>(surface, rect);
-    meter.add(std::int64_t{w} * rows);
+    meter.add(std::int64_t{rect.x1 - rect.x0} * (rect.y1 - rect.y0));
   }
-  for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(row_of(y), surface.pixel(rect.x0, y), row_bytes);
+  detail::close_tile<C>(surface, rect, f.image);
 }
 
-void draw_tile(const Frame& f, int tile, detail::TileStorage& scratch, detail::StopMeter& meter) {
+void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
   switch (f.image.channels()) {
     case 1:
-      return draw_tile<1>(f, tile, scratch, meter);
+      return draw_tile<1>(f, tile, storage, meter);
     case 2:
-      return draw_tile<2>(f, tile, scratch, meter);
+      return draw_tile<2>(f, tile, storage, meter);
     case 3:
-      return draw_tile<3>(f, tile, scratch, meter);
+      return draw_tile<3>(f, tile, storage, meter);
     default:
-      return draw_tile<4>(f, tile, scratch, meter);
+      return draw_tile<4>(f, tile, storage, meter);
   }
 }
 
@@ -282,14 +248,6 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
     for (const detail::TileStorage& t : scratch) control.stats->shaded_pixels += t.shaded;
   }
   return image;
-}
-
-bool detail::Stop::now() const {
-  if (stopped->load(std::memory_order_relaxed)) return true;
-  const bool stop = (cancel && cancel->load(std::memory_order_relaxed)) ||
-                    (clock && *clock ? (*clock)() : std::chrono::steady_clock::now()) >= deadline;
-  if (stop) stopped->store(true, std::memory_order_relaxed);
-  return stop;
 }
 
 Image render(const Scene& scene, const Limits& limits) {
