@@ -425,6 +425,7 @@ TEST(Core, ATriangleHoldingNoPixelCentreGetsNoRecord) {
   SceneBuilder centre(16, 16);  // the same size around a centre: one record, one pixel
   centre.triangle({5.3, 5.3}, {5.7, 5.3}, {5.5, 5.7}, test::kWhite);
   EXPECT_EQ(records(centre.scene), std::pair(std::int64_t{1}, 1));
-  corner.scene.antialias = raster::Antialias::msaa4;  // a sample of the pattern may lie in it: the record stays
+  // A sample of the pattern may lie in it: the record stays.
+  corner.scene.antialias = raster::Antialias::msaa4;
   EXPECT_EQ(records(corner.scene).first, 1);
 }

@@ -9,12 +9,12 @@
 #include <cstring>
 #include <vector>
 
+#include "base/parallel.h"
 #include "coverage/coverage.h"
+#include "coverage/line.h"
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/tiles.h"
 #include "geometry/geometry.h"
-#include "coverage/line.h"
-#include "base/parallel.h"
 #include "setup/setup.h"
 #include "shade/shade.h"
 
@@ -134,7 +134,8 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
                       std::min(rect.y1, t.box.y1)};
       if (t.call != open) {
         close();
-        if (coverage == Coverage::area && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
+        if (coverage == Coverage::area && f.setup.calls[t.call].mode.union_coverage)
+          open = t.call, reached = clip;
       } else {
         reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0),
                    std::max(reached.x1, clip.x1), std::max(reached.y1, clip.y1)};
@@ -149,14 +150,15 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
 // (framebuffer/tiles.h), resolved when multisampled, copied back.
 template <int C>
 void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
-  if (f.plan.tiles_in_place) return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), meter);
+  if (f.plan.tiles_in_place)
+    return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), meter);
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::SamplePoint* pattern =
       f.plan.coverage == Coverage::samples ? detail::sample_pattern(f.plan.samples).data() : nullptr;
   const detail::Surface surface = detail::open_tile<C>(storage, f.plan, pattern, rect, f.image);
   draw_bin<C>(f, tile, surface, meter);
   if (meter.stopped()) return;
-  if (surface.sample_count > 1) {
+  if (f.plan.coverage == Coverage::samples) {
     detail::resolve_samples<C>(surface, rect);
     meter.add(std::int64_t{rect.x1 - rect.x0} * (rect.y1 - rect.y0));
   }
@@ -174,6 +176,34 @@ void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::S
     default:
       return draw_tile<4>(f, tile, storage, meter);
   }
+}
+
+// The setup's records binned to the plan's tiles: each part on its own (on every render thread for a large
+// mesh's parts). Incomplete once `stop` says the render must stop.
+detail::Bins bin_records(const detail::Setup& setup, const RenderPlan& plan, const detail::Stop& stop) {
+  detail::Bins bins = detail::bin_grid(setup, plan.tile);
+  bins.parts.resize(setup.parts.size());
+  detail::parallel_for(setup.parts.size() > 1 ? plan.threads : 1, setup.parts.size(), stop,
+                       [&](std::size_t p, detail::StopMeter& own, int) {
+                         bins.parts[p] = detail::bin_part(bins, setup, setup.parts[p], own);
+                       });
+  return bins;
+}
+
+// What was actually allocated, for checking against the plan: pixel storage (the image and every thread's
+// tile storage), the bins, and the records and bin entries they hold.
+void count_storage(const detail::Setup& setup, const detail::Bins& bins, const Image& image,
+                   const std::vector<detail::TileStorage>& storage, RenderStats& stats) {
+  std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
+  for (const detail::TileStorage& t : storage) bytes += t.bytes();
+  stats.pixel_bytes = bytes;
+  std::size_t bin_bytes = 0;
+  for (const detail::Bins::Part& part : bins.parts)
+    bin_bytes +=
+        part.records.size() * sizeof(detail::RecordRef) + part.offsets.size() * sizeof(std::uint32_t);
+  stats.bin_bytes = static_cast<std::int64_t>(bin_bytes);
+  stats.records = static_cast<std::int64_t>(setup.record_count());
+  stats.bin_entries = static_cast<std::int64_t>(bins.entry_count());
 }
 
 }  // namespace
@@ -197,13 +227,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const detail::Setup setup = detail::build_setup(scene, plan, meter);
   if (meter.stopped()) cancelled();
   lap(&RenderStats::geometry_ms);
-  // Each part binned on its own (on every render thread for a large mesh's parts).
-  detail::Bins bins = detail::bin_grid(setup, plan.tile);
-  bins.parts.resize(setup.parts.size());
-  detail::parallel_for(setup.parts.size() > 1 ? plan.threads : 1, setup.parts.size(), stop,
-                       [&](std::size_t p, detail::StopMeter& own, int) {
-                         bins.parts[p] = detail::bin_part(bins, setup, setup.parts[p], own);
-                       });
+  const detail::Bins bins = bin_records(setup, plan, stop);
   if (stopped) cancelled();
   lap(&RenderStats::bin_ms);
 
@@ -217,18 +241,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   std::vector<detail::TileStorage> scratch;
   scratch.reserve(static_cast<std::size_t>(std::max(threads, 1)));
   for (int t = 0; t < std::max(threads, 1); ++t) scratch.emplace_back(plan.tile_storage);
-  if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
-    std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
-    for (const detail::TileStorage& t : scratch) bytes += t.bytes();
-    control.stats->pixel_bytes = bytes;
-    std::size_t bin_bytes = 0;
-    for (const detail::Bins::Part& part : bins.parts)
-      bin_bytes +=
-          part.records.size() * sizeof(detail::RecordRef) + part.offsets.size() * sizeof(std::uint32_t);
-    control.stats->bin_bytes = static_cast<std::int64_t>(bin_bytes);
-    control.stats->records = static_cast<std::int64_t>(setup.record_count());
-    control.stats->bin_entries = static_cast<std::int64_t>(bins.entry_count());
-  }
+  if (control.stats) count_storage(setup, bins, image, scratch, *control.stats);
   lap(&RenderStats::clear_ms);
   const Frame frame{setup, bins, plan, image};
   // Tiles are taken column by column; which thread takes one does not change its bytes. Threads drawing at

@@ -157,7 +157,7 @@ struct RenderPlan {
   bool tiles_in_place = false;
   bool scalar_coverage = false;  ///< test hook: partial blocks tested one pixel at a time, not in SIMD lanes
   Simd simd = Simd::sse2;        ///< the kernels' instruction set: the machine's best unless limited
-  TileStoragePlan tile_storage;  ///< what each thread allocates for its tiles (memory counts it threads times)
+  TileStoragePlan tile_storage;  ///< what each thread allocates for its tiles (`memory` counts it per thread)
   MemoryPlan memory;
   PngPlan png;
 

@@ -30,7 +30,8 @@ class TriangleShader {
   TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
                  const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
       : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
-        flip_(record.back_facing ? -1.0 : 1.0), union_(call.mode.union_coverage && surface.coverage_mode == Coverage::area),
+        flip_(record.back_facing ? -1.0 : 1.0),
+        union_(call.mode.union_coverage && surface.coverage_mode == Coverage::area),
         msaa_(surface.coverage_mode == Coverage::samples) {
     const AttributeLayout& layout = call.layout;
     depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
