@@ -34,11 +34,11 @@ std::int64_t to_i64(const T& v) {
 // same pixels. Endpoint attributes are swapped with their endpoints.
 template <typename T>
 struct Span {
-  T u0, v0, u1, v1;
-  Rgba8 c0, c1;
-  float z0, z1;
-  bool draw_first, draw_last;
-  bool x_major;
+  T u0, v0, u1, v1;            ///< endpoints, pixel indices on the major (u) and minor (v) axis; u0 <= u1
+  Rgba8 c0, c1;                ///< colours at (u0, v0) and (u1, v1)
+  float z0, z1;                ///< 3D lines: z / w at each endpoint, reversed
+  bool draw_first, draw_last;  ///< whether (u0, v0) / (u1, v1) is this line's pixel (LineRecord)
+  bool x_major;                ///< u is x (|dx| >= |dy|); else u is y
 };
 
 template <typename T>
@@ -61,9 +61,9 @@ Span<T> canonical(const LineRecord& line) {
 // there.
 template <typename T>
 struct Rows {
-  const T& u0;
-  T two_du, two_dv, base;
-  std::int64_t v_min, v_max;
+  const T& u0;                ///< the span's first column
+  T two_du, two_dv, base;     ///< 2 du, 2 dv and du + 2 du v0: N(u) = two_dv (u - u0) + base
+  std::int64_t v_min, v_max;  ///< the clip's rows on the minor axis, inclusive
   Rows(const Span<T>& s, const T& du, const T& dv, std::int64_t v_lo, std::int64_t v_hi)
       : u0(s.u0), two_du(du + du), two_dv(dv + dv), base(du + two_du * s.v0), v_min(v_lo), v_max(v_hi) {}
   T numerator(std::int64_t u) const { return two_dv * (T(u) - u0) + base; }

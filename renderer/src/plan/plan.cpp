@@ -58,8 +58,8 @@ void check_size(const Scene& scene, const Limits& limits) {
 // What the scene's lights do to the plan: lit colours stay grey only under grey lights, and point lights need
 // each lit pixel's world position.
 struct LightFacts {
-  bool grey = true;
-  bool point = false;
+  bool grey = true;    // every light's colour is grey (r = g = b)
+  bool point = false;  // some light is a point light
 };
 
 LightFacts light_facts(const Scene& scene) {

@@ -11,7 +11,9 @@ namespace raster::detail {
 
 /// The camera's orthonormal basis in world space: the image's right, its up, and the view direction.
 struct ViewBasis {
-  Vec3 side, up, forward;
+  Vec3 side;     ///< unit, world: the image's x (right)
+  Vec3 up;       ///< unit, world: the image's up (y up), side x forward
+  Vec3 forward;  ///< unit, world: from the eye toward the target
 };
 
 /// Fits the camera to the content, checks it has a view direction and an up (SceneError(invalid) naming
