@@ -112,7 +112,7 @@ bool clip_columns(const Rows<T>& rows, bool rising, std::int64_t& lo, std::int64
 template <int C, typename T>
 void draw_line(const LineRecord& line, PrimitivePlan mode, const Surface& surface, Rect clip) {
   const Span<T> s = canonical<T>(line);
-  const T &u0 = s.u0, &u1 = s.u1, &v0 = s.v0, &v1 = s.v1;
+  const T u0 = s.u0, u1 = s.u1, v0 = s.v0, v1 = s.v1;  // copies: the stepping loop keeps them in registers
   const Rgba8 c0 = s.c0, c1 = s.c1;
   const float z0 = s.z0, z1 = s.z1;
   const bool x_major = s.x_major;
@@ -147,7 +147,7 @@ void draw_line(const LineRecord& line, PrimitivePlan mode, const Surface& surfac
   if (!clip_columns(rows, !(dv < T(0)), lo, hi)) return;
 
   // Incremental Bresenham from lo: row v and remainder r = N(u) - 2du v in [0, 2du).
-  const T &two_du = rows.two_du, &two_dv = rows.two_dv;
+  const T two_du = rows.two_du, two_dv = rows.two_dv;
   std::int64_t v = rows.at(lo);
   T r = rows.numerator(lo) - two_du * T(v);
   auto lerp_t = [&](std::int64_t u) {  // (u - u0) / du as a double, for depth only
