@@ -1,6 +1,8 @@
 // Tile storage: RenderPlan::tile_storage -> one render thread's buffers, allocated to exactly the sizes the
-// plan worked out (and counted against the limit). A thread draws one tile at a time in them: the tile's
-// colour, its depth (the only depth buffer there is), the samples' colours and the union accumulation.
+// plan worked out (and counted against the limit): the tile's colour, its depth (the only depth buffer there
+// is), the samples' colours and the union accumulation. A thread draws one tile at a time in them: open_tile
+// (image + tile rectangle -> a cleared Surface over the storage), then close_tile (the finished colour back
+// into the image); image_surface is the Surface of tiles drawn in place.
 #pragma once
 
 #include <algorithm>
