@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -243,9 +244,15 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The scene's "antialias" for a level of rasterd's own.
+raster::Antialias antialias_of(const Level& level) {
+  raster::Antialias mode = raster::Antialias::area;
+  if (!level.area && !raster::antialias_of_samples(level.samples, mode)) std::abort();
+  return mode;
+}
+
 raster::Image render_at(raster::Scene scene, const Level& level, double* ms) {
-  scene.samples = level.samples;
-  scene.area = level.area;
+  scene.antialias = antialias_of(level);
   std::vector<double> times;
   raster::Image img;
   for (int r = 0; r < kRuns; ++r) {
@@ -415,7 +422,7 @@ int main(int argc, char** argv) {
       double ms = 0;
       const raster::Image img = level.cairo ? cairo_render(s, &ms) : render_at(s.scene, level, &ms);
       raster::Scene planned = s.scene;
-      planned.samples = level.samples, planned.area = level.area;
+      planned.antialias = antialias_of(level);
       rows.push_back({s.name, &level, errors(img, ref, edge), ms, raster::plan(planned).samples});
       const Row& r = rows.back();
       std::fprintf(stderr, "%-20s %-6s mean %6.2f p99 %6.1f max %6.1f >8: %5.1f%%  %.3f ms\n", s.name.c_str(),
@@ -527,7 +534,7 @@ int main(int argc, char** argv) {
   plot.scene.width = 720;
   plot.scene.height = 460;
   plot.scene.background = {255, 255, 255, 255};
-  plot.scene.area = true;
+  plot.scene.antialias = raster::Antialias::area;
   const double left = 70, right = 560, top = 40, bottom = 400;
   double t_lo = 1e9, t_hi = 0, e_lo = 1e9, e_hi = 0;
   for (const Row& r : rows)

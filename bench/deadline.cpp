@@ -5,6 +5,7 @@
 // The README's and docs/robustness.md's bound comes from this table: build-bench/bench/deadline
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,15 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+raster::Antialias multisample(int samples) {
+  raster::Antialias mode{};
+  if (!raster::antialias_of_samples(samples, mode)) std::abort();
+  return mode;
+}
+
 raster::Scene covering_triangle(int width, int height, int samples) {
   raster::Scene s;
-  s.width = width, s.height = height, s.samples = samples;
+  s.width = width, s.height = height, s.antialias = multisample(samples);
   const double w = width, h = height;
   const raster::Point2 p[3] = {{-w, -h}, {3 * w, -h}, {-w, 3 * h}};
   const raster::Rgba8 c[3] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
@@ -31,7 +38,7 @@ raster::Scene mesh_scene(int n, int side, int samples) {
   // flat_mesh_json makes a document of its own size; the image size and samples are set here
   raster::Scene s = raster::parse_scene(json);
   s.width = s.height = side;
-  s.samples = samples;
+  s.antialias = multisample(samples);
   return s;
 }
 

@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     raster::Scene scene;
     scene.width = 40;
     scene.height = 30;
-    scene.samples = size % 3 == 0 ? 4 : 1;
+    scene.antialias = size % 3 == 0 ? raster::Antialias::msaa4 : raster::Antialias::none;
     raster::Mesh quad;
     quad.positions = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -20}, {-1, 0, -20}};  // a floor receding: every mip level
     quad.triangles = {{0, 1, 2}, {0, 2, 3}};

@@ -360,7 +360,7 @@ TEST(Multisample, EverySampleFollowsTheRuleAndEachPixelIsShadedOnce) {
       }
       test::SceneBuilder flat(kSide, kSide, kBlack);
       flat.triangle(a, b, c, test::kWhite);
-      flat.scene.samples = samples;
+      flat.scene.antialias = test::multisample(samples);
       const raster::Image img = test::render(flat.scene);
       int touched = 0;
       for (int y = 0; y < kSide; ++y)
@@ -373,7 +373,7 @@ TEST(Multisample, EverySampleFollowsTheRuleAndEachPixelIsShadedOnce) {
       // The same triangle with three vertex colours: shaded once per pixel it touches.
       test::SceneBuilder smooth(kSide, kSide, kBlack);
       smooth.triangle(a, b, c, test::kRed, test::kGreen, test::kBlue);
-      smooth.scene.samples = samples;
+      smooth.scene.antialias = test::multisample(samples);
       raster::RenderStats stats;
       raster::RenderControl control;
       control.stats = &stats;

@@ -58,7 +58,7 @@ double on_grid(double px) {
 }
 
 raster::Image render_area(raster::Scene scene, int threads = 1) {
-  scene.area = true;
+  scene.antialias = raster::Antialias::area;
   return test::render(scene, threads);
 }
 
@@ -217,7 +217,7 @@ TEST(Area, SameBytesForEveryTileSizeAndThreadCount) {
       default: s.triangle(a, b, c, c0, false); break;
     }
   }
-  s.scene.area = true;
+  s.scene.antialias = raster::Antialias::area;
   std::uint64_t first = 0;
   for (int tile : {16, 64, 128})
     for (int threads : {1, 2, 3}) {
@@ -241,7 +241,7 @@ TEST(Area, TheSimdMasksMatchTheScalarPath) {
     s.triangle(a, {a.x + d(rng), a.y + d(rng)}, {a.x + d(rng), a.y + d(rng)},
                Rgba8{static_cast<std::uint8_t>(rng()), 200, 100, 255});
   }
-  s.scene.area = true;
+  s.scene.antialias = raster::Antialias::area;
   raster::PlanOptions scalar;
   scalar.scalar_coverage = true;
   EXPECT_EQ(test::image_hash(raster::render(s.scene, raster::plan(s.scene, {}, scalar))),
@@ -251,7 +251,7 @@ TEST(Area, TheSimdMasksMatchTheScalarPath) {
 TEST(Area, ThePlanKeepsAreaFor2DAndMultisamples3D) {
   raster::Scene flat = raster::parse_scene(R"({"width": 8, "height": 8, "antialias": "area", "primitives": [
       {"type": "line", "points": [[0, 0], [8, 8]], "color": "#ffffff"}]})");
-  EXPECT_TRUE(flat.area);
+  EXPECT_EQ(flat.antialias, raster::Antialias::area);
   const raster::RenderPlan p = raster::plan(flat);
   EXPECT_EQ(p.coverage, raster::Coverage::area);
   EXPECT_EQ(p.samples, 1);

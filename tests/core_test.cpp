@@ -75,7 +75,7 @@ raster::Scene mixed_scene(unsigned seed, int side, int samples = 1) {
   raster::Primitive p;
   p.kind = raster::PrimitiveKind::mesh;
   s.scene.primitives.insert(s.scene.primitives.begin() + 30, p);
-  s.scene.samples = samples;
+  s.scene.antialias = test::multisample(samples);
   return s.scene;
 }
 
@@ -138,8 +138,7 @@ TEST(Core, EverySimdTargetGivesTheBytesOfSse2) {
       std::vector<raster::Scene> scenes = {mixed_scene(seed, 200), large_smooth_scene(seed, false),
                                            large_smooth_scene(seed, true)};
       for (raster::Scene& scene : scenes) {
-        scene.samples = aa ? aa : 1;
-        scene.area = aa == 0;
+        scene.antialias = aa ? test::multisample(aa) : raster::Antialias::area;
         for (int tile : {16, 64}) {
           const raster::Image sse2 = render_at(scene, raster::Simd::sse2, tile);
           ASSERT_EQ(render_at(scene, raster::Simd::avx2, tile).pixels, sse2.pixels)
@@ -257,7 +256,7 @@ TEST(Core, MeshPartsGiveTheBytesOfOneThread) {
   band.camera.eye = {0.5, 0.5, 60}, band.camera.target = {0.5, 0.5, 0}, band.camera.fov_deg = 0.01;
   cases.emplace_back("clipped by the guard band", band);
   raster::Scene msaa = lit;
-  msaa.samples = 4;
+  msaa.antialias = raster::Antialias::msaa4;
   cases.emplace_back("4 samples", msaa);
   for (const auto& [name, scene] : cases) {
     const raster::Image one = render_with(scene, 64, 1);
@@ -426,6 +425,7 @@ TEST(Core, ATriangleHoldingNoPixelCentreGetsNoRecord) {
   SceneBuilder centre(16, 16);  // the same size around a centre: one record, one pixel
   centre.triangle({5.3, 5.3}, {5.7, 5.3}, {5.5, 5.7}, test::kWhite);
   EXPECT_EQ(records(centre.scene), std::pair(std::int64_t{1}, 1));
-  corner.scene.samples = 4;  // a sample of the pattern may lie in it: the record stays
+  // A sample of the pattern may lie in it: the record stays.
+  corner.scene.antialias = raster::Antialias::msaa4;
   EXPECT_EQ(records(corner.scene).first, 1);
 }

@@ -22,7 +22,7 @@ raster::Scene covering_triangles(int side, int count, int samples = 1) {
   const double s = side;
   for (int i = 0; i < count; ++i)
     b.triangle({-s, -s}, {3 * s, -s}, {-s, 3 * s}, test::kRed, test::kGreen, test::kBlue);
-  b.scene.samples = samples;
+  b.scene.antialias = test::multisample(samples);
   return b.scene;
 }
 

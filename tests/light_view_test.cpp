@@ -216,7 +216,7 @@ TEST(Lights, BadLightsAreInvalidWithTheirPointer) {
 TEST(View, TransparentBackgroundGivesAntialiasedRgbaEdges) {
   raster::Scene s = cube_scene({{"view", "front"}});
   s.background = {0, 0, 0, 0};
-  s.samples = 8;
+  s.antialias = raster::Antialias::msaa8;
   const raster::RenderPlan plan = raster::plan(s);
   ASSERT_EQ(plan.format, raster::PixelFormat::rgba8);
   const raster::Image image = raster::render(s, plan);

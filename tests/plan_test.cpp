@@ -146,7 +146,7 @@ TEST(Plan, LinesBecomeRectanglesOnlyWhenWideOrAntialiased) {
   auto p = plan_of(s.scene);
   EXPECT_FALSE(p.draw_of(0)->mode.line_rectangles) << "a 1 px aliased line is Bresenham";
   EXPECT_TRUE(p.draw_of(1)->mode.line_rectangles);
-  s.scene.samples = 4;
+  s.scene.antialias = raster::Antialias::msaa4;
   p = plan_of(s.scene);
   EXPECT_TRUE(p.draw_of(0)->mode.line_rectangles) << "anti-aliased lines are rectangles";
 }

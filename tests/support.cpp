@@ -1,5 +1,6 @@
 #include "support.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -63,6 +64,12 @@ SceneBuilder& SceneBuilder::polyline(std::vector<Point2> points, Rgba8 color, bo
   scene.colors.push_back(color);
   scene.primitives.push_back(p);
   return *this;
+}
+
+raster::Antialias multisample(int samples) {
+  raster::Antialias mode{};
+  if (!raster::antialias_of_samples(samples, mode)) std::abort();
+  return mode;
 }
 
 raster::Image render(const raster::Scene& scene, int threads) {

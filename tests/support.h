@@ -30,6 +30,10 @@ struct SceneBuilder {
   SceneBuilder& polyline(std::vector<Point2> points, Rgba8 color, bool closed);
 };
 
+/// The multisampling mode of `samples` per pixel (1, 4, 8 or 16; anything else aborts the test binary):
+/// for tests that loop over sample counts.
+raster::Antialias multisample(int samples);
+
 /// Renders with a fixed thread count (1 unless a test is about threads).
 raster::Image render(const raster::Scene& scene, int threads = 1);
 

@@ -288,7 +288,7 @@ TEST(Texture, RendersTheSameAtEveryThreadCountAndSampleCount) {
                                    {{-1, -1, 0}, {1, -1, -1}, {1, 1, -2}, {-1, 1, 0}}),
                      300);
   for (const int samples : {1, 4}) {
-    s.samples = samples;
+    s.antialias = test::multisample(samples);
     const auto one = test::render(s, 1), three = test::render(s, 3);
     EXPECT_EQ(one.pixels, three.pixels) << samples << " samples";
   }

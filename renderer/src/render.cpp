@@ -7,14 +7,14 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
-#include <memory>
 #include <vector>
 
-#include "coverage/coverage.h"
-#include "framebuffer/framebuffer.h"
-#include "geometry/geometry.h"
-#include "coverage/line.h"
 #include "base/parallel.h"
+#include "coverage/coverage.h"
+#include "coverage/line.h"
+#include "framebuffer/framebuffer.h"
+#include "framebuffer/tiles.h"
+#include "geometry/geometry.h"
 #include "setup/setup.h"
 #include "shade/shade.h"
 
@@ -29,20 +29,6 @@ struct Frame {
   const detail::Bins& bins;
   const RenderPlan& plan;
   Image& image;
-};
-
-/// One thread's tile storage (RenderPlan::memory): the tile's colour, depth for 3D, and the accumulation
-/// of union-coverage primitives for area coverage.
-struct Scratch {
-  std::vector<std::uint8_t> color;
-  std::vector<float> depth;     // a plane per sample
-  std::vector<float> coverage;  // area: union primitives' accumulation
-  // Multisampling: a colour plane per sample, written before it is read (so never cleared).
-  std::unique_ptr<std::uint8_t[]> samples;
-  std::size_t sample_bytes = 0;
-  std::vector<std::uint64_t> expanded;  // a word per block: which pixels' samples differ (or, area: are
-                                        // accumulated in)
-  std::int64_t shaded = 0;              // pixels shaded, for RenderStats
 };
 
 // The coverage routine the plan's anti-aliasing asks for.
@@ -148,7 +134,8 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
                       std::min(rect.y1, t.box.y1)};
       if (t.call != open) {
         close();
-        if (surface.coverage && f.setup.calls[t.call].mode.union_coverage) open = t.call, reached = clip;
+        if (coverage == Coverage::area && f.setup.calls[t.call].mode.union_coverage)
+          open = t.call, reached = clip;
       } else {
         reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0),
                    std::max(reached.x1, clip.x1), std::max(reached.y1, clip.y1)};
@@ -160,67 +147,63 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
 }
 
 // Draws one tile: straight into the image when the plan says so; else its bin into the thread's tile storage
-// (filled from the image, which holds the background there, with depth and the multisampling state
-// cleared), resolved when multisampled, copied back.
+// (framebuffer/tiles.h), resolved when multisampled, copied back.
 template <int C>
-void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
-  if (f.plan.tiles_in_place) {  // the image is the storage: its rows are whole blocks wide
-    detail::Surface surface{f.image.pixels.data(), nullptr, nullptr, f.image.width, 0, 0, C};
-    surface.shaded = &scratch.shaded;
-    surface.simd = f.plan.simd;
-    return draw_bin<C>(f, tile, surface, meter);
-  }
+void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
+  if (f.plan.tiles_in_place)
+    return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), meter);
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
-  const int w = rect.x1 - rect.x0, rows = rect.y1 - rect.y0;
-  const std::size_t row_bytes = static_cast<std::size_t>(w) * C;
-  // Rows of the storage are whole blocks wide (and planes whole blocks tall): a block at the image's edge
-  // stays in its own rows.
-  const int stride = (w + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
-  const int block_rows = (rows + detail::kBlock - 1) / detail::kBlock * detail::kBlock;
-  detail::Surface surface{scratch.color.data(),
-                          scratch.depth.empty() ? nullptr : scratch.depth.data(),
-                          scratch.coverage.empty() ? nullptr : scratch.coverage.data(),
-                          stride,
-                          rect.x0,
-                          rect.y0,
-                          C};
-  surface.shaded = &scratch.shaded;
-  surface.simd = f.plan.simd;
-  surface.plane = static_cast<std::size_t>(stride) * block_rows;
-  if (f.plan.samples > 1) {
-    surface.sample_count = f.plan.samples;
-    surface.pattern = detail::sample_pattern(f.plan.samples).data();
-    surface.samples = scratch.samples.get();
-  }
-  if (!scratch.expanded.empty()) {
-    surface.expanded = scratch.expanded.data();
-    std::fill_n(surface.expanded, surface.plane / 64, 0);
-  }
-  auto row_of = [&](int y) {
-    return f.image.pixels.data() + (static_cast<std::size_t>(y) * f.image.width + rect.x0) * C;
-  };
-  for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(surface.pixel(rect.x0, y), row_of(y), row_bytes);
-  if (surface.depth) std::fill_n(surface.depth, surface.plane * surface.sample_count, 0.0f);
+  const detail::SamplePoint* pattern =
+      f.plan.coverage == Coverage::samples ? detail::sample_pattern(f.plan.samples).data() : nullptr;
+  const detail::Surface surface = detail::open_tile<C>(storage, f.plan, pattern, rect, f.image);
   draw_bin<C>(f, tile, surface, meter);
   if (meter.stopped()) return;
-  if (surface.sample_count > 1) {
+  if (f.plan.coverage == Coverage::samples) {
     detail::resolve_samples<C>(surface, rect);
-    meter.add(std::int64_t{w} * rows);
+    meter.add(std::int64_t{rect.x1 - rect.x0} * (rect.y1 - rect.y0));
   }
-  for (int y = rect.y0; y < rect.y1; ++y) std::memcpy(row_of(y), surface.pixel(rect.x0, y), row_bytes);
+  detail::close_tile<C>(surface, rect, f.image);
 }
 
-void draw_tile(const Frame& f, int tile, Scratch& scratch, detail::StopMeter& meter) {
+void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
   switch (f.image.channels()) {
     case 1:
-      return draw_tile<1>(f, tile, scratch, meter);
+      return draw_tile<1>(f, tile, storage, meter);
     case 2:
-      return draw_tile<2>(f, tile, scratch, meter);
+      return draw_tile<2>(f, tile, storage, meter);
     case 3:
-      return draw_tile<3>(f, tile, scratch, meter);
+      return draw_tile<3>(f, tile, storage, meter);
     default:
-      return draw_tile<4>(f, tile, scratch, meter);
+      return draw_tile<4>(f, tile, storage, meter);
   }
+}
+
+// The setup's records binned to the plan's tiles: each part on its own (on every render thread for a large
+// mesh's parts). Incomplete once `stop` says the render must stop.
+detail::Bins bin_records(const detail::Setup& setup, const RenderPlan& plan, const detail::Stop& stop) {
+  detail::Bins bins = detail::bin_grid(setup, plan.tile);
+  bins.parts.resize(setup.parts.size());
+  detail::parallel_for(setup.parts.size() > 1 ? plan.threads : 1, setup.parts.size(), stop,
+                       [&](std::size_t p, detail::StopMeter& own, int) {
+                         bins.parts[p] = detail::bin_part(bins, setup, setup.parts[p], own);
+                       });
+  return bins;
+}
+
+// What was actually allocated, for checking against the plan: pixel storage (the image and every thread's
+// tile storage), the bins, and the records and bin entries they hold.
+void count_storage(const detail::Setup& setup, const detail::Bins& bins, const Image& image,
+                   const std::vector<detail::TileStorage>& storage, RenderStats& stats) {
+  std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
+  for (const detail::TileStorage& t : storage) bytes += t.bytes();
+  stats.pixel_bytes = bytes;
+  std::size_t bin_bytes = 0;
+  for (const detail::Bins::Part& part : bins.parts)
+    bin_bytes +=
+        part.records.size() * sizeof(detail::RecordRef) + part.offsets.size() * sizeof(std::uint32_t);
+  stats.bin_bytes = static_cast<std::int64_t>(bin_bytes);
+  stats.records = static_cast<std::int64_t>(setup.record_count());
+  stats.bin_entries = static_cast<std::int64_t>(bins.entry_count());
 }
 
 }  // namespace
@@ -244,13 +227,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const detail::Setup setup = detail::build_setup(scene, plan, meter);
   if (meter.stopped()) cancelled();
   lap(&RenderStats::geometry_ms);
-  // Each part binned on its own (on every render thread for a large mesh's parts).
-  detail::Bins bins = detail::bin_grid(setup, plan.tile);
-  bins.parts.resize(setup.parts.size());
-  detail::parallel_for(setup.parts.size() > 1 ? plan.threads : 1, setup.parts.size(), stop,
-                       [&](std::size_t p, detail::StopMeter& own, int) {
-                         bins.parts[p] = detail::bin_part(bins, setup, setup.parts[p], own);
-                       });
+  const detail::Bins bins = bin_records(setup, plan, stop);
   if (stopped) cancelled();
   lap(&RenderStats::bin_ms);
 
@@ -260,35 +237,11 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
 
   const int tiles = bins.columns * bins.rows;
   const int threads = std::min(plan.threads, tiles);
-  // Each thread's tile storage, allocated here so the stats below can count it.
-  std::vector<Scratch> scratch(static_cast<std::size_t>(std::max(threads, 1)));
-  const std::size_t tile_pixels = static_cast<std::size_t>(plan.tile_width()) * plan.tile_height();
-  const auto samples = static_cast<std::size_t>(plan.samples);
-  for (Scratch& t : scratch) {
-    if (!plan.tiles_in_place) t.color.resize(tile_pixels * image.channels());
-    if (plan.depth_buffer) t.depth.resize(tile_pixels * samples);
-    if (plan.memory.coverage_bytes) t.coverage.resize(tile_pixels * detail::kUnionFloats);
-    if (samples > 1) {
-      t.sample_bytes = tile_pixels * samples * image.channels();
-      t.samples.reset(new std::uint8_t[t.sample_bytes]);
-    }
-    if (samples > 1 || plan.memory.coverage_bytes) t.expanded.resize(tile_pixels / 64);
-  }
-  if (control.stats) {  // what was actually allocated for pixels, for checking against the plan
-    std::int64_t bytes = static_cast<std::int64_t>(image.pixels.size());
-    for (const Scratch& t : scratch)
-      bytes +=
-          static_cast<std::int64_t>(t.color.size() + (t.depth.size() + t.coverage.size()) * sizeof(float) +
-                                    t.sample_bytes + t.expanded.size() * sizeof(std::uint64_t));
-    control.stats->pixel_bytes = bytes;
-    std::size_t bin_bytes = 0;
-    for (const detail::Bins::Part& part : bins.parts)
-      bin_bytes +=
-          part.records.size() * sizeof(detail::RecordRef) + part.offsets.size() * sizeof(std::uint32_t);
-    control.stats->bin_bytes = static_cast<std::int64_t>(bin_bytes);
-    control.stats->records = static_cast<std::int64_t>(setup.record_count());
-    control.stats->bin_entries = static_cast<std::int64_t>(bins.entry_count());
-  }
+  // Each thread's tile storage, as the plan sized it; allocated here so the stats below can count it.
+  std::vector<detail::TileStorage> scratch;
+  scratch.reserve(static_cast<std::size_t>(std::max(threads, 1)));
+  for (int t = 0; t < std::max(threads, 1); ++t) scratch.emplace_back(plan.tile_storage);
+  if (control.stats) count_storage(setup, bins, image, scratch, *control.stats);
   lap(&RenderStats::clear_ms);
   const Frame frame{setup, bins, plan, image};
   // Tiles are taken column by column; which thread takes one does not change its bytes. Threads drawing at
@@ -305,17 +258,9 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   lap(&RenderStats::tiles_ms);
   if (control.stats) {
     control.stats->shaded_pixels = 0;
-    for (const Scratch& t : scratch) control.stats->shaded_pixels += t.shaded;
+    for (const detail::TileStorage& t : scratch) control.stats->shaded_pixels += t.shaded;
   }
   return image;
-}
-
-bool detail::Stop::now() const {
-  if (stopped->load(std::memory_order_relaxed)) return true;
-  const bool stop = (cancel && cancel->load(std::memory_order_relaxed)) ||
-                    (clock && *clock ? (*clock)() : std::chrono::steady_clock::now()) >= deadline;
-  if (stop) stopped->store(true, std::memory_order_relaxed);
-  return stop;
 }
 
 Image render(const Scene& scene, const Limits& limits) {

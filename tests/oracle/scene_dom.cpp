@@ -14,7 +14,7 @@
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_dom.h"
-#include "shade/texture.h"
+#include "base/base64.h"
 #include "base/vecmath.h"
 
 namespace raster::scene_json {
@@ -438,7 +438,7 @@ std::vector<std::array<std::uint32_t, 3>> read_indices(const json& v, const Path
   return out;
 }
 
-// Base64 is the library's own decoder (texture.h): the oracle checks how a scene is read, not base64.
+// Base64 is the library's own decoder (base/base64.h): the oracle checks how a scene is read, not base64.
 // Texels the scene's textures hold so far: what is left of the limit is what the next one may take.
 std::int64_t texels_left(const Scene& scene, const Limits& limits) {
   std::int64_t used = 0;
@@ -1067,12 +1067,11 @@ void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
   if (auto it = doc.find("antialias"); it != doc.end()) {
     const Path at(kRoot, "antialias");
     if (it->is_string() && *it == "area") {
-      scene.area = true;
+      scene.antialias = raster::Antialias::area;
     } else {
       const std::int64_t n = it->is_string() ? 0 : read_integer(*it, at);
-      if (n != 1 && n != 4 && n != 8 && n != 16)
+      if (!raster::antialias_of_samples(n, scene.antialias))
         invalid(at, "\"antialias\" is \"area\" or the samples per pixel: 1, 4, 8 or 16; got " + it->dump());
-      scene.samples = static_cast<int>(n);
     }
   }
   if (auto it = doc.find("background"); it != doc.end())

@@ -64,7 +64,25 @@ struct ViewPlan {
   std::vector<LightPlan> lights;  ///< the scene's lights (or the default ones) in world space
 };
 
-/// Bytes of pixel storage each buffer will take; checked against the limits before allocation.
+/// Floats a pixel of area-coverage accumulation holds (union primitives): the summed share, then the sums of
+/// share x R, G, B, A (0..255 scale).
+inline constexpr int kUnionFloats = 5;
+
+/// One render thread's tile storage, in the units it is allocated in: the plan works these out once and
+/// the framebuffer allocates exactly them (framebuffer/tiles.h). Every buffer is a whole tile
+/// (RenderPlan::tile_width() x tile_height() pixels); a size is 0 when the render does not use the buffer.
+struct TileStoragePlan {
+  std::int64_t pixels = 0;           ///< tile_width() x tile_height(), a multiple of 64 (whole 8x8 blocks)
+  std::int64_t color_bytes = 0;      ///< channels a pixel; 0 when tiles draw in place
+  std::int64_t depth_floats = 0;     ///< a float a sample (reversed z / w); 0 without 3D content
+  std::int64_t sample_bytes = 0;     ///< multisampling: channels a sample
+  std::int64_t coverage_floats = 0;  ///< area coverage with union primitives: kUnionFloats a pixel
+  std::int64_t expanded_words = 0;   ///< a bit a pixel in 64-bit words (one per 8x8 block), with samples
+                                     ///< or union coverage: which pixels' samples differ / were accumulated
+};
+
+/// Bytes of pixel storage each buffer will take, over all threads; checked against the limits before
+/// allocation. The per-thread buffers are RenderPlan::threads times RenderPlan::tile_storage.
 struct MemoryPlan {
   std::int64_t color_bytes = 0;   ///< the colour buffer, which is also the output Image
   std::int64_t depth_bytes = 0;   ///< depth: one tile's per thread (4 bytes a sample); 0 for 2D scenes
@@ -139,6 +157,7 @@ struct RenderPlan {
   bool tiles_in_place = false;
   bool scalar_coverage = false;  ///< test hook: partial blocks tested one pixel at a time, not in SIMD lanes
   Simd simd = Simd::sse2;        ///< the kernels' instruction set: the machine's best unless limited
+  TileStoragePlan tile_storage;  ///< what each thread allocates for its tiles (`memory` counts it per thread)
   MemoryPlan memory;
   PngPlan png;
 

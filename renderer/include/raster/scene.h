@@ -173,6 +173,40 @@ struct Primitive {
 };
 static_assert(sizeof(Primitive) == 24);
 
+/// How edges are smoothed ("antialias"): the one value every later decision comes from (the plan turns it
+/// into RenderPlan::coverage and RenderPlan::samples; nothing after the plan looks at it).
+enum class Antialias : std::uint8_t {
+  none,    ///< "antialias": 1 (the default): a pixel is covered or not, tested at its centre
+  msaa4,   ///< "antialias": 4: multisampling at 4 positions of the standard pattern
+  msaa8,   ///< "antialias": 8
+  msaa16,  ///< "antialias": 16
+  area,    ///< "antialias": "area": every pixel takes the exact share of its square each 2D shape covers;
+           ///< 3D content is multisampled instead (see the plan)
+};
+
+/// The sample counts "antialias" accepts as a number, each with its mode: the one place the set is written.
+struct SampleCount {
+  int samples;  ///< per pixel
+  Antialias antialias;
+};
+inline constexpr SampleCount kSampleCounts[] = {
+    {1, Antialias::none}, {4, Antialias::msaa4}, {8, Antialias::msaa8}, {16, Antialias::msaa16}};
+
+/// Positions tested per pixel: 1 for none, and for area (which measures the square instead of sampling it).
+constexpr int sample_count(Antialias antialias) {
+  for (const SampleCount& c : kSampleCounts)
+    if (c.antialias == antialias) return c.samples;
+  return 1;
+}
+
+/// The mode of "antialias" given as a number of samples; false (and `out` untouched) for any count not in
+/// kSampleCounts.
+constexpr bool antialias_of_samples(std::int64_t samples, Antialias& out) {
+  for (const SampleCount& c : kSampleCounts)
+    if (c.samples == samples) return out = c.antialias, true;
+  return false;
+}
+
 /// The image dimensions, their background and the primitives drawn over it in array order.
 struct Scene {
   int width = 0;   ///< pixels, >= 1
@@ -184,9 +218,7 @@ struct Scene {
   std::vector<Mesh> meshes;           ///< 3D content, referenced by mesh primitives
   Camera camera;                      ///< used only when the scene has 3D content
   std::vector<Light> lights;          ///< lights of meshes; empty: default_lights()
-  int samples = 1;                    ///< "antialias" as a number: samples per pixel, 1 (aliased), 4, 8 or 16
-  bool area = false;  ///< "antialias": "area": every pixel takes the exact share of its square each shape
-                      ///< covers (samples stays 1); 3D content gets multisampling instead (see the plan)
+  Antialias antialias = Antialias::none;  ///< "antialias"; the plan turns it into coverage and samples
   /// Field by field; the two scene readers are tested to agree by it.
   friend bool operator==(const Scene&, const Scene&) = default;
 
@@ -219,7 +251,8 @@ struct Limits {
 /// (wide integers of 384 bits hold every product); beyond it a scene is rejected, not approximated.
 inline constexpr double kMaxCoordinate = 0x1p128;
 
-/// The hard ceiling of the fixed-point design (see geometry.h): no Limits can raise an image above it.
+/// The hard ceiling of the fixed-point design (the 1/256 px grid of renderer/src/base/grid.h and the fast
+/// range of setup/setup.h): no Limits can raise an image above it.
 inline constexpr int kMaxImageSide = 16384;
 
 /// Named uploads a scene can refer to: {"type": "obj", "source": "model"} reads uploads.at("model").

@@ -48,7 +48,7 @@ constexpr auto fields(T& s) {
                     s.width, s.mesh);
   else if constexpr (std::is_same_v<U, Scene>)
     return std::tie(s.width, s.height, s.background, s.primitives, s.points, s.colors, s.meshes, s.camera,
-                    s.lights, s.samples, s.area);
+                    s.lights, s.antialias);
 }
 
 namespace fields_detail {
@@ -106,9 +106,15 @@ consteval bool raw() {
 /// numbers as their bytes, and every vector and string led by its length, so no two different values give the
 /// same bytes ([a][bc] and [ab][c] differ). Padding is never written: a struct is written field by field
 /// unless it has none.
+/// Antialias is written as the two fields it replaced (the samples as an int, then whether it is area), so
+/// that every scene keeps the ETag it had before they became one value.
 template <class T, class Out>
 void write_canonical(const T& v, Out& out) {
-  if constexpr (fields_detail::raw<T>()) {
+  if constexpr (std::is_same_v<T, Antialias>) {
+    const int samples = sample_count(v);
+    const bool area = v == Antialias::area;
+    out(&samples, sizeof samples), out(&area, sizeof area);
+  } else if constexpr (fields_detail::raw<T>()) {
     out(&v, sizeof v);
   } else if constexpr (std::is_same_v<T, std::string>) {
     const std::uint64_t n = v.size();

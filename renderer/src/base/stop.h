@@ -21,6 +21,8 @@ struct Stop {
   Budget* budget = nullptr;  ///< optional: asked for memory a stage has counted
   /// Bytes of the first ask the budget refused (0: none); a refusal stops the render as the deadline does.
   std::atomic<std::int64_t>* refused = nullptr;
+  /// True once the render must stop (another thread saw it, the caller cancelled, or the deadline passed);
+  /// remembered in `stopped` for every thread.
   bool now() const;
   /// Asks the budget for `bytes` (true without one); a refusal is remembered and stops every thread.
   bool reserve(std::int64_t bytes) const {

@@ -1,5 +1,8 @@
 #include "coverage/coverage.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace raster::detail {
 
 const std::vector<SamplePoint>& sample_pattern(int samples) {
@@ -31,15 +34,17 @@ const std::vector<SamplePoint>& sample_pattern(int samples) {
                                                            {6, 7},
                                                            {-7, -8}});
   switch (samples) {
+    case 1:
+      return one;
     case 4:
       return four;
     case 8:
       return eight;
     case 16:
       return sixteen;
-    default:
-      return one;
   }
+  // The plan takes its counts from kSampleCounts (scene.h): any other is a bug, not a request for 1.
+  throw std::logic_error("no sample pattern for " + std::to_string(samples) + " samples a pixel");
 }
 
 }  // namespace raster::detail

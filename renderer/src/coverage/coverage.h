@@ -19,12 +19,14 @@
 #include <immintrin.h>
 #endif
 
+#include "base/grid.h"
 #include "setup/setup.h"
 #include "base/stop.h"
 
 namespace raster::detail {
 
-/// The standard (Direct3D) sample patterns for 1, 4, 8 and 16 samples, on the 1/256 px grid.
+/// The standard (Direct3D) sample pattern for each count of kSampleCounts (scene.h), on the 1/256 px grid.
+/// Throws std::logic_error for any other count.
 const std::vector<SamplePoint>& sample_pattern(int samples);
 
 /// One block of coverage. Bit (8 r + i) of `mask` is set when pixel (x0 + i, y0 + r) is covered. The edge

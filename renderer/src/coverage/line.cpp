@@ -5,49 +5,123 @@
 #include <type_traits>
 #include <utility>
 
-#include "shade/pixel.h"
 #include "base/wide.h"
+#include "shade/pixel.h"
 
 namespace raster::detail {
 namespace {
 
 // ---- Lines: symmetric Bresenham, clipped before stepping ------------------------------------------------
 
+template <typename T>
+T to_t(double v) {
+  if constexpr (std::is_same_v<T, Wide>)
+    return Wide::from_double(v);
+  else
+    return static_cast<T>(v);
+}
+
+template <typename T>
+std::int64_t to_i64(const T& v) {
+  if constexpr (std::is_same_v<T, Wide>)
+    return v.low64();
+  else
+    return static_cast<std::int64_t>(v);
+}
+
+// A line record in canonical order, on its major axis u (x when |dx| >= |dy|) and minor axis v: the first
+// endpoint has the smaller u (then v), decided exactly, so a->b and b->a become the same line, hence the
+// same pixels. Endpoint attributes are swapped with their endpoints.
+template <typename T>
+struct Span {
+  T u0, v0, u1, v1;            ///< endpoints, pixel indices on the major (u) and minor (v) axis; u0 <= u1
+  Rgba8 c0, c1;                ///< colours at (u0, v0) and (u1, v1)
+  float z0, z1;                ///< 3D lines: z / w at each endpoint, reversed
+  bool draw_first, draw_last;  ///< whether (u0, v0) / (u1, v1) is this line's pixel (LineRecord)
+  bool x_major;                ///< u is x (|dx| >= |dy|); else u is y
+};
+
+template <typename T>
+Span<T> canonical(const LineRecord& line) {
+  Span<T> s{to_t<T>(line.x0), to_t<T>(line.y0), to_t<T>(line.x1), to_t<T>(line.y1), line.c0, line.c1,
+            line.depth0,      line.depth1,      line.draw_first,  line.draw_last,   false};
+  auto abs_t = [](const T& v) { return v < T(0) ? -v : v; };
+  s.x_major = !(abs_t(s.u1 - s.u0) < abs_t(s.v1 - s.v0));
+  if (!s.x_major) std::swap(s.u0, s.v0), std::swap(s.u1, s.v1);
+  if (s.u1 < s.u0 || (s.u1 == s.u0 && s.v1 < s.v0)) {
+    std::swap(s.u0, s.u1), std::swap(s.v0, s.v1), std::swap(s.c0, s.c1), std::swap(s.draw_first, s.draw_last);
+    std::swap(s.z0, s.z1);
+  }
+  return s;
+}
+
+// The Bresenham row of column u is the one nearest the exact line through the two pixel centres, ties
+// toward larger v: v(u) = floor(N(u) / 2du) with N(u) = 2 (u - u0) dv + du + 2 du v0. Rows outside the
+// clip rows [v_min, v_max] are reported as v_min - 1 or v_max + 1: only whether they are inside matters
+// there.
+template <typename T>
+struct Rows {
+  const T& u0;                ///< the span's first column
+  T two_du, two_dv, base;     ///< 2 du, 2 dv and du + 2 du v0: N(u) = two_dv (u - u0) + base
+  std::int64_t v_min, v_max;  ///< the clip's rows on the minor axis, inclusive
+  Rows(const Span<T>& s, const T& du, const T& dv, std::int64_t v_lo, std::int64_t v_hi)
+      : u0(s.u0), two_du(du + du), two_dv(dv + dv), base(du + two_du * s.v0), v_min(v_lo), v_max(v_hi) {}
+  T numerator(std::int64_t u) const { return two_dv * (T(u) - u0) + base; }
+  std::int64_t at(std::int64_t u) const {
+    return floor_div_clamped(numerator(u), two_du, v_min - 1, v_max + 1);
+  }
+};
+
+// Narrows the columns [lo, hi] to those whose row is inside the clip rows. v(u) is monotone, so they form
+// one interval: its ends are found by bisection, and the cost is then the visible length, however far the
+// endpoints lie outside. False when no column is left.
+template <typename T>
+bool clip_columns(const Rows<T>& rows, bool rising, std::int64_t& lo, std::int64_t& hi) {
+  {  // first column that has reached the clip rows
+    std::int64_t a = lo, b = hi + 1;
+    while (a < b) {
+      const std::int64_t m = a + (b - a) / 2;
+      const std::int64_t v = rows.at(m);
+      if (rising ? v < rows.v_min : v > rows.v_max)
+        a = m + 1;
+      else
+        b = m;
+    }
+    lo = a;
+  }
+  auto inside = [&](std::int64_t u) {
+    const std::int64_t v = rows.at(u);
+    return v >= rows.v_min && v <= rows.v_max;
+  };
+  if (lo > hi || !inside(lo)) return false;
+  {  // last column still inside the clip rows
+    std::int64_t a = lo, b = hi;
+    while (a < b) {
+      const std::int64_t m = a + (b - a + 1) / 2;
+      if (inside(m))
+        a = m;
+      else
+        b = m - 1;
+    }
+    hi = a;
+  }
+  return true;
+}
+
 // T is __int128 for endpoints within 2^60 px (every product below fits), Wide beyond.
 template <int C, typename T>
 void draw_line(const LineRecord& line, PrimitivePlan mode, const Surface& surface, Rect clip) {
-  auto to_t = [](double v) {
-    if constexpr (std::is_same_v<T, Wide>)
-      return Wide::from_double(v);
-    else
-      return static_cast<T>(v);
-  };
-  T x0 = to_t(line.x0), y0 = to_t(line.y0), x1 = to_t(line.x1), y1 = to_t(line.y1);
-  Rgba8 c0 = line.c0, c1 = line.c1;
-  float z0 = line.depth0, z1 = line.depth1;
-  bool draw_first = line.draw_first, draw_last = line.draw_last;
-  // Canonical order, decided exactly: along the major axis (x when |dx| >= |dy|) the first endpoint has
-  // the smaller coordinate. a->b and b->a become the same line, hence the same pixels.
-  auto abs_t = [](const T& v) { return v < T(0) ? -v : v; };
-  const bool x_major = !(abs_t(x1 - x0) < abs_t(y1 - y0));
-  if (!x_major) std::swap(x0, y0), std::swap(x1, y1);  // from here on: u = x0/x1 axis, v = y0/y1 axis
-  if (x1 < x0 || (x1 == x0 && y1 < y0)) {
-    std::swap(x0, x1), std::swap(y0, y1), std::swap(c0, c1), std::swap(draw_first, draw_last);
-    std::swap(z0, z1);
-  }
-  const T &u0 = x0, &u1 = x1, &v0 = y0, &v1 = y1;
+  const Span<T> s = canonical<T>(line);
+  const T u0 = s.u0, u1 = s.u1, v0 = s.v0, v1 = s.v1;  // copies: the stepping loop keeps them in registers
+  const Rgba8 c0 = s.c0, c1 = s.c1;
+  const float z0 = s.z0, z1 = s.z1;
+  const bool x_major = s.x_major;
   const T du = u1 - u0, dv = v1 - v0;  // du >= |dv| >= 0
   const std::int64_t u_min = x_major ? clip.x0 : clip.y0, u_max = (x_major ? clip.x1 : clip.y1) - 1;
   const std::int64_t v_min = x_major ? clip.y0 : clip.x0, v_max = (x_major ? clip.y1 : clip.x1) - 1;
 
   // Visible columns: [u0, u1] minus the joint pixels owned by neighbouring segments, within the clip.
-  auto to_i64 = [](const T& v) -> std::int64_t {
-    if constexpr (std::is_same_v<T, Wide>)
-      return v.low64();
-    else
-      return static_cast<std::int64_t>(v);
-  };
-  const T first = draw_first ? u0 : u0 + T(1), last = draw_last ? u1 : u1 - T(1);
+  const T first = s.draw_first ? u0 : u0 + T(1), last = s.draw_last ? u1 : u1 - T(1);
   if (last < T(u_min) || T(u_max) < first || last < first) return;
   std::int64_t lo = first < T(u_min) ? u_min : to_i64(first);
   std::int64_t hi = T(u_max) < last ? u_max : to_i64(last);
@@ -69,50 +143,13 @@ void draw_line(const LineRecord& line, PrimitivePlan mode, const Surface& surfac
     if (!(v0 < T(v_min)) && !(T(v_max) < v0)) plot(lo, to_i64(v0), std::max(z0, z1), [&] { return c0; });
     return;
   }
-
-  // The Bresenham row of column u is the one nearest the exact line through the two pixel centres, ties
-  // toward larger v: v(u) = floor(N(u) / 2du) with N(u) = 2 (u - u0) dv + du + 2 du v0. Rows outside the
-  // clip are reported as v_min - 1 or v_max + 1: only whether they are inside matters there.
-  const T two_du = du + du, two_dv = dv + dv;
-  const T base = du + two_du * v0;
-  auto numerator = [&](std::int64_t u) { return two_dv * (T(u) - u0) + base; };
-  auto v_at = [&](std::int64_t u) { return floor_div_clamped(numerator(u), two_du, v_min - 1, v_max + 1); };
-
-  // v(u) is monotone, so the columns whose row is inside the clip form one interval: find its ends by
-  // bisection. The cost is then the visible length, however far the endpoints lie outside.
-  const bool rising = !(dv < T(0));
-  {  // first column that has reached the clip rows
-    std::int64_t a = lo, b = hi + 1;
-    while (a < b) {
-      const std::int64_t m = a + (b - a) / 2;
-      const std::int64_t v = v_at(m);
-      if (rising ? v < v_min : v > v_max)
-        a = m + 1;
-      else
-        b = m;
-    }
-    lo = a;
-  }
-  auto inside = [&](std::int64_t u) {
-    const std::int64_t v = v_at(u);
-    return v >= v_min && v <= v_max;
-  };
-  if (lo > hi || !inside(lo)) return;
-  {  // last column still inside the clip rows
-    std::int64_t a = lo, b = hi;
-    while (a < b) {
-      const std::int64_t m = a + (b - a + 1) / 2;
-      if (inside(m))
-        a = m;
-      else
-        b = m - 1;
-    }
-    hi = a;
-  }
+  const Rows<T> rows(s, du, dv, v_min, v_max);
+  if (!clip_columns(rows, !(dv < T(0)), lo, hi)) return;
 
   // Incremental Bresenham from lo: row v and remainder r = N(u) - 2du v in [0, 2du).
-  std::int64_t v = v_at(lo);
-  T r = numerator(lo) - two_du * T(v);
+  const T two_du = rows.two_du, two_dv = rows.two_dv;
+  std::int64_t v = rows.at(lo);
+  T r = rows.numerator(lo) - two_du * T(v);
   auto lerp_t = [&](std::int64_t u) {  // (u - u0) / du as a double, for depth only
     if constexpr (std::is_same_v<T, Wide>)
       return (T(u) - u0).to_double() / du.to_double();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "raster/image.h"
+#include "framebuffer/surface.h"
 #include "setup/setup.h"
 #include "base/stop.h"
 

@@ -1,5 +1,5 @@
 // Framebuffer: RenderPlan -> the colour buffer in the plan's pixel format, cleared to the background.
-// (Depth, samples and coverage accumulation live in each thread's tile storage, see render.cpp.)
+// (Depth, samples and coverage accumulation live in each thread's tile storage, framebuffer/tiles.h.)
 #pragma once
 
 #include <cstdint>
@@ -8,7 +8,6 @@
 #include "raster/image.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
-#include "setup/setup.h"
 #include "base/stop.h"
 
 namespace raster::detail {

@@ -7,12 +7,13 @@
 #include <span>
 #include <tuple>
 
-#include "geometry/geometry.h"
 #include "base/memory.h"
-#include "geometry/normals.h"
 #include "base/parallel.h"
-#include "shade/pixel.h"
 #include "base/vecmath.h"
+#include "geometry/geometry.h"
+#include "geometry/normals.h"
+#include "shade/light.h"
+#include "shade/pixel.h"  // to_byte: a line's endpoint colours become bytes as pixels do
 
 namespace raster::detail {
 namespace {
@@ -29,7 +30,8 @@ ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
   ClipVertex r;
   r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t,
   r.w = a.w + (b.w - a.w) * t;
-  for (int k = 0; k < kAttributes; ++k) r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
+  for (int k = 0; k < kAttributes; ++k)
+    r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
   return r;
 }
 
@@ -242,13 +244,56 @@ struct TriangleJob {
 
   // Triangles [begin, end) into `part`, in order.
   void run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const;
+  // What the shading of triangle `t` interpolates, per vertex: colours (lit per face when flat), normals,
+  // texture coordinates, world positions. Returns the triangle's draw call (its texture's, when textured).
+  // `face`: its counter-clockwise world normal; `back`: seen from behind.
+  [[gnu::always_inline]] inline std::uint32_t vertices(std::size_t t, const Vec3& face, bool back,
+                                                       SetupVertex (&dv)[3]) const;
 };
+
+std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, SetupVertex (&dv)[3]) const {
+  const Mesh& mesh = view.mesh;
+  const PodArray<Vec3>& world = view.world;
+  const auto& tri = mesh.triangles[t];
+  float shade[3] = {1, 1, 1};
+  if (mode.lit && !mode.light_per_pixel) {  // flat: once per face, lit from the side seen, at its centroid
+    const Vec3 n = normalize(back ? face * -1.0 : face);
+    const Vec3 c = (world[tri[0]] + world[tri[1]] + world[tri[2]]) * (1.0 / 3);
+    double lit[3];
+    light_at(view.plan.view.lights, {n.x, n.y, n.z}, {c.x, c.y, c.z}, lit);
+    for (int k = 0; k < 3; ++k) shade[k] = static_cast<float>(lit[k]);
+  }
+  std::uint32_t triangle_call = call;
+  if (mode.textured) {
+    const std::int32_t texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
+    if (texture >= 0) triangle_call = texture_calls[static_cast<std::size_t>(texture)];
+    for (int k = 0; k < 3; ++k) {
+      const auto& uv = mesh.uvs[mesh.uv_triangles[t][k]];
+      dv[k].uv[0] = uv[0], dv[k].uv[1] = uv[1];
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    const Rgba8 c = view.color_at(t, tri[k]);
+    dv[k].color[0] = c.r * shade[0], dv[k].color[1] = c.g * shade[1], dv[k].color[2] = c.b * shade[2];
+    dv[k].color[3] = c.a;
+    if (mode.light_per_pixel) {
+      const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
+      dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
+      dv[k].normal[2] = static_cast<float>(n.z);
+    }
+    if (mode.position_per_pixel) {
+      const Vec3& p = world[tri[k]];
+      dv[k].position[0] = static_cast<float>(p.x), dv[k].position[1] = static_cast<float>(p.y),
+      dv[k].position[2] = static_cast<float>(p.z);
+    }
+  }
+  return triangle_call;
+}
 
 void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
   const PodArray<Vec3>& world = view.world;
-  const bool light_per_pixel = mode.light_per_pixel;
   const std::size_t floats = static_cast<std::size_t>(setup.calls[call].layout.size);
   part.triangles.reserve_more(end - begin), part.order.reserve_more(end - begin);
   part.attributes.reserve_more((end - begin) * floats);
@@ -278,40 +323,9 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
       if (!setup.fast_record(fast, record, order)) continue;
     }
 
-    float shade[3] = {1, 1, 1};
-    if (mode.lit && !light_per_pixel) {  // flat: once per face, lit from the side seen, at its centroid
-      const Vec3 n = normalize(back ? face * -1.0 : face);
-      const Vec3 c = (world[tri[0]] + world[tri[1]] + world[tri[2]]) * (1.0 / 3);
-      double lit[3];
-      light_at(camera.lights, {n.x, n.y, n.z}, {c.x, c.y, c.z}, lit);
-      for (int k = 0; k < 3; ++k) shade[k] = static_cast<float>(lit[k]);
-    }
     // The vertices' colours (lit per face) and normals, onto the projected vertices or the clip polygon.
     SetupVertex dv[3];
-    std::uint32_t triangle_call = call;
-    if (mode.textured) {
-      const std::int32_t texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
-      if (texture >= 0) triangle_call = texture_calls[static_cast<std::size_t>(texture)];
-      for (int k = 0; k < 3; ++k) {
-        const auto& uv = mesh.uvs[mesh.uv_triangles[t][k]];
-        dv[k].uv[0] = uv[0], dv[k].uv[1] = uv[1];
-      }
-    }
-    for (int k = 0; k < 3; ++k) {
-      const Rgba8 c = view.color_at(t, tri[k]);
-      dv[k].color[0] = c.r * shade[0], dv[k].color[1] = c.g * shade[1], dv[k].color[2] = c.b * shade[2];
-      dv[k].color[3] = c.a;
-      if (light_per_pixel) {
-        const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
-        dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
-        dv[k].normal[2] = static_cast<float>(n.z);
-      }
-      if (mode.position_per_pixel) {
-        const Vec3& p = world[tri[k]];
-        dv[k].position[0] = static_cast<float>(p.x), dv[k].position[1] = static_cast<float>(p.y),
-        dv[k].position[2] = static_cast<float>(p.z);
-      }
-    }
+    const std::uint32_t triangle_call = vertices(t, face, back, dv);
     if (any_out == 0) {  // inside every plane: the vertices were projected once
       for (int k = 0; k < 3; ++k)
         dv[k].depth = view.screen[tri[k]].depth, dv[k].inv_w = view.screen[tri[k]].inv_w;
@@ -380,7 +394,8 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
 }
 
 // A projected segment as the rectangle `width` pixels wide around it (butt caps), two triangles whose depth
-// and 1/w are the endpoints' across the width: how multisampling draws 3D lines, and how wide edges are drawn.
+// and 1/w are the endpoints' across the width: how multisampling draws 3D lines, and how wide edges are
+// drawn.
 void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, double ay, double ad, double aw,
                         double bx, double by, double bd, double bw, double width, std::uint32_t call,
                         Setup& setup) {
@@ -401,8 +416,8 @@ void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, dou
 
 // One 3D segment through clipping and projection: a line record, or with `mode.line_rectangles` the
 // rectangle `width` pixels wide around it.
-void add_segment(const MeshView& view, ClipVertex a, ClipVertex b, const PrimitivePlan& mode, std::uint32_t call,
-                 double width, Setup& setup) {
+void add_segment(const MeshView& view, ClipVertex a, ClipVertex b, const PrimitivePlan& mode,
+                 std::uint32_t call, double width, Setup& setup) {
   if (!clip_segment(a, b, view.planes)) return;
   double ax, ay, ad, aw, bx, by, bd, bw;
   view.viewport.project(a, ax, ay, ad, aw);
@@ -425,7 +440,8 @@ void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setu
   const Mesh& mesh = view.mesh;
   std::vector<std::array<std::uint32_t, 2>> segments = mesh.segments;
   std::vector<std::array<Rgba8, 2>> segment_colors;
-  for (const auto& s : mesh.segments) segment_colors.push_back({view.vertex_color(s[0]), view.vertex_color(s[1])});
+  for (const auto& s : mesh.segments)
+    segment_colors.push_back({view.vertex_color(s[0]), view.vertex_color(s[1])});
   if (mesh.wireframe) {
     std::vector<std::tuple<std::uint32_t, std::uint32_t, std::size_t>> edges;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -488,10 +504,10 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
   };
   const double cos_crease = std::cos(mesh.edges.crease_deg * std::numbers::pi / 180);
   const Vec3 forward = normalize(camera.target - camera.eye);
-  const double pixel_at_unit = (camera.projection == Projection::perspective
-                                    ? 2 * std::tan(camera.fov_deg * std::numbers::pi / 360)
-                                    : 0) /
-                               view.plan.height;
+  const double pixel_at_unit =
+      (camera.projection == Projection::perspective ? 2 * std::tan(camera.fov_deg * std::numbers::pi / 360)
+                                                    : 0) /
+      view.plan.height;
   const double ortho_pixel = camera.height / view.plan.height;
   // The endpoint in clip space, with the depth it would have two pixels nearer the eye: moving it along its
   // ray to the eye leaves it where it is on screen and changes only z. The depth stops at the near plane: on
@@ -537,7 +553,8 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
 
 }  // namespace
 
-void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup, StopMeter& meter) {
+void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup,
+              StopMeter& meter) {
   MeshView view(mesh, plan);
   if (!view.project(meter)) return;
   if (!mesh.wireframe && !mesh.triangles.empty()) add_triangles(view, draw.mode, setup, meter);

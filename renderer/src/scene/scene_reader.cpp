@@ -25,7 +25,8 @@
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene/scene_format.h"
-#include "shade/texture.h"
+#include "base/base64.h"
+#include "base/stop.h"
 #include "base/vecmath.h"
 
 namespace raster {
@@ -1076,11 +1077,9 @@ constexpr Field<Keys> kRootFields[] = {
        if (r.in.peek() == Kind::string) {
          const std::string_view s = r.in.string();
          if (s != "area") r.invalid(at, rule + "\"" + std::string(s) + "\"");
-         return void(r.scene.area = true);
+         return void(r.scene.antialias = Antialias::area);
        }
-       const std::int64_t n = r.integer(at);
-       if (n != 1 && n != 4 && n != 8 && n != 16) r.invalid(at, rule + r.number_text());
-       r.scene.samples = static_cast<int>(n);
+       if (!antialias_of_samples(r.integer(at), r.scene.antialias)) r.invalid(at, rule + r.number_text());
      }},
     {"camera", format::kObject, "a camera object",
      [](Reader& r, Keys&, const Path& at) {

@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "base/grid.h"
 #include "base/memory.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
@@ -18,64 +19,11 @@
 
 namespace raster::detail {
 
-inline constexpr int kSubpixelBits = 8;                             ///< GPU-style 8 sub-pixel bits
-inline constexpr std::int64_t kSubpixelScale = 1 << kSubpixelBits;  ///< fixed-point units per pixel
 
 /// Triangles whose vertices all lie within +-kFastRangePx take the int64 records: snapped coordinates fit
 /// in 24 bits, so every edge value at a pixel of the image fits in 50 bits (exact in a double, too).
 /// Others take the exact wide records (wide.h).
 inline constexpr double kFastRangePx = 32768.0;
-
-/// Coverage works on square blocks of this many pixels a side; tiles are whole blocks.
-inline constexpr int kBlock = 8;
-
-/// A half-open pixel rectangle [x0, x1) x [y0, y1): tiles, bounding boxes, clip regions.
-struct Rect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  bool empty() const { return x0 >= x1 || y0 >= y1; }
-};
-
-/// Where in each pixel coverage is tested: 1/256 px from the pixel's top-left corner; (128, 128) is the
-/// centre. Multisampling tests every position of a standard pattern.
-struct SamplePoint {
-  std::int32_t x = 128, y = 128;
-};
-
-/// Where a tile draws: a tile's own colour (and depth) storage, row-major, holding the pixels of image
-/// rectangle [x0, x0 + width) x [y0, ...). Small and contiguous, so a tile's pixels stay in the nearest
-/// cache however wide the image is (rows of a 1024-px RGB image are 3 KiB apart and alias in the L1).
-struct Surface {
-  std::uint8_t* color = nullptr;  ///< channels per pixel as the image's format
-  float* depth = nullptr;         ///< z / w (reversed: larger is nearer) per sample, or nullptr without 3D;
-                                  ///< multisampled: `sample_count` planes of `plane` values, sample-major
-  float* coverage = nullptr;      ///< area coverage of union primitives: kUnionFloats (pixel.h) a pixel
-  int width = 0;                  ///< pixels per row of all of them (whole blocks)
-  int x0 = 0, y0 = 0;             ///< image coordinates of the first pixel
-  int channels = 3;
-  // Multisampling (sample_count > 1). A pixel whose samples all hold one colour keeps it in `color` alone;
-  // its bit in `expanded` says when they differ, and then `samples` holds one colour per sample.
-  int sample_count = 1;
-  const SamplePoint* pattern = nullptr;  ///< the sample positions, sample_count of them
-  std::size_t plane = 0;                 ///< pixels per sample plane (width x the tile's rows in blocks)
-  std::uint8_t* samples = nullptr;       ///< sample_count planes of colour, each laid out like `color`
-  /// One word per 8x8 block, row-major, bit 8 r + i per pixel: multisampling, the pixels whose samples
-  /// differ; area coverage, the pixels a union primitive has accumulated coverage in.
-  std::uint64_t* expanded = nullptr;
-  std::int64_t* shaded = nullptr;        ///< counts pixels shaded (once per pixel per triangle)
-  Simd simd = Simd::sse2;                ///< the plan's choice of kernels
-  std::uint64_t& expanded_bits(int bx, int by) const {  // the word of the block at image pixel (bx, by)
-    return expanded[static_cast<std::size_t>((by - y0) / 8) * static_cast<std::size_t>(width / 8) +
-                    static_cast<std::size_t>((bx - x0) / 8)];
-  }
-  std::size_t index(int x, int y) const {
-    return static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x - x0);
-  }
-  std::uint8_t* pixel(int x, int y) const { return color + index(x, y) * static_cast<std::size_t>(channels); }
-  template <int C>  ///< the same, for kernels compiled for C channels (== channels)
-  std::uint8_t* pixel(int x, int y) const {
-    return color + index(x, y) * C;
-  }
-};
 
 /// Attribute floats of a record, in this order, only those its call needs:
 ///   colour: 3 x RGBA (mode.varying_color), or 1 x RGBA
@@ -235,9 +183,5 @@ Bins bin_grid(const Setup& setup, int tile);
 /// Bins every record of `part` by its bounding box, skipping tiles a triangle's edges exclude entirely.
 /// Returns early, incomplete, once `meter` says the render must stop.
 Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, StopMeter& meter);
-
-/// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
-/// whole pixels translates the result exactly.
-double snap(double px);
 
 }  // namespace raster::detail

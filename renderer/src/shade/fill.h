@@ -20,7 +20,6 @@
 
 #include "coverage/coverage.h"
 #include "shade/pixel.h"
-#include "setup/setup.h"
 
 namespace raster::detail {
 

@@ -1,7 +1,7 @@
 // Pixel operations: how one colour becomes bytes (rounding, clamping), how it is written (store,
 // source-over, weighted source-over), and the per-tile passes that finish pixels (union compositing,
-// multisample resolve), plus Lambert lighting, which geometry also uses per face. Templated on the
-// framebuffer's channel count so per-pixel code has no format branches.
+// multisample resolve). Templated on the framebuffer's channel count so per-pixel code has no format
+// branches.
 #pragma once
 
 #include <algorithm>
@@ -13,7 +13,7 @@
 
 #include "raster/image.h"
 #include "raster/plan.h"
-#include "setup/setup.h"
+#include "framebuffer/surface.h"
 
 namespace raster::detail {
 
@@ -112,10 +112,6 @@ inline void blend_weighted(std::uint8_t* px, Rgba8 c, float w) {
   }
 }
 
-/// Floats a pixel of a union-coverage tile holds (Surface::coverage): the summed share, then the sums of
-/// share x R, G, B, A (0..255 scale).
-inline constexpr int kUnionFloats = 5;
-
 /// Composites the primitive accumulated in `surface.coverage` over `rect`: each pixel with a share takes the
 /// share-weighted mean colour at opacity min(1, summed share) x alpha; the accumulation is cleared for the
 /// next primitive.
@@ -198,24 +194,5 @@ struct ByteMasks {
 };
 template <int C>
 inline constexpr ByteMasks<C> kByteMasks{};
-
-/// Lambert under the view's lights (scene.h: Light): `out` = the sum over lights of colour x intensity x
-/// (ambient: 1; directional, point: max(0, n . toward the light)), for the unit normal n of the side seen at
-/// world point p. Used per face by geometry (flat lighting) and per pixel by the triangle shader (shade.h).
-inline void light_at(std::span<const LightPlan> lights, const double (&n)[3], const double (&p)[3],
-                     double (&out)[3]) {
-  out[0] = out[1] = out[2] = 0;
-  for (const LightPlan& l : lights) {
-    double f = 1;
-    if (l.kind == LightKind::directional) {
-      f = std::max(0.0, n[0] * l.to_light.x + n[1] * l.to_light.y + n[2] * l.to_light.z);
-    } else if (l.kind == LightKind::point) {
-      const double d[3] = {l.position.x - p[0], l.position.y - p[1], l.position.z - p[2]};
-      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      f = len > 0 ? std::max(0.0, (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / len) : 1;  // at the lamp: lit
-    }
-    for (int c = 0; c < 3; ++c) out[c] += l.rgb[c] * f;
-  }
-}
 
 }  // namespace raster::detail

@@ -12,6 +12,7 @@
 
 #include "coverage/coverage.h"
 #include "shade/fill.h"
+#include "shade/light.h"
 #include "shade/pixel.h"
 #include "raster/image.h"
 #include "raster/scene.h"
@@ -29,8 +30,9 @@ class TriangleShader {
   TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
                  const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
       : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
-        flip_(record.back_facing ? -1.0 : 1.0), union_(call.mode.union_coverage && surface.coverage),
-        msaa_(surface.sample_count > 1) {
+        flip_(record.back_facing ? -1.0 : 1.0),
+        union_(call.mode.union_coverage && surface.coverage_mode == Coverage::area),
+        msaa_(surface.coverage_mode == Coverage::samples) {
     const AttributeLayout& layout = call.layout;
     depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
     inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;

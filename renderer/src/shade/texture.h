@@ -14,14 +14,6 @@
 #include "raster/scene.h"
 #include "base/stop.h"
 
-namespace raster {
-
-/// Standard base64 (RFC 4648 section 4, '=' padding optional), or a data URI holding it: the image files a
-/// scene carries inline. False on any other character.
-bool decode_base64(std::string_view text, std::string& out);
-
-}  // namespace raster
-
 namespace raster::detail {
 
 /// One level of a mip chain: `width` x `height` texels of straight RGBA8, sRGB colour, rows from the top.

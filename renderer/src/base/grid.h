@@ -1,0 +1,33 @@
+// Grid: the pixel and sub-pixel grid every stage after the plan works on. Pixel (i, j) is the square
+// [i, i+1) x [j, j+1); coverage tests points on a 1/256 px fixed-point grid (a pixel's centre is (128, 128)
+// of its 256 x 256 units), in square blocks of kBlock pixels. Coordinates go in as pixels (snap) and come out
+// as integral 1/256 px units.
+#pragma once
+
+#include <cstdint>
+
+namespace raster::detail {
+
+inline constexpr int kSubpixelBits = 8;                             ///< GPU-style 8 sub-pixel bits
+inline constexpr std::int64_t kSubpixelScale = 1 << kSubpixelBits;  ///< fixed-point units per pixel
+
+/// Coverage works on square blocks of this many pixels a side; tiles are whole blocks.
+inline constexpr int kBlock = 8;
+
+/// A half-open pixel rectangle [x0, x1) x [y0, y1): tiles, bounding boxes, clip regions.
+struct Rect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+/// Where in each pixel coverage is tested: 1/256 px from the pixel's top-left corner; (128, 128) is the
+/// centre. Multisampling tests every position of a standard pattern.
+struct SamplePoint {
+  std::int32_t x = 128, y = 128;
+};
+
+/// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
+/// whole pixels translates the result exactly.
+double snap(double px);
+
+}  // namespace raster::detail

@@ -1,0 +1,92 @@
+// Explain: RenderPlan -> the words a caller reads about it (the JSON document of --explain and ?explain=1,
+// and the one-line X-Render-Plan header). Says what the plan decided; decides nothing.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "raster/plan.h"
+
+namespace raster {
+namespace {
+
+const char* format_name(PixelFormat f) {
+  switch (f) {
+    case PixelFormat::grey8:
+      return "grey8";
+    case PixelFormat::grey_alpha8:
+      return "grey_alpha8";
+    case PixelFormat::rgb8:
+      return "rgb8";
+    case PixelFormat::rgba8:
+      return "rgba8";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string explain_json(const RenderPlan& p) {
+  nlohmann::ordered_json j;
+  j["width"] = p.width;
+  j["height"] = p.height;
+  j["format"] = format_name(p.format);
+  j["channels"] = channel_count(p.format);
+  j["depth_buffer"] = p.depth_buffer;
+  j["samples"] = p.samples;
+  j["simd"] = p.simd == Simd::avx2 ? "avx2" : "sse2";
+  j["tiles_in_place"] = p.tiles_in_place;
+  j["antialias"] = p.coverage == Coverage::area      ? "area"
+                   : p.coverage == Coverage::samples ? "multisample"
+                                                     : "none";
+  j["primitives"] = {{"flat", p.flat_count},        {"smooth", p.smooth_count},
+                     {"blend", p.blend_count},      {"culled", p.culled_count},
+                     {"lit", p.lit_count},          {"triangles_3d", p.triangles_3d},
+                     {"textured", p.textured_count}};
+  if (p.depth_buffer) {
+    const ViewPlan& v = p.view;
+    j["camera"] = {{"projection", v.projection == Projection::perspective ? "perspective" : "orthographic"},
+                   {"eye", {v.eye.x, v.eye.y, v.eye.z}},
+                   {"target", {v.target.x, v.target.y, v.target.z}},
+                   {"up", {v.up.x, v.up.y, v.up.z}},
+                   {"fov", v.fov_deg},
+                   {"near", v.near},
+                   {"far", v.far},
+                   {"height", v.height}};
+  }
+  if (p.lit_count > 0) {  // in world space, as resolved for this view
+    nlohmann::ordered_json lights = nlohmann::ordered_json::array();
+    for (const LightPlan& l : p.view.lights) {
+      nlohmann::ordered_json o;
+      o["type"] = l.kind == LightKind::ambient ? "ambient"
+                  : l.kind == LightKind::point ? "point"
+                                               : "directional";
+      if (l.kind == LightKind::directional) o["toward_light"] = {l.to_light.x, l.to_light.y, l.to_light.z};
+      if (l.kind == LightKind::point) o["position"] = {l.position.x, l.position.y, l.position.z};
+      o["rgb"] = {l.rgb[0], l.rgb[1], l.rgb[2]};
+      lights.push_back(o);
+    }
+    j["lights"] = lights;
+  }
+  j["work"] = p.work;
+  j["threads"] = p.threads;
+  j["tile"] = p.tile;
+  j["memory_bytes"] = {{"color", p.memory.color_bytes},
+                       {"depth", p.memory.depth_bytes},
+                       {"samples", p.memory.sample_bytes},
+                       {"tiles", p.memory.tile_bytes},
+                       {"coverage", p.memory.coverage_bytes},
+                       {"textures", p.memory.texture_bytes},
+                       {"total", p.memory.total()}};
+  j["png"] = {{"color_type", p.png.color_type}, {"deflate_level", p.png.deflate_level}};
+  return j.dump(2);
+}
+
+std::string explain_line(const RenderPlan& p) {
+  return std::string(format_name(p.format)) + " depth=" + (p.depth_buffer ? "f32" : "none") +
+         " samples=" + (p.coverage == Coverage::area ? std::string("area") : std::to_string(p.samples)) +
+         " flat=" + std::to_string(p.flat_count) + " smooth=" + std::to_string(p.smooth_count) +
+         " blend=" + std::to_string(p.blend_count) + " culled=" + std::to_string(p.culled_count) +
+         (p.lit_count ? " lit=" + std::to_string(p.lit_count) : "") + " threads=" + std::to_string(p.threads);
+}
+
+}  // namespace raster
