@@ -18,8 +18,9 @@
 #include "raster/raster.h"
 #include "scenes.h"
 
-// tinygltf's declarations, configured as the library compiles it (renderer/src/model/gltf.cpp), whose copy of the
-// implementation the model/tinygltf rows call: its own load, without our reading of the result.
+// tinygltf's declarations, configured as the library compiles it (renderer/src/model/gltf_document.h),
+// whose copy of the implementation the model/tinygltf rows call: its own load, without our reading of the
+// result.
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #define TINYGLTF_NO_EXTERNAL_IMAGE

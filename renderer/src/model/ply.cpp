@@ -2,6 +2,10 @@
 // and their properties, then the data in ASCII or binary of either byte order. The vertex element gives
 // positions and, when present, normals and colours; the face element gives index lists. Every count the
 // header declares is checked against the bytes that are left before anything is sized from it.
+//
+// parse_ply in three steps: the header (read_header, then check_elements against the data's size), the
+// data element by element (read_fixed for binary entries of one size, read_values value by value for the
+// rest), and the faces, split into triangles as they come (Faces).
 #include <algorithm>
 #include <bit>
 #include <charconv>
@@ -278,15 +282,17 @@ std::uint8_t colour_byte(double v, Type t) {
   return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255));
 }
 
-}  // namespace
+// The vertex and face elements of a header, checked against the data after it before anything is sized
+// from their counts, and what the vertices hold.
+struct Layout {
+  const Element* vertex = nullptr;  ///< the "vertex" element, which has x, y and z
+  const Element* face = nullptr;    ///< the "face" element, which has a list of vertex indices
+  bool normals = false;             ///< the vertices have nx, ny and nz
+  bool colours = false;             ///< the vertices have red, green and blue
+};
 
-Mesh parse_ply(std::string_view bytes, const Limits& limits) {
-  if (!(bytes.starts_with("ply\n") || bytes.starts_with("ply\r\n")))
-    ply_error("the file does not start with \"ply\" and a line break", 1);
-  const Header h = read_header(bytes);
-  const std::size_t data_bytes = bytes.size() - h.data;
-  const Element* vertex = nullptr;
-  const Element* face = nullptr;
+Layout check_elements(const Header& h, std::size_t data_bytes, const Limits& limits) {
+  Layout l;
   for (const Element& e : h.elements) {
     // Checked before anything is sized from a count: a 100-byte file can declare 2^60 vertices.
     const std::uint64_t least = min_bytes(e, h.encoding);
@@ -294,45 +300,136 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       ply_error("element \"" + e.name + "\" declares " + std::to_string(e.count) + " entries, but the " +
                     std::to_string(data_bytes) + " bytes of data after the header cannot hold them",
                 e.line);
-    if (e.name == "vertex") vertex = &e;
-    if (e.name == "face") face = &e;
+    if (e.name == "vertex") l.vertex = &e;
+    if (e.name == "face") l.face = &e;
   }
-  if (!vertex || vertex->count == 0) ply_error("the model has no vertices (no \"element vertex\")");
+  if (!l.vertex || l.vertex->count == 0) ply_error("the model has no vertices (no \"element vertex\")");
   bool has[12] = {};
-  for (const Property& p : vertex->properties) has[static_cast<int>(p.role)] = true;
+  for (const Property& p : l.vertex->properties) has[static_cast<int>(p.role)] = true;
   if (!has[int(Role::x)] || !has[int(Role::y)] || !has[int(Role::z)])
-    ply_error("the vertex element has no x, y and z properties", vertex->line);
-  if (!face || face->count == 0)
+    ply_error("the vertex element has no x, y and z properties", l.vertex->line);
+  if (!l.face || l.face->count == 0)
     ply_error("the model has no faces (no \"element face\"); rasterd draws faces");
-  if (face->count > static_cast<std::uint64_t>(limits.max_obj_faces))
+  if (l.face->count > static_cast<std::uint64_t>(limits.max_obj_faces))
     throw SceneError(ErrorKind::limit,
                      "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
-  if (std::none_of(face->properties.begin(), face->properties.end(),
+  if (std::none_of(l.face->properties.begin(), l.face->properties.end(),
                    [](const Property& p) { return p.role == Role::indices; }))
-    ply_error("the face element has no \"vertex_indices\" list", face->line);
-  const bool normals = has[int(Role::nx)] && has[int(Role::ny)] && has[int(Role::nz)];
-  const bool colours = has[int(Role::red)] && has[int(Role::green)] && has[int(Role::blue)];
-  // The header counts what the mesh will hold (faces of more than three corners become more triangles,
-  // each of which the limit counts, so at most max_obj_faces of them).
-  detail::reserve(limits,
-                  cost::kPlyPerFace * static_cast<std::int64_t>(face->count) +
-                      cost::kPlyPerVertex * static_cast<std::int64_t>(vertex->count),
-                  [&] {
-                    return "the model's " + std::to_string(face->count) + " faces and " +
-                           std::to_string(vertex->count) + " vertices";
-                  });
+    ply_error("the face element has no \"vertex_indices\" list", l.face->line);
+  l.normals = has[int(Role::nx)] && has[int(Role::ny)] && has[int(Role::nz)];
+  l.colours = has[int(Role::red)] && has[int(Role::green)] && has[int(Role::blue)];
+  return l;
+}
 
-  Mesh mesh;
-  Values in(bytes, h);
-  std::vector<std::uint32_t> corners;                // a face's vertices
+// What the vertex element's value of a property with `role` sets.
+inline void set_vertex_value(Role role, double v, Type type, Vec3& pos, Vec3& normal, Rgba8& colour) {
+  switch (role) {
+    case Role::x:
+      pos.x = v;
+      break;
+    case Role::y:
+      pos.y = v;
+      break;
+    case Role::z:
+      pos.z = v;
+      break;
+    case Role::nx:
+      normal.x = v;
+      break;
+    case Role::ny:
+      normal.y = v;
+      break;
+    case Role::nz:
+      normal.z = v;
+      break;
+    case Role::red:
+      colour.r = colour_byte(v, type);
+      break;
+    case Role::green:
+      colour.g = colour_byte(v, type);
+      break;
+    case Role::blue:
+      colour.b = colour_byte(v, type);
+      break;
+    case Role::alpha:
+      colour.a = colour_byte(v, type);
+      break;
+    default:
+      break;
+  }
+}
+
+// Vertex i, once its properties are read, into the mesh (sized for every vertex by then).
+inline void store(Mesh& mesh, const Layout& l, const Values& in, std::uint64_t i, const Vec3& pos,
+                  const Vec3& normal, Rgba8 colour) {
+  if (!(std::fabs(pos.x) <= kMaxCoordinate && std::fabs(pos.y) <= kMaxCoordinate &&
+        std::fabs(pos.z) <= kMaxCoordinate))
+    ply_error("vertex " + std::to_string(i) + " has a coordinate that is not a finite number within +-2^128",
+              in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
+  mesh.positions[i] = pos;
+  if (l.normals) mesh.normals[i] = normal;
+  if (l.colours) mesh.colors[i] = colour;
+}
+
+// Binary entries of one size (no lists): checked once for the whole element, then each vertex property
+// read at its offset, the others passed over, rather than value by value; another element is skipped.
+void read_fixed(const Element& e, const Layout& l, const Header& h, std::size_t file_size, Values& in,
+                Mesh& mesh) {
+  const std::uint64_t stride = min_bytes(e, h.encoding);
+  if (e.count * stride > in.left())  // e.count <= data bytes / stride: no overflow
+    ply_error("element \"" + e.name + "\" ends after the data", e.line, file_size);
+  if (&e != l.vertex) return void(in.take(static_cast<std::size_t>(e.count * stride)));
+  struct Field {
+    std::size_t offset;  ///< bytes from the entry's start
+    Type type;
+    Role role;
+  };
+  std::vector<Field> fields;
+  std::size_t offset = 0;
+  for (const Property& p : e.properties) {
+    if (p.role != Role::none) fields.push_back({offset, p.type, p.role});
+    offset += kSize[static_cast<int>(p.type)];
+  }
+  const bool swapped = in.swapped();
+  for (std::uint64_t i = 0; i < e.count; ++i) {
+    const unsigned char* entry = in.take(static_cast<std::size_t>(stride));
+    Vec3 pos, normal;
+    Rgba8 colour;
+    for (const Field& f : fields)
+      set_vertex_value(f.role, load(entry + f.offset, f.type, swapped), f.type, pos, normal, colour);
+    store(mesh, l, in, i, pos, normal, colour);
+  }
+}
+
+// The faces, split into triangles as they come; those read before the vertices (legal, if rare) are kept,
+// their corners one after another and how many each has, and split once the positions are known.
+struct Faces {
+  Mesh& mesh;
+  const Limits& limits;
+  std::vector<std::uint32_t> corners;                // the face at hand's vertices
   std::vector<Vec3> polygon;                         // their positions, for a face of more than three
   std::vector<std::array<std::uint32_t, 3>> pieces;  // its triangles, as indices into corners
   PolygonSplitter splitter;
-  // Faces read before the vertices (legal, if rare): their corners, one after another, and how many each
-  // has; split once the positions are known.
   std::vector<std::uint32_t> early_corners, early_sizes;
   std::size_t early_triangles = 0;
-  auto add_face = [&] {
+
+  // The face at hand, now or once the vertices are read.
+  void add_or_keep() {
+    if (!mesh.positions.empty()) return add();
+    early_triangles += corners.size() - 2;
+    if (early_triangles > static_cast<std::size_t>(limits.max_obj_faces))
+      throw SceneError(ErrorKind::limit,
+                       "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+    early_corners.insert(early_corners.end(), corners.begin(), corners.end());
+    early_sizes.push_back(static_cast<std::uint32_t>(corners.size()));
+  }
+  void add_early() {
+    for (std::size_t f = 0, at = 0; f < early_sizes.size(); at += early_sizes[f++]) {
+      corners.assign(early_corners.begin() + at, early_corners.begin() + at + early_sizes[f]);
+      add();
+    }
+  }
+  void add() {
     // The limit counts triangles, as for STL and glTF: one face of a million corners is a million.
     if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_obj_faces))
       throw SceneError(ErrorKind::limit,
@@ -345,154 +442,97 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
     for (const std::uint32_t c : corners) polygon.push_back(mesh.positions[c]);
     splitter.split(polygon, pieces);
     for (const auto& t : pieces) mesh.triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
-  };
+  }
+};
+
+// List property p of entry i of element e: the face's vertex indices into `faces`, any other list passed
+// over.
+void read_list(const Element& e, const Property& p, std::uint64_t i, const Layout& l, Values& in,
+               Faces& faces) {
+  const double n = in.read(p.count_type);
+  if (n != std::floor(n))  // ASCII: "3.5" is no length
+    ply_error("a list's length in " + e.name + " " + std::to_string(i) + " is not a whole number", in.line());
+  const std::uint64_t items = n >= 0 && n < 4294967296.0 ? static_cast<std::uint64_t>(n) : UINT64_MAX;
+  if (items == UINT64_MAX || (!in.ascii() && items * kSize[int(p.type)] > in.left()) ||
+      (in.ascii() && items > in.left()))
+    ply_error("a list of " + std::to_string(n) + " items in " + e.name + " " + std::to_string(i) +
+                  " is longer than the data left",
+              in.line(), in.ascii() ? 0 : in.byte());
+  if (p.role != Role::indices || &e != l.face) return in.skip(p.type, items);
+  std::vector<std::uint32_t>& corners = faces.corners;
+  corners.clear();
+  for (std::uint64_t k = 0; k < items; ++k) {
+    const double v = in.read(p.type);
+    if (!(v >= 0 && v < static_cast<double>(l.vertex->count)) || v != std::floor(v))
+      ply_error("face " + std::to_string(i) + " refers to vertex " + std::to_string(v) + ", but there are " +
+                    std::to_string(l.vertex->count),
+                in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
+    corners.push_back(static_cast<std::uint32_t>(v));
+  }
+  if (corners.size() >= 3) faces.add_or_keep();
+}
+
+// Element e value by value (ASCII, or binary with lists): vertices into the mesh, faces into `faces`.
+void read_values(const Element& e, const Layout& l, const Limits& limits, Values& in, Mesh& mesh,
+                 Faces& faces) {
+  for (std::uint64_t i = 0; i < e.count; ++i) {
+    if ((i + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
+    Vec3 pos, normal;
+    Rgba8 colour;
+    for (const Property& p : e.properties) {
+      if (p.list) {
+        read_list(e, p, i, l, in, faces);
+        continue;
+      }
+      const double v = in.read(p.type);
+      if (&e == l.vertex) set_vertex_value(p.role, v, p.type, pos, normal, colour);
+    }
+    if (&e == l.vertex) store(mesh, l, in, i, pos, normal, colour);
+  }
+}
+
+}  // namespace
+
+Mesh parse_ply(std::string_view bytes, const Limits& limits) {
+  if (!(bytes.starts_with("ply\n") || bytes.starts_with("ply\r\n")))
+    ply_error("the file does not start with \"ply\" and a line break", 1);
+  const Header h = read_header(bytes);
+  const Layout l = check_elements(h, bytes.size() - h.data, limits);
+  // The header counts what the mesh will hold (faces of more than three corners become more triangles,
+  // each of which the limit counts, so at most max_obj_faces of them).
+  detail::reserve(limits,
+                  cost::kPlyPerFace * static_cast<std::int64_t>(l.face->count) +
+                      cost::kPlyPerVertex * static_cast<std::int64_t>(l.vertex->count),
+                  [&] {
+                    return "the model's " + std::to_string(l.face->count) + " faces and " +
+                           std::to_string(l.vertex->count) + " vertices";
+                  });
+
+  Mesh mesh;
+  Values in(bytes, h);
+  Faces faces{mesh, limits, {}, {}, {}, {}, {}, {}, 0};
   for (const Element& e : h.elements) {
     // An element without properties holds no bytes, however many entries it declares (6e9 of them took a
     // fuzzed file 12 s to count through).
     if (e.properties.empty()) continue;
-    if (&e == vertex) {
+    if (&e == l.vertex) {
       mesh.positions.resize(e.count);
-      if (normals) mesh.normals.resize(e.count);
-      if (colours) mesh.colors.resize(e.count);
-    } else if (&e == face) {
+      if (l.normals) mesh.normals.resize(e.count);
+      if (l.colours) mesh.colors.resize(e.count);
+    } else if (&e == l.face) {
       mesh.triangles.reserve(e.count);
     }
-    // What the vertex element's value of property p sets.
-    auto set = [](Role role, double v, Type type, Vec3& pos, Vec3& normal, Rgba8& colour) {
-      switch (role) {
-        case Role::x:
-          pos.x = v;
-          break;
-        case Role::y:
-          pos.y = v;
-          break;
-        case Role::z:
-          pos.z = v;
-          break;
-        case Role::nx:
-          normal.x = v;
-          break;
-        case Role::ny:
-          normal.y = v;
-          break;
-        case Role::nz:
-          normal.z = v;
-          break;
-        case Role::red:
-          colour.r = colour_byte(v, type);
-          break;
-        case Role::green:
-          colour.g = colour_byte(v, type);
-          break;
-        case Role::blue:
-          colour.b = colour_byte(v, type);
-          break;
-        case Role::alpha:
-          colour.a = colour_byte(v, type);
-          break;
-        default:
-          break;
-      }
-    };
-    auto store = [&](std::uint64_t i, const Vec3& pos, const Vec3& normal, Rgba8 colour) {
-      if (!(std::fabs(pos.x) <= kMaxCoordinate && std::fabs(pos.y) <= kMaxCoordinate &&
-            std::fabs(pos.z) <= kMaxCoordinate))
-        ply_error(
-            "vertex " + std::to_string(i) + " has a coordinate that is not a finite number within +-2^128",
-            in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
-      mesh.positions[i] = pos;
-      if (normals) mesh.normals[i] = normal;
-      if (colours) mesh.colors[i] = colour;
-    };
     const bool fixed =
         std::none_of(e.properties.begin(), e.properties.end(), [](const Property& p) { return p.list; });
-    if (!in.ascii() && fixed) {
-      // Binary entries of one size (no lists): checked once for the whole element, then each property read
-      // at its offset, the others passed over, rather than value by value.
-      const std::uint64_t stride = min_bytes(e, h.encoding);
-      if (e.count * stride > in.left())  // e.count <= data bytes / stride: no overflow
-        ply_error("element \"" + e.name + "\" ends after the data", e.line, bytes.size());
-      if (&e != vertex) {
-        in.take(static_cast<std::size_t>(e.count * stride));
-        continue;
-      }
-      struct Field {
-        std::size_t offset;
-        Type type;
-        Role role;
-      };
-      std::vector<Field> fields;
-      std::size_t offset = 0;
-      for (const Property& p : e.properties) {
-        if (p.role != Role::none) fields.push_back({offset, p.type, p.role});
-        offset += kSize[static_cast<int>(p.type)];
-      }
-      const bool swapped = in.swapped();
-      for (std::uint64_t i = 0; i < e.count; ++i) {
-        const unsigned char* entry = in.take(static_cast<std::size_t>(stride));
-        Vec3 pos, normal;
-        Rgba8 colour;
-        for (const Field& f : fields)
-          set(f.role, load(entry + f.offset, f.type, swapped), f.type, pos, normal, colour);
-        store(i, pos, normal, colour);
-      }
-      continue;
-    }
-    for (std::uint64_t i = 0; i < e.count; ++i) {
-      if ((i + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
-      Vec3 pos, normal;
-      Rgba8 colour;
-      for (const Property& p : e.properties) {
-        if (p.list) {
-          const double n = in.read(p.count_type);
-          if (n != std::floor(n))  // ASCII: "3.5" is no length
-            ply_error("a list's length in " + e.name + " " + std::to_string(i) + " is not a whole number",
-                      in.line());
-          const std::uint64_t items = n >= 0 && n < 4294967296.0 ? static_cast<std::uint64_t>(n) : UINT64_MAX;
-          if (items == UINT64_MAX || (!in.ascii() && items * kSize[int(p.type)] > in.left()) ||
-              (in.ascii() && items > in.left()))
-            ply_error("a list of " + std::to_string(n) + " items in " + e.name + " " + std::to_string(i) +
-                          " is longer than the data left",
-                      in.line(), in.ascii() ? 0 : in.byte());
-          if (p.role != Role::indices || &e != face) {
-            in.skip(p.type, items);
-            continue;
-          }
-          corners.clear();
-          for (std::uint64_t k = 0; k < items; ++k) {
-            const double v = in.read(p.type);
-            if (!(v >= 0 && v < static_cast<double>(vertex->count)) || v != std::floor(v))
-              ply_error("face " + std::to_string(i) + " refers to vertex " + std::to_string(v) +
-                            ", but there are " + std::to_string(vertex->count),
-                        in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
-            corners.push_back(static_cast<std::uint32_t>(v));
-          }
-          if (corners.size() < 3) continue;
-          if (!mesh.positions.empty()) {
-            add_face();
-          } else {  // the vertices come later
-            early_triangles += corners.size() - 2;
-            if (early_triangles > static_cast<std::size_t>(limits.max_obj_faces))
-              throw SceneError(ErrorKind::limit,
-                               "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
-            early_corners.insert(early_corners.end(), corners.begin(), corners.end());
-            early_sizes.push_back(static_cast<std::uint32_t>(corners.size()));
-          }
-          continue;
-        }
-        const double v = in.read(p.type);
-        if (&e == vertex) set(p.role, v, p.type, pos, normal, colour);
-      }
-      if (&e == vertex) store(i, pos, normal, colour);
-    }
+    if (!in.ascii() && fixed)
+      read_fixed(e, l, h, bytes.size(), in, mesh);
+    else
+      read_values(e, l, limits, in, mesh, faces);
   }
-  for (std::size_t f = 0, at = 0; f < early_sizes.size(); at += early_sizes[f++]) {
-    corners.assign(early_corners.begin() + at, early_corners.begin() + at + early_sizes[f]);
-    add_face();
-  }
+  faces.add_early();
   if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");
   // A face's corners are vertices, so normals are indexed as positions are.
-  if (normals) mesh.normal_triangles = mesh.triangles;
+  if (l.normals) mesh.normal_triangles = mesh.triangles;
   return mesh;
 }
 

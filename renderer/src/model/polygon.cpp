@@ -41,14 +41,10 @@ void PolygonSplitter::charge(std::int64_t work, std::size_t n) {
                          " of them reflex); split them into smaller faces before sending");
 }
 
-void PolygonSplitter::ear_clip(std::span<const Vec3> corners,
-                               std::vector<std::array<std::uint32_t, 3>>& out) {
+// Newell's normal; the polygon is seen along its largest component, mirrored where that component is
+// negative, so that it runs counter-clockwise in 2D: `corners` -> p_.
+void PolygonSplitter::project(std::span<const Vec3> corners) {
   const std::size_t n = corners.size();
-  // Twice the signed area of (a, b, c): positive when they turn counter-clockwise.
-  auto turn = [](P2 a, P2 b, P2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); };
-
-  // Newell's normal; the polygon is seen along its largest component, mirrored where that component is
-  // negative, so that it runs counter-clockwise in 2D.
   double nx = 0, ny = 0, nz = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 &a = corners[i], &b = corners[(i + 1) % n];
@@ -65,6 +61,14 @@ void PolygonSplitter::ear_clip(std::span<const Vec3> corners,
     else
       p_[i] = {c.z, ny >= 0 ? c.x : -c.x};
   }
+}
+
+void PolygonSplitter::ear_clip(std::span<const Vec3> corners,
+                               std::vector<std::array<std::uint32_t, 3>>& out) {
+  const std::size_t n = corners.size();
+  // Twice the signed area of (a, b, c): positive when they turn counter-clockwise.
+  auto turn = [](P2 a, P2 b, P2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); };
+  project(corners);
 
   // The remaining polygon as a ring; reflex corners (turning clockwise) listed once: a corner never turns
   // from convex back to reflex as ears are clipped.

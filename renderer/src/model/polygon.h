@@ -28,6 +28,7 @@ class PolygonSplitter {
   struct P2 {
     double x = 0, y = 0;
   };
+  void project(std::span<const Vec3> corners);
   void ear_clip(std::span<const Vec3> corners, std::vector<std::array<std::uint32_t, 3>>& out);
   void charge(std::int64_t work, std::size_t n);
 

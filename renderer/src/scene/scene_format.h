@@ -1,6 +1,6 @@
 // Scene format v1, the parts that more than the reader needs: the ranges of its numbers, which validate()
 // applies to scenes built in code with the same words, and the shape of a field descriptor. The tables
-// of fields themselves are in scene_reader.cpp, next to the functions that read them.
+// of fields themselves are in scene_reader.cpp and scene_objects.cpp, next to the functions that read them.
 #pragma once
 
 #include <cstdint>

@@ -1,568 +1,27 @@
-// The scene reader: JSON text -> Scene in one pass, the format described once.
+// The scene reader: JSON text -> Scene in one pass, the format described once (scene_reader.h says how).
+// This file is the document: the root's table and a primitive's, the primitive types and what each makes
+// of the keys it was given (a 2D shape into the scene's flat arrays, a mesh, a model file read by its
+// reader), and parse_scene(), which owns the order in which errors are reported.
 //
-// Each object kind of format v1 (the root, a primitive, a camera, a light, a transform, edges, a texture)
-// is a table of fields: a key, the JSON kinds its value may be, and the function that reads it where it
-// stands in the text. read_object() walks an object with its table; that one loop owns unknown keys (with
-// a "did you mean"), keys given twice and values of the wrong kind. A primitive's table is the union of
-// every type's keys, and its "type" narrows the keys allowed. Checks across fields (a colour per point,
-// indices within the positions) run when the object ends. Defaults are those of the Scene's structs.
-//
-// Every error is a SceneError with the JSON pointer and the 1-based byte offset of the value it is about.
 // A document with an error that is also malformed is reported as malformed (see parse_scene).
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
-#include <cstring>
-#include <numbers>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
 #include "base/budget_ask.h"
-#include "base/json_cursor.h"
-#include "raster/model.h"
-#include "raster/scene.h"
 #include "raster/utf8.h"
-#include "scene/scene_format.h"
-#include "base/base64.h"
-#include "base/stop.h"
-#include "base/vecmath.h"
+#include "scene/scene_reader.h"
 
 namespace raster {
+namespace scene_reader {
 namespace {
-
-using Kind = JsonCursor::Kind;
-using Path = JsonPointer;
-using format::Range;
 
 constexpr Rgba8 kMeshGrey{204, 204, 204, 255};  // meshes and models without colours
 constexpr Rgba8 kWhite{255, 255, 255, 255};     // 2D primitives without colours
-
-const char* phrase(Kind k) {
-  static constexpr const char* kPhrases[] = {"null",     "a boolean", "a number",
-                                             "a string", "an array",  "an object"};
-  return kPhrases[static_cast<int>(k)];
-}
-
-// Keys are a few bytes: compared inline, not through a call to memcmp.
-bool same_key(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (a[i] != b[i]) return false;
-  return true;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
-constexpr std::array<std::int8_t, 256> kHexDigit = [] {
-  std::array<std::int8_t, 256> t{};
-  for (int c = 0; c < 256; ++c)
-    t[c] = c >= '0' && c <= '9'   ? static_cast<std::int8_t>(c - '0')
-           : c >= 'a' && c <= 'f' ? static_cast<std::int8_t>(c - 'a' + 10)
-           : c >= 'A' && c <= 'F' ? static_cast<std::int8_t>(c - 'A' + 10)
-                                  : std::int8_t{-1};
-  return t;
-}();
-
-// "#rgb", "#rgba", "#rrggbb" or "#rrggbbaa"; false for anything else.
-[[gnu::always_inline]] inline bool parse_hex_color(std::string_view s, Rgba8& out) {
-  const std::size_t n = s.size();
-  if (n == 0 || s[0] != '#' || (n != 4 && n != 5 && n != 7 && n != 9)) return false;
-  int d[8] = {0, 0, 0, 0, 0, 0, 15, 15};  // absent alpha reads as "ff"
-  int bad = 0;
-  for (std::size_t i = 1; i < n; ++i) bad |= d[i - 1] = kHexDigit[static_cast<unsigned char>(s[i])];
-  if (bad < 0) return false;
-  auto byte = [](int v) { return static_cast<std::uint8_t>(v); };
-  if (n <= 5)
-    return out = {byte(d[0] * 17), byte(d[1] * 17), byte(d[2] * 17), byte(n == 5 ? d[3] * 17 : 255)}, true;
-  out = {byte(d[0] * 16 + d[1]), byte(d[2] * 16 + d[3]), byte(d[4] * 16 + d[5]), byte(d[6] * 16 + d[7])};
-  return true;
-}
-
-// Texels the scene's textures hold so far: what is left of the limit is what the next one may take.
-std::int64_t texels_left(const Scene& scene, const Limits& limits) {
-  std::int64_t used = 0;
-  for (const Mesh& m : scene.meshes)
-    for (const Texture& t : m.textures) used += std::int64_t{t.width} * t.height;
-  return limits.max_texture_pixels - used;
-}
-
-// The state of each object kind while it is read. `allowed` and `seen` are bits of its table's fields.
-struct Keys {
-  std::uint32_t allowed = ~0u, seen = 0;
-};
-struct CameraState : Keys {
-  Camera camera;
-};
-struct LightState : Keys {  // "light"
-  double ambient = 0.2;
-  bool directed = false;
-  Vec3 direction;
-};
-struct LightsEntry : Keys {  // one of "lights"
-  Light light;
-  bool typed = false;
-};
-struct TransformState : Keys {
-  Vec3 scale{1, 1, 1}, rotate, translate;
-  Mat4 matrix;
-};
-struct EdgesState : Keys {
-  Edges edges;
-};
-struct TextureState : Keys {
-  Texture texture;
-  std::int64_t budget = 0;  // texels the scene has left
-  bool clamp = false;       // "wrap": "clamp", which may come before the image
-};
-// A primitive: what each key gave, put together when the object ends.
-struct PrimitiveState : Keys {
-  int type = -1;  // index into kTypes
-  std::size_t byte = 0, points_byte = 0, colors_byte = 0, indices_byte = 0, normals_byte = 0, uvs_byte = 0;
-  Primitive primitive;
-  std::size_t dims = 0;         // numbers per point: 2 (image space) or 3 (world space)
-  std::size_t first_point = 0;  // image-space "points" are scene.points from here
-  std::vector<double> coords;   // world-space "points", three numbers each
-  std::vector<Rgba8> colors;    // "colors"
-  Rgba8 color;                  // "color"
-  Mesh mesh;                    // "mesh" and "obj": positions, normals, uvs, texture, options
-  bool indices_nested = false;
-  std::string bad_index;              // the text of the first index below 0 or above 2^32 - 2
-  std::string obj, mtl;               // an "obj"'s inline texts: "data" and "mtl"
-  std::string source, mtl_source;     // a model's uploaded parts by name: "source" and "mtl_source"
-  Uploads textures;                   // a model's "textures": the files it names, by file name
-  std::optional<ModelFormat> format;  // a model's "format"; "obj" for the type "obj"
-  // Ready for the next primitive, keeping the flat buffers' capacity.
-  void reset() {
-    static_cast<Keys&>(*this) = Keys{};
-    type = -1, dims = 0, indices_nested = false, primitive = Primitive{};  // `mesh` is reset when moved out
-    coords.clear(), colors.clear();
-    if (seen_model) {  // what only meshes and models use, cleared only after one
-      obj.clear(), mtl.clear(), textures.clear(), bad_index.clear();
-      source.clear(), mtl_source.clear();
-      format.reset();
-      seen_model = false;
-    }
-  }
-  bool seen_model = false;  // the last primitive was a mesh or a model
-};
-
-struct Reader;
-template <class T>
-using Field = format::Field<void (*)(Reader&, T&, const Path&)>;
-
-struct Reader {
-  JsonCursor in;
-  const Limits& limits;
-  const Uploads& uploads;
-  Scene scene;
-  PrimitiveState prim;  // reused from primitive to primitive, so its buffers are allocated once
-
-  [[noreturn, gnu::cold]] static void fail(ErrorKind kind, const Path& at, const std::string& message) {
-    throw SceneError(kind, message, ErrorLocation{at.str(), at.byte(), 0});
-  }
-  [[noreturn, gnu::cold]] static void invalid(const Path& at, const std::string& message) {
-    fail(ErrorKind::invalid, at, message);
-  }
-  [[noreturn, gnu::cold, gnu::noinline]] static void wrong_kind(const Path& at, Kind k,
-                                                                const char* expected) {
-    invalid(at, std::string("expected ") + expected + ", got " + phrase(k));
-  }
-
-  // The next value's kind, which must be one of `kinds`.
-  Kind expect(const Path& at, std::uint8_t kinds, const char* expected) {
-    const Kind k = in.peek();
-    if (!(kinds >> static_cast<int>(k) & 1)) wrong_kind(at, k, expected);
-    return k;
-  }
-  // The next array element's pointer, its byte where its value starts.
-  Path element(const Path& at, std::size_t k) { return Path(at, k, in.next_offset()); }
-
-  // The readers of numbers take `where(byte)`, which makes the pointer of the value starting at `byte`:
-  // it is called only for an error, so a million numbers build no pointers. (A Path converts to one.)
-  template <class Where>
-  double number(const Where& where) {
-    if (!in.at_number()) expect(where(in.offset()), format::kNumber, "a number");
-    return in.number_here();
-  }
-  std::string number_text() const { return std::string(in.number_text()); }
-  template <class Where>
-  double ranged(const Where& where, const Range& r) {
-    const double d = number(where);
-    if (!r.contains(d)) invalid(where(in.number_offset()), std::string(r.rule) + "; got " + number_text());
-    return d;
-  }
-  template <class Where>
-  double coordinate(const Where& where) {
-    const double d = number(where);
-    if (std::fabs(d) > kMaxCoordinate)
-      invalid(where(in.number_offset()), "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
-    return d;
-  }
-  // 256 and 256.0, not 256.5; clamped to int64 (the range check is the caller's).
-  template <class Where>
-  std::int64_t integer(const Where& where) {
-    const double d = number(where);
-    if (!in.integral() && d != std::floor(d))
-      invalid(where(in.number_offset()), "expected a whole number, got " + number_text());
-    if (std::fabs(d) >= 9.2e18) return d < 0 ? INT64_MIN : INT64_MAX;
-    return static_cast<std::int64_t>(d);
-  }
-  bool boolean(const Path& at) {
-    expect(at, format::kBool, "true or false");
-    return in.boolean();
-  }
-  // One of `names` (a string); its index.
-  template <std::size_t N>
-  std::size_t choice(const Path& at, const std::array<std::string_view, N>& names) {
-    std::string expected = "expected";
-    for (std::size_t i = 0; i < N; ++i)
-      expected += (i == 0 ? " \"" : i + 1 == N ? " or \"" : ", \"") + std::string(names[i]) + "\"";
-    if (in.peek() != Kind::string) invalid(at, expected + ", got " + phrase(in.peek()));
-    const std::string_view s = in.string();
-    for (std::size_t i = 0; i < N; ++i)
-      if (s == names[i]) return i;
-    invalid(at, expected + ", got \"" + std::string(s) + "\"");
-  }
-  // Growing the flat arrays by doubling would copy them and fault their pages in twice. Every 2D point is
-  // an array and a primitive holds at least two, so counting '[' bounds the points and the primitives; the
-  // shortest point, "[0,0],", caps the count by the text's length.
-  void reserve(std::string_view text) {
-    if (text.size() < (1 << 16)) return;
-    const std::size_t arrays = std::min(JsonCursor::count(text, '['), text.size() / 6);
-    scene.points.reserve(arrays);
-    scene.colors.reserve(arrays);
-    scene.primitives.reserve(std::min(arrays / 2, static_cast<std::size_t>(limits.max_primitives)));
-  }
-
-  template <class T, std::size_t N>
-  void read_object(const Field<T> (&fields)[N], T& state, const Path& at, const char* expected);
-  template <class F, std::size_t N>
-  [[noreturn]] void unknown_key(const F (&fields)[N], std::uint32_t allowed, std::string_view key,
-                                const Path& at);
-
-  Rgba8 color(const Path& at);
-  Vec3 vec3(const Path& at);
-  void points(PrimitiveState& s, const Path& at);
-  template <std::size_t N, class Number, class Add>
-  bool tuples(const Path& at, const char* shape, const char* names, Number number, Add add);
-  void vec3_list(std::vector<Vec3>& out, const Path& at);
-  void indices(PrimitiveState& s, const Path& at);
-  void uvs(PrimitiveState& s, const Path& at);
-  std::string base64(const Path& at);
-  void primitives(const Path& at);
-  void primitive(const Path& at);
-  void set_type(PrimitiveState& s, std::string_view name, const Path& at);
-  void type_first(JsonCursor::Mark start, const Path& at);
-  void finish_drawn(PrimitiveState& s, const Path& at);
-  void finish_mesh(PrimitiveState& s, const Path& at);
-  void finish_obj(PrimitiveState& s, const Path& at);
-  void lights(const Path& at);
-  void read_root();
-};
-
-template <class F, std::size_t N>
-void Reader::unknown_key(const F (&fields)[N], std::uint32_t allowed, std::string_view key, const Path& at) {
-  std::string best, known;
-  std::size_t best_distance = 3;  // more than two edits away is not a typo
-  for (std::size_t i = 0; i < N; ++i) {
-    if (!(allowed >> i & 1)) continue;
-    known += " \"" + std::string(fields[i].key) + "\"";
-    if (const std::size_t d = edit_distance(key, fields[i].key); d < best_distance)
-      best_distance = d, best = fields[i].key;
-  }
-  invalid(at, "unknown field \"" + std::string(key) + "\"" +
-                  (best.empty() ? "; known fields are" + known : "; did you mean \"" + best + "\"?"));
-}
-
-template <class T, std::size_t N>
-void Reader::read_object(const Field<T> (&fields)[N], T& state, const Path& at, const char* expected) {
-  static_assert(N <= 32, "`allowed` and `seen` hold a bit per field");
-  expect(at, format::kObject, expected);
-  std::size_t next = 0;  // where the search for a key starts: documents tend to keep the table's order
-  for (bool more = in.object_begin(); more; more = in.object_next()) {
-    std::string own;
-    std::string_view key = in.key();
-    if (!in.in_text(key)) own = key, key = own;  // an escaped key: the next string read reuses its buffer
-    const Kind kind = in.peek();
-    const Path field(at, key, in.offset());
-    std::size_t i = next, tried = 0;
-    for (; tried < N && !same_key(fields[i].key, key); ++tried) i = i + 1 == N ? 0 : i + 1;
-    if (tried == N || !(state.allowed >> i & 1)) unknown_key(fields, state.allowed, key, field);
-    next = i + 1 == N ? 0 : i + 1;
-    if (state.seen >> i & 1)
-      invalid(field, "\"" + std::string(key) + "\" is given twice in one object; give each key once");
-    state.seen |= 1u << i;
-    if (!(fields[i].kinds >> static_cast<int>(kind) & 1)) wrong_kind(field, kind, fields[i].expected);
-    fields[i].read(*this, state, field);
-    if (const std::uint32_t early =
-            state.seen & ~state.allowed) {  // read before a "type" that does not take it
-      const std::string_view k = fields[std::countr_zero(early)].key;
-      unknown_key(fields, state.allowed, k, Path(at, k, field.byte()));
-    }
-  }
-}
-
-// "#rgb", "#rgba", "#rrggbb", "#rrggbbaa", [r,g,b] or [r,g,b,a] with components in 0..1.
-Rgba8 Reader::color(const Path& at) {
-  if (expect(at, format::kString | format::kArray, "a colour (\"#rrggbb\" or [r, g, b])") == Kind::string) {
-    const std::string_view s = in.string();
-    Rgba8 c;
-    if (!parse_hex_color(s, c))
-      invalid(at, "expected a colour \"#rgb\", \"#rgba\", \"#rrggbb\" or \"#rrggbbaa\", got \"" +
-                      std::string(s) + "\"");
-    return c;
-  }
-  double comp[4];
-  std::string_view text[4];
-  std::size_t n = 0;
-  for (bool more = in.array_begin(); more; more = in.array_next(), ++n) {
-    const Path c = element(at, n);
-    const double v = number(c);
-    if (n < 4) comp[n] = v, text[n] = in.number_text();
-  }
-  if (n != 3 && n != 4)
-    invalid(at, "a colour array has 3 or 4 components [r, g, b(, a)], got " + std::to_string(n));
-  for (std::size_t k = 0; k < n; ++k) {
-    if (comp[k] >= 0.0 && comp[k] <= 1.0) continue;
-    std::string message = "colour components are in 0..1, got " + std::string(text[k]);
-    // Hex is suggested only for components that all read as 0..255 bytes. A 1 among them reads as "full"
-    // on the 0..1 scale ([1, 0, 0, 255] is opaque red with a slip), and so does [1, 1, 2]: no guess then.
-    if (std::all_of(comp, comp + n,
-                    [](double c) { return c >= 0 && c <= 255 && c == std::floor(c) && c != 1; })) {
-      message += "; did you mean \"#";
-      for (std::size_t j = 0; j < n; ++j)
-        message += "0123456789abcdef"[int(comp[j]) >> 4], message += "0123456789abcdef"[int(comp[j]) & 15];
-      message += "\"?";
-    }
-    invalid(Path(at, k, at.byte()), message);
-  }
-  auto byte = [](double v) { return static_cast<std::uint8_t>(std::floor(v * 255.0 + 0.5)); };
-  return {byte(comp[0]), byte(comp[1]), byte(comp[2]), n == 4 ? byte(comp[3]) : std::uint8_t{255}};
-}
-
-Vec3 Reader::vec3(const Path& at) {
-  expect(at, format::kArray, "a point [x, y, z]");
-  double v[3];
-  std::size_t n = 0;
-  for (bool more = in.array_begin(); more; more = in.array_next(), ++n) {
-    const Path c = element(at, n);
-    const double d = coordinate(c);
-    if (n < 3) v[n] = d;
-  }
-  if (n != 3) invalid(at, "expected a point [x, y, z], got " + std::to_string(n) + " numbers");
-  return {v[0], v[1], v[2]};
-}
-
-// [[x, y], ...] or [[x, y, z], ...]: the first point decides, and every other must agree.
-void Reader::points(PrimitiveState& s, const Path& at) {
-  s.points_byte = at.byte();
-  s.first_point = scene.points.size();
-  const char* shape = s.dims == 3 ? "[x, y, z]" : "[x, y]";
-  std::size_t k = 0;
-  // The hot loop of big 2D scenes: pointers are made only for an error.
-  for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    const JsonCursor::Mark start = in.mark();
-    if (double x, y; s.dims != 3 && in.pair(x, y)) {
-      if (std::fabs(x) <= kMaxCoordinate && std::fabs(y) <= kMaxCoordinate) {
-        s.dims = 2;
-        scene.points.push_back({x, y});
-        continue;
-      }
-      in.seek(start);  // read again below, for the error's words
-    }
-    if (!in.at('['))
-      expect(element(at, k), format::kArray, s.dims == 3 ? "a point [x, y, z]" : "a point [x, y]");
-    const std::size_t byte = in.offset();
-    double v[3];
-    std::size_t n = 0;
-    for (bool inner = in.array_begin(); inner; inner = in.array_next(), ++n) {
-      if (!in.at_number() || n >= 3) {
-        const Path point(at, k, byte);
-        const double d = coordinate(element(point, n));
-        if (n < 3) v[n] = d;
-        continue;
-      }
-      const std::size_t number_byte = in.offset();
-      v[n] = in.number();
-      if (std::fabs(v[n]) > kMaxCoordinate)
-        invalid(Path(Path(at, k, byte), n, number_byte),
-                "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
-    }
-    if (k == 0) s.dims = n == 3 ? 3 : 2, shape = s.dims == 3 ? "[x, y, z]" : "[x, y]";
-    if (n != s.dims)
-      invalid(Path(at, k, byte), std::string("expected a point ") + shape + " like the first point, got " +
-                                     std::to_string(n) + " numbers");
-    if (s.dims == 2)  // image space, straight into the scene (an error anywhere discards it)
-      scene.points.push_back({v[0], v[1]});
-    else
-      s.coords.push_back(v[0]), s.coords.push_back(v[1]), s.coords.push_back(v[2]);
-  }
-}
-
-// Entries of N numbers, nested ([[a, b, c], ...]) or flat ([a, b, c, a, b, c, ...]): the first element
-// decides. `number(pointer)` reads one number, `add(entry)` takes each entry. True when flat.
-template <std::size_t N, class Number, class Add>
-bool Reader::tuples(const Path& at, const char* shape, const char* names, Number number, Add add) {
-  std::array<double, N> v;
-  std::size_t k = 0;
-  if (!in.array_begin()) return false;
-  if (in.at_number()) {  // flat: N numbers at a time, the hot loop of big meshes
-    for (bool more = true; more;) {
-      for (std::size_t j = 0; j < N; ++j, ++k) {
-        v[j] = number([&](std::size_t byte) { return Path(at, k, byte); });
-        if (!(more = in.array_next()) && j + 1 < N)
-          invalid(at, std::string("a flat list holds ") + names + "; its length " + std::to_string(k + 1) +
-                          " is not a multiple of " + std::to_string(N));
-      }
-      add(v);
-    }
-    return true;
-  }
-  for (bool more = true; more; more = in.array_next(), ++k) {
-    const Path e = element(at, k);
-    expect(e, format::kArray, shape);
-    std::size_t n = 0;
-    for (bool inner = in.array_begin(); inner; inner = in.array_next(), ++n) {
-      const double d = number([&](std::size_t byte) { return Path(e, n, byte); });
-      if (n < N) v[n] = d;
-    }
-    if (n != N) invalid(e, std::string("expected ") + shape + ", got " + std::to_string(n) + " numbers");
-    add(v);
-  }
-  return false;
-}
-
-void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
-  out.reserve(in.flat_array_size() / 3);
-  tuples<3>(
-      at, "a point [x, y, z]", "x, y, z triples", [&](const auto& where) { return coordinate(where); },
-      [&](const std::array<double, 3>& v) {
-        out.push_back({v[0], v[1], v[2]});
-      });
-}
-
-// 0-based into the positions, checked when the mesh ends: one outside every range is kept as UINT32_MAX.
-void Reader::indices(PrimitiveState& s, const Path& at) {
-  s.indices_byte = at.byte();
-  auto& triangles = s.mesh.triangles;
-  triangles.reserve(in.flat_array_size() / 3);
-  auto index = [&](const auto& where) {
-    if (std::uint32_t i; in.index(i)) return static_cast<double>(i);
-    const std::int64_t i = integer(where);
-    const bool outside = i < 0 || i >= UINT32_MAX;
-    if (outside && s.bad_index.empty()) s.bad_index = number_text();
-    return outside ? double{UINT32_MAX} : static_cast<double>(i);
-  };
-  s.indices_nested =
-      !tuples<3>(at, "a triangle [a, b, c]", "a, b, c triples", index, [&](const std::array<double, 3>& v) {
-        if (static_cast<std::int64_t>(triangles.size()) == limits.max_primitives)
-          fail(ErrorKind::limit, at,
-               "more triangles than the limit of " + std::to_string(limits.max_primitives));
-        triangles.push_back({static_cast<std::uint32_t>(v[0]), static_cast<std::uint32_t>(v[1]),
-                             static_cast<std::uint32_t>(v[2])});
-      });
-}
-
-void Reader::uvs(PrimitiveState& s, const Path& at) {
-  s.uvs_byte = at.byte();
-  s.mesh.uvs.reserve(in.flat_array_size() / 2);
-  tuples<2>(
-      at, "a texture coordinate [u, v]", "u, v pairs",
-      [&](const auto& where) { return ranged(where, format::kTexCoord); },
-      [&](const std::array<double, 2>& v) {
-        s.mesh.uvs.push_back({static_cast<float>(v[0]), static_cast<float>(v[1])});
-      });
-}
-
-// The bytes of an image given as base64 text.
-std::string Reader::base64(const Path& at) {
-  expect(at, format::kString, "the image file as base64 text");
-  std::string bytes;
-  if (!decode_base64(in.string(), bytes))
-    invalid(at, "not base64 (RFC 4648, '+' and '/', optionally a data: URI)");
-  return bytes;
-}
-
-// ---- The tables. A field's function reads its value into the state of the object it is in.
-
-// "transform": {"translate", "rotate" (degrees about x, then y, then z), "scale"} or {"matrix"}.
-constexpr Field<TransformState> kTransformFields[] = {
-    {"translate", format::kArray, "[x, y, z]",
-     [](Reader& r, TransformState& t, const Path& at) { t.translate = r.vec3(at); }},
-    {"rotate", format::kArray, "[x, y, z] in degrees",
-     [](Reader& r, TransformState& t, const Path& at) { t.rotate = r.vec3(at); }},
-    {"scale", format::kNumber | format::kArray, "a number or [x, y, z]",
-     [](Reader& r, TransformState& t, const Path& at) {
-       if (r.in.peek() != Kind::number) return void(t.scale = r.vec3(at));
-       const double k = r.number(at);
-       t.scale = {k, k, k};
-     }},
-    {"matrix", format::kArray, "16 numbers (a row-major 4x4 matrix)",
-     [](Reader& r, TransformState& t, const Path& at) {
-       std::size_t k = 0;
-       for (bool more = r.in.array_begin(); more; more = r.in.array_next(), ++k) {
-         const double v = r.number(r.element(at, k));
-         if (k < 16) t.matrix.m[k] = v;
-       }
-       if (k != 16) r.invalid(at, "expected 16 numbers (a row-major 4x4 matrix)");
-     }},
-};
-
-constexpr Field<EdgesState> kEdgesFields[] = {
-    {"color", format::kString | format::kArray, "a colour",
-     [](Reader& r, EdgesState& e, const Path& at) { e.edges.color = r.color(at); }},
-    {"width", format::kNumber, "a number",
-     [](Reader& r, EdgesState& e, const Path& at) {
-       e.edges.width = static_cast<float>(r.ranged(at, format::kEdgeWidth));
-     }},
-    {"angle", format::kNumber, "a number",
-     [](Reader& r, EdgesState& e, const Path& at) {
-       e.edges.crease_deg = static_cast<float>(r.ranged(at, format::kCreaseAngle));
-     }},
-};
-
-constexpr Field<TextureState> kTextureFields[] = {
-    {"data", format::kString, "the image file as base64 text",
-     [](Reader& r, TextureState& t, const Path& at) {
-       try {
-         t.texture = decode_texture(r.base64(at), "data", t.budget);
-       } catch (const SceneError& e) {
-         if (!e.where().pointer.empty()) throw;
-         r.fail(e.kind(), at, e.what());
-       }
-     }},
-    {"source", format::kString, "the name of an uploaded part",
-     [](Reader& r, TextureState& t, const Path& at) {
-       const std::string name(r.in.string());
-       const auto part = r.uploads.find(name);
-       if (part == r.uploads.end())
-         r.invalid(at, "no uploaded part named \"" + name + "\" (send it as a multipart part of that name)");
-       try {
-         t.texture = decode_texture(part->second, name, t.budget);
-       } catch (const SceneError& e) {
-         r.fail(e.kind(), at, e.what());
-       }
-     }},
-    {"wrap", format::kString, "\"repeat\" or \"clamp\"",
-     [](Reader& r, TextureState& t, const Path& at) {
-       t.clamp = r.choice(at, std::array<std::string_view, 2>{"repeat", "clamp"}) == 1;
-     }},
-};
 
 // A primitive: the union of every type's keys; "type" narrows them to its own (kTypes).
 constexpr Field<PrimitiveState> kPrimitiveFields[] = {
@@ -573,20 +32,7 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
     {"color", format::kString | format::kArray, "a colour (\"#rrggbb\" or [r, g, b])",
      [](Reader& r, PrimitiveState& s, const Path& at) { s.color = r.color(at); }},
     {"colors", format::kArray, "an array of colours, one per point",
-     [](Reader& r, PrimitiveState& s, const Path& at) {
-       s.colors_byte = at.byte();
-       std::size_t k = 0;
-       for (bool more = r.in.array_begin(); more; more = r.in.array_next(), ++k) {
-         Rgba8 c;
-         const JsonCursor::Mark start = r.in.mark();
-         if (r.in.at('"') && parse_hex_color(r.in.string_here(), c)) {  // the usual colour: no pointer made
-           s.colors.push_back(c);
-           continue;
-         }
-         r.in.seek(start);  // anything else is read again by color(), which has the words for its errors
-         s.colors.push_back(r.color(r.element(at, k)));
-       }
-     }},
+     [](Reader& r, PrimitiveState& s, const Path& at) { r.colors(s, at); }},
     {"fill", format::kBool, "true or false",
      [](Reader& r, PrimitiveState& s, const Path& at) { s.primitive.fill = r.boolean(at); }},
     {"closed", format::kBool, "true or false",
@@ -606,17 +52,7 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
     {"uvs", format::kArray, "an array of [u, v] or of numbers",
      [](Reader& r, PrimitiveState& s, const Path& at) { r.uvs(s, at); }},
     {"texture", format::kObject, "{\"data\": base64} or {\"source\": part name}",
-     [](Reader& r, PrimitiveState& s, const Path& at) {
-       TextureState t;
-       t.budget = texels_left(r.scene, r.limits);
-       r.read_object(kTextureFields, t, at, "a texture object");
-       if (std::popcount(t.seen & 3u) != 1)
-         r.invalid(
-             at,
-             "a texture needs \"data\" (the PNG or JPEG file as base64) or \"source\" (an uploaded part)");
-       t.texture.clamp = t.clamp;
-       s.mesh.textures.push_back(std::move(t.texture));
-     }},
+     [](Reader& r, PrimitiveState& s, const Path& at) { s.mesh.textures.push_back(r.texture(at)); }},
     {"shading", format::kString, "\"flat\", \"smooth\" or \"unlit\"",
      [](Reader& r, PrimitiveState& s, const Path& at) {
        s.mesh.shading =
@@ -629,37 +65,9 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
     {"wireframe", format::kBool, "true or false",
      [](Reader& r, PrimitiveState& s, const Path& at) { s.mesh.wireframe = r.boolean(at); }},
     {"edges", format::kBool | format::kObject, "true or {\"color\", \"width\", \"angle\"}",
-     [](Reader& r, PrimitiveState& s, const Path& at) {
-       EdgesState e;
-       if (r.in.peek() == Kind::boolean)
-         e.edges.enabled = r.in.boolean();
-       else
-         r.read_object(kEdgesFields, e, at, "an edges object"), e.edges.enabled = true;
-       s.mesh.edges = e.edges;
-     }},
+     [](Reader& r, PrimitiveState& s, const Path& at) { s.mesh.edges = r.edges(at); }},
     {"transform", format::kObject, "a transform object",
-     [](Reader& r, PrimitiveState& s, const Path& at) {
-       TransformState t;
-       r.read_object(kTransformFields, t, at, "a transform object");
-       if (t.seen & 8u) {  // "matrix"
-         if (t.seen != 8u) r.invalid(at, "\"matrix\" replaces translate/rotate/scale; give one or the other");
-         return void(s.mesh.transform = t.matrix);
-       }
-       // Scale first, then rotate about x, y and z, then translate: T * Rz * Ry * Rx * S.
-       Mat4 m;
-       m(0, 0) = t.scale.x, m(1, 1) = t.scale.y, m(2, 2) = t.scale.z;
-       const double angles[3] = {t.rotate.x, t.rotate.y, t.rotate.z};
-       for (int axis = 0; axis < 3 && (t.seen & 2u); ++axis) {
-         const double rad = angles[axis] * std::numbers::pi / 180.0, c = std::cos(rad), sn = std::sin(rad);
-         Mat4 rot;
-         const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-         rot(a, a) = c, rot(a, b) = -sn, rot(b, a) = sn, rot(b, b) = c;
-         m = detail::operator*(rot, m);
-       }
-       Mat4 tm;
-       tm(0, 3) = t.translate.x, tm(1, 3) = t.translate.y, tm(2, 3) = t.translate.z;
-       s.mesh.transform = (t.seen & 1u) ? detail::operator*(tm, m) : m;
-     }},
+     [](Reader& r, PrimitiveState& s, const Path& at) { s.mesh.transform = r.transform(at); }},
     {"data", format::kString, "text",
      [](Reader& r, PrimitiveState& s, const Path&) { s.obj = r.in.string(); }},
     {"source", format::kString, "the name of an uploaded part",
@@ -716,6 +124,8 @@ constexpr PrimitiveType kTypes[] = {
                                         "shading", "wireframe", "edges", "cull", "transform"})},
 };
 constexpr const char* kTypeNames = "\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\"";
+
+}  // namespace
 
 void Reader::set_type(PrimitiveState& s, std::string_view name, const Path& at) {
   const auto* t = std::find_if(std::begin(kTypes), std::end(kTypes),
@@ -922,109 +332,6 @@ void Reader::primitive(const Path& at) {
   scene.primitives.push_back(p);
 }
 
-constexpr Field<CameraState> kCameraFields[] = {
-    {"projection", format::kString, "\"perspective\" or \"orthographic\"",
-     [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.projection = static_cast<Projection>(
-           r.choice(at, std::array<std::string_view, 2>{"perspective", "orthographic"}));
-     }},
-    {"view", format::kString, "a view name",
-     [](Reader& r, CameraState& c, const Path& at) {
-       static constexpr std::array<std::string_view, 7> kViews{"front", "back",   "left", "right",
-                                                               "top",   "bottom", "iso"};
-       c.camera.view = static_cast<View>(r.choice(at, kViews)), c.camera.has_view = true;
-     }},
-    {"eye", format::kArray, "a point [x, y, z]",
-     [](Reader& r, CameraState& c, const Path& at) { c.camera.eye = r.vec3(at), c.camera.has_eye = true; }},
-    {"target", format::kArray, "a point [x, y, z]",
-     [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.target = r.vec3(at), c.camera.has_target = true;
-     }},
-    {"up", format::kArray, "a direction [x, y, z]",
-     [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.up = r.vec3(at), c.camera.has_up = true;
-       if (c.camera.up == Vec3{}) r.invalid(at, "\"up\" must not be the zero vector");
-     }},
-    {"fov", format::kNumber, "a number",
-     [](Reader& r, CameraState& c, const Path& at) { c.camera.fov_deg = r.ranged(at, format::kFov); }},
-    {"near", format::kNumber, "a number",
-     [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.near = r.ranged(at, format::kNear), c.camera.has_near = true;
-     }},
-    {"far", format::kNumber, "a number",
-     [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.far = r.ranged(at, format::kFar), c.camera.has_far = true;
-     }},
-    {"height", format::kNumber, "a number",
-     [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.height = r.ranged(at, format::kViewHeight), c.camera.has_height = true;
-     }},
-};
-
-Vec3 direction(Reader& r, const Path& at) {
-  const Vec3 d = r.vec3(at);
-  if (d == Vec3{}) r.invalid(at, "the light direction must not be the zero vector");
-  return d;
-}
-
-// "light": rasterd 0.1's one directional light plus ambient.
-constexpr Field<LightState> kLightFields[] = {
-    {"direction", format::kArray, "a direction [x, y, z]",
-     [](Reader& r, LightState& l, const Path& at) { l.direction = direction(r, at), l.directed = true; }},
-    {"ambient", format::kNumber, "a number",
-     [](Reader& r, LightState& l, const Path& at) { l.ambient = r.ranged(at, format::kAmbient); }},
-};
-
-std::uint32_t light_keys(LightKind kind);
-
-// One of "lights"; its "type" narrows the keys (light_keys).
-constexpr Field<LightsEntry> kLightsFields[] = {
-    {"type", format::kString, "\"ambient\", \"directional\" or \"point\"",
-     [](Reader& r, LightsEntry& l, const Path& at) {
-       l.light.kind = static_cast<LightKind>(
-           r.choice(at, std::array<std::string_view, 3>{"ambient", "directional", "point"}));
-       l.allowed = light_keys(l.light.kind), l.typed = true;
-     }},
-    {"color", format::kString | format::kArray, "a colour",
-     [](Reader& r, LightsEntry& l, const Path& at) {
-       const Rgba8 c = r.color(at);
-       if (c.a != 255) r.invalid(at, "a light's colour is opaque (it has no alpha)");
-       l.light.color = {c.r / 255.0, c.g / 255.0, c.b / 255.0};
-     }},
-    {"space", format::kString, "\"world\" or \"camera\"",
-     [](Reader& r, LightsEntry& l, const Path& at) {
-       l.light.camera_space = r.choice(at, std::array<std::string_view, 2>{"world", "camera"}) == 1;
-     }},
-    {"direction", format::kArray, "a direction [x, y, z]",
-     [](Reader& r, LightsEntry& l, const Path& at) { l.light.direction = direction(r, at); }},
-    {"intensity", format::kNumber, "a number",
-     [](Reader& r, LightsEntry& l, const Path& at) { l.light.intensity = r.ranged(at, format::kIntensity); }},
-    {"position", format::kArray, "a point [x, y, z]",
-     [](Reader& r, LightsEntry& l, const Path& at) { l.light.position = r.vec3(at); }},
-};
-
-std::uint32_t light_keys(LightKind kind) {
-  constexpr std::uint32_t kAll = format::mask_of(kLightsFields, {"type", "color", "intensity"});
-  if (kind == LightKind::ambient) return kAll;
-  return kAll |
-         format::mask_of(kLightsFields, {kind == LightKind::point ? "position" : "direction", "space"});
-}
-
-void Reader::lights(const Path& at) {
-  std::size_t k = 0;
-  for (bool more = in.array_begin(); more; more = in.array_next(), ++k) {
-    const Path entry = element(at, k);
-    if (k == kMaxLights) invalid(at, "at most " + std::to_string(kMaxLights) + " lights");
-    LightsEntry l;
-    read_object(kLightsFields, l, entry, "a light object");
-    if (!l.typed) invalid(entry, "missing \"type\": \"ambient\", \"directional\" or \"point\"");
-    if (l.light.kind == LightKind::point && !(l.seen & format::mask_of(kLightsFields, {"position"})))
-      invalid(entry, "a point light needs \"position\": [x, y, z]");
-    scene.lights.push_back(l.light);
-  }
-  if (k == 0) invalid(at, "an empty list of lights; leave \"lights\" out for the default ones");
-}
-
 void Reader::primitives(const Path& at) {
   std::size_t i = 0;
   const JsonCursor::Mark start = in.mark();
@@ -1051,6 +358,8 @@ void Reader::primitives(const Path& at) {
     }
   }
 }
+
+namespace {
 
 // The image's side: a whole number in 1..the limit.
 int side(Reader& r, const Path& at, std::string_view key, int max_side) {
@@ -1082,27 +391,16 @@ constexpr Field<Keys> kRootFields[] = {
        if (!antialias_of_samples(r.integer(at), r.scene.antialias)) r.invalid(at, rule + r.number_text());
      }},
     {"camera", format::kObject, "a camera object",
-     [](Reader& r, Keys&, const Path& at) {
-       CameraState c;
-       r.read_object(kCameraFields, c, at, "a camera object");
-       if (c.camera.has_view && c.camera.has_eye)
-         r.invalid(Path(at, "view", at.byte()),
-                   "\"view\" and \"eye\" both place the camera: give one of them");
-       if (c.camera.has_near && c.camera.has_far && !(c.camera.near < c.camera.far))
-         r.invalid(Path(at, "far", at.byte()), "\"far\" must be greater than \"near\"");
-       r.scene.camera = c.camera;
-     }},
+     [](Reader& r, Keys&, const Path& at) { r.scene.camera = r.camera(at); }},
     {"light", format::kObject, "a light object",
-     [](Reader& r, Keys&, const Path& at) {
-       LightState l;
-       r.read_object(kLightFields, l, at, "a light object");
-       r.scene.lights = single_light(l.ambient, l.directed ? &l.direction : nullptr);
-     }},
+     [](Reader& r, Keys&, const Path& at) { r.scene.lights = r.light(at); }},
     {"lights", format::kArray, "an array of lights", [](Reader& r, Keys&, const Path& at) { r.lights(at); }},
     // What editors and JSON Schema give a document: the schema it follows, and a note. Neither draws.
     {"$schema", format::kString, "a string", [](Reader& r, Keys&, const Path&) { r.in.string(); }},
     {"$comment", format::kString, "a string", [](Reader& r, Keys&, const Path&) { r.in.string(); }},
 };
+
+}  // namespace
 
 void Reader::read_root() {
   const Path root;
@@ -1123,7 +421,7 @@ void Reader::read_root() {
     invalid(Path(root, "lights", 1), "\"light\" (one light) and \"lights\" (a list) exclude each other");
 }
 
-}  // namespace
+}  // namespace scene_reader
 
 Scene parse_scene(std::string_view text, const Limits& limits, const Uploads& uploads) {
   if (text.empty())
@@ -1132,7 +430,7 @@ Scene parse_scene(std::string_view text, const Limits& limits, const Uploads& up
   // by its reader once counted.
   detail::reserve(limits, cost::kScenePerByte * static_cast<std::int64_t>(text.size()),
                   [&] { return "the scene's " + std::to_string(text.size()) + " bytes"; });
-  Reader r{JsonCursor(text, limits.max_json_depth), limits, uploads, {}, {}};
+  scene_reader::Reader r{JsonCursor(text, limits.max_json_depth), limits, uploads, {}, {}};
   r.reserve(text);
   try {
     r.read_root();  // checks the UTF-8 of every string it reads, so a scene read to the end is UTF-8
