@@ -16,7 +16,7 @@
 
 #include "base/budget_ask.h"
 #include "model/polygon.h"
-#include "raster/scene.h"
+#include "raster/model.h"
 #include "raster/utf8.h"
 
 namespace raster {
