@@ -3,7 +3,11 @@
 // files a model names (an OBJ's MTL and textures, a glTF's buffers and images) come from `files`, by name.
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,7 +18,38 @@ namespace raster {
 
 enum class ModelFormat : std::uint8_t { obj, stl, ply, gltf, glb };
 
-/// The format's name as the scene's "format" field and the service's ?format= take it: "obj", "stl",
+/// Everything rasterd knows about one model format, in one row, so that the service (its media types and
+/// ?format=), the CLI (a file's extension and the files beside it) and the scene reader (a model
+/// primitive's "format") decide alike, and a format is added in one place.
+struct ModelFormatInfo {
+  ModelFormat format;
+  std::string_view
+      name;  ///< as the scene's "format" and ?format= take it: "obj", "stl", "ply", "gltf", "glb"
+  std::span<const std::string_view> extensions;   ///< file name extensions naming it: lower case, no dot
+  std::span<const std::string_view> media_types;  ///< Content-Types naming it: lower case, no parameters
+  /// True when `bytes` are in this format by their own look (see sniff_model for each test).
+  bool (*sniff)(std::string_view bytes);
+  /// Reads the model: `files` holds the files it names, by file name; `mtl_text` is an OBJ's materials
+  /// (as parse_obj takes them; the other formats ignore it).
+  Mesh (*read)(std::string_view bytes, const Limits& limits, const Uploads& files, std::string_view mtl_text);
+  /// The files the model names (obj_files, gltf_files), for a program that has its folder at hand; null
+  /// for a format that names none (STL, PLY).
+  std::vector<std::string> (*files)(std::string_view bytes, std::string_view mtl_text, const Uploads& files);
+  /// How many times `files` is asked, each time with the files found before: OBJ 2 (the libraries its
+  /// mtllib lines name, then the textures those name), glTF 1, STL and PLY 0.
+  int file_rounds;
+};
+
+/// The table, one row per ModelFormat, in the enum's order.
+std::span<const ModelFormatInfo> model_formats();
+inline constexpr std::size_t kModelFormatCount = 5;  ///< rows of model_formats()
+/// The row of `format`.
+const ModelFormatInfo& model_format(ModelFormat format);
+/// The rows' names, in the table's order ("obj", "stl", "ply", "gltf", "glb"): what a scene's "format"
+/// may be, in the order its error lists them.
+const std::array<std::string_view, kModelFormatCount>& format_names();
+
+/// The format's name as the scene's "format" and the service's ?format= take it: "obj", "stl",
 /// "ply", "gltf", "glb".
 std::string_view format_name(ModelFormat format);
 /// The inverse of format_name (ASCII case ignored); nullopt for any other word.
@@ -22,19 +57,25 @@ std::optional<ModelFormat> format_named(std::string_view name);
 /// "OBJ, STL (ASCII or binary), PLY (ASCII or binary) and glTF 2.0 (.gltf or .glb)": for errors.
 std::string_view accepted_formats();
 
-/// The format `bytes` are in, by the bytes alone, or nullopt when they are in none:
+/// The format `bytes` are in, by the bytes alone, or nullopt when they are in none. The tests are tried
+/// from the most particular to the loosest (glb, ply, stl, gltf, obj):
 /// - glb: the magic "glTF" and version 2;
-/// - gltf: a JSON object whose first key is a glTF top-level property ("asset", "scene", "nodes", ...);
-///   only that key is read, so a scene document of any size is told apart at once;
 /// - ply: "ply" and a line break;
 /// - stl: "solid" followed by "facet" or "endsolid" (ASCII), else a size of exactly 84 + 50 x the count
 ///   the header gives (binary; some binary files start with "solid" too);
+/// - gltf: a JSON object whose first key is a glTF top-level property ("asset", "scene", "nodes", ...);
+///   only that key is read, so a scene document of any size is told apart at once;
 /// - obj: text whose first statement (after blank lines and '#' comments) is an OBJ keyword; a file of
 ///   nothing but comments too, which parse_obj then calls empty.
 std::optional<ModelFormat> sniff_model(std::string_view bytes);
 
 /// The format a file name's extension names (.obj, .stl, .ply, .gltf, .glb; ASCII case ignored), or nullopt.
 std::optional<ModelFormat> format_of_file_name(std::string_view file_name);
+
+/// The format a media type names (model/stl, model/gltf-binary, model/gltf+json, model/obj,
+/// application/sla, model/ply, ...; a Content-Type's parameters after ';' and ASCII case ignored), or
+/// nullopt.
+std::optional<ModelFormat> format_of_media_type(std::string_view media_type);
 
 /// Parses an OBJ model (and optional MTL text) into a mesh. Throws SceneError(model) naming the line.
 /// `files` are the uploaded files by file name (a name differing only in case is accepted); nothing is
