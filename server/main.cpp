@@ -70,6 +70,21 @@ bool read_all(const std::string& path, std::string& out) {
   return !in->bad();
 }
 
+// Writes `size` bytes to the file `path` (stdout for "-"). The exit code: 0, or 1 when they cannot be.
+int write_all(const std::string& path, const char* data, std::size_t size) {
+  if (path == "-") {
+    std::cout.write(data, static_cast<std::streamsize>(size));
+    return std::cout.flush() ? 0 : 1;
+  }
+  std::ofstream out(path, std::ios::binary);
+  out.write(data, static_cast<std::streamsize>(size));
+  if (!out.flush()) {
+    std::cerr << "rasterd: cannot write " << path << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 std::string describe(const raster::SceneError& e) {
   std::string where;
   if (!e.where().pointer.empty()) where = " at " + e.where().pointer;
@@ -165,19 +180,8 @@ int run_render(const std::vector<std::string>& args) {
       scene = {};  // as the server does: the scene's memory goes before the PNG's comes
       png = raster::encode_png(std::move(image), plan.png);
     }
-    const char* data = explain ? plan_text.data() : reinterpret_cast<const char*>(png.data());
-    const auto size = static_cast<std::streamsize>(explain ? plan_text.size() : png.size());
-    if (output == "-") {
-      std::cout.write(data, size);
-      return std::cout.flush() ? 0 : 1;
-    }
-    std::ofstream out(output, std::ios::binary);
-    out.write(data, size);
-    if (!out.flush()) {
-      std::cerr << "rasterd: cannot write " << output << "\n";
-      return 1;
-    }
-    return 0;
+    return explain ? write_all(output, plan_text.data(), plan_text.size())
+                   : write_all(output, reinterpret_cast<const char*>(png.data()), png.size());
   } catch (const raster::SceneError& e) {
     std::cerr << "rasterd: " << input << ": " << describe(e) << "\n";
     return 1;
