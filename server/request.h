@@ -1,5 +1,5 @@
-// What a render request means: a scene JSON, or a bare OBJ model with query parameters, plus uploads.
-// Shared by the HTTP routes and the CLI so both accept exactly the same inputs.
+// What a render request means: a scene JSON, or a bare model (OBJ, STL, PLY, glTF) with query
+// parameters, plus uploads. Shared by the HTTP routes and the CLI so both accept exactly the same inputs.
 #pragma once
 
 #include <map>

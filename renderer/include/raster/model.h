@@ -1,6 +1,7 @@
 // Models in the formats people bring: OBJ, STL (ASCII and binary), PLY (ASCII, binary little and big
 // endian) and glTF 2.0 (.gltf and .glb). Each reader turns bytes into a Mesh and never reads a file: the
 // files a model names (an OBJ's MTL and textures, a glTF's buffers and images) come from `files`, by name.
+// Which format a model is in, and what each format is called, is decided by one table (model_formats()).
 #pragma once
 
 #include <array>
@@ -22,9 +23,9 @@ enum class ModelFormat : std::uint8_t { obj, stl, ply, gltf, glb };
 /// ?format=), the CLI (a file's extension and the files beside it) and the scene reader (a model
 /// primitive's "format") decide alike, and a format is added in one place.
 struct ModelFormatInfo {
-  ModelFormat format;
-  std::string_view
-      name;  ///< as the scene's "format" and ?format= take it: "obj", "stl", "ply", "gltf", "glb"
+  ModelFormat format;  ///< the format this row describes
+  /// As the scene's "format" and ?format= take it: "obj", "stl", "ply", "gltf", "glb".
+  std::string_view name;
   std::span<const std::string_view> extensions;   ///< file name extensions naming it: lower case, no dot
   std::span<const std::string_view> media_types;  ///< Content-Types naming it: lower case, no parameters
   /// True when `bytes` are in this format by their own look (see sniff_model for each test).
