@@ -6,6 +6,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "raster/model.h"
+
 namespace bench {
 namespace {
 

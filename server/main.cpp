@@ -70,6 +70,21 @@ bool read_all(const std::string& path, std::string& out) {
   return !in->bad();
 }
 
+// Writes `size` bytes to the file `path` (stdout for "-"). The exit code: 0, or 1 when they cannot be.
+int write_all(const std::string& path, const char* data, std::size_t size) {
+  if (path == "-") {
+    std::cout.write(data, static_cast<std::streamsize>(size));
+    return std::cout.flush() ? 0 : 1;
+  }
+  std::ofstream out(path, std::ios::binary);
+  out.write(data, static_cast<std::streamsize>(size));
+  if (!out.flush()) {
+    std::cerr << "rasterd: cannot write " << path << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 std::string describe(const raster::SceneError& e) {
   std::string where;
   if (!e.where().pointer.empty()) where = " at " + e.where().pointer;
@@ -83,15 +98,11 @@ std::string describe(const raster::SceneError& e) {
 // file name (what --part gave wins; a name that is not there is left to the parser to report). The service
 // never does this: it has only what was uploaded.
 void gather_model_files(const std::string& model_path, const std::string& model,
-                        std::optional<raster::ModelFormat> format, raster::Uploads& uploads) {
+                        const raster::ModelFormatInfo& format, raster::Uploads& uploads) {
   const std::filesystem::path folder = std::filesystem::path(model_path).parent_path();
   const auto mtl = uploads.find("mtl");
-  const bool gltf = format == raster::ModelFormat::gltf || format == raster::ModelFormat::glb;
-  if (!gltf && format != raster::ModelFormat::obj && format) return;  // STL and PLY name no files
-  for (int round = 0; round < (gltf ? 1 : 2); ++round)  // OBJ: the libraries, then the textures they name
-    for (const std::string& name :
-         gltf ? raster::gltf_files(model)
-              : raster::obj_files(model, mtl == uploads.end() ? "" : mtl->second, uploads)) {
+  for (int round = 0; round < format.file_rounds; ++round)  // OBJ: the libraries, then the textures they name
+    for (const std::string& name : format.files(model, mtl == uploads.end() ? "" : mtl->second, uploads)) {
       const std::filesystem::path file = folder / name;
       std::error_code error;
       if (uploads.contains(name) || !std::filesystem::is_regular_file(file, error))
@@ -151,7 +162,9 @@ int run_render(const std::vector<std::string>& args) {
   }
   const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(text);
   if (input != "-" && (!rasterd::is_scene_text(text) || sniffed == raster::ModelFormat::gltf))
-    gather_model_files(input, text, sniffed, uploads);
+    // Bytes that tell no format: an OBJ's files are looked for (what is not OBJ text names none).
+    gather_model_files(input, text, raster::model_format(sniffed.value_or(raster::ModelFormat::obj)),
+                       uploads);
   try {
     raster::Scene scene =
         rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{}, false,
@@ -167,19 +180,8 @@ int run_render(const std::vector<std::string>& args) {
       scene = {};  // as the server does: the scene's memory goes before the PNG's comes
       png = raster::encode_png(std::move(image), plan.png);
     }
-    const char* data = explain ? plan_text.data() : reinterpret_cast<const char*>(png.data());
-    const auto size = static_cast<std::streamsize>(explain ? plan_text.size() : png.size());
-    if (output == "-") {
-      std::cout.write(data, size);
-      return std::cout.flush() ? 0 : 1;
-    }
-    std::ofstream out(output, std::ios::binary);
-    out.write(data, size);
-    if (!out.flush()) {
-      std::cerr << "rasterd: cannot write " << output << "\n";
-      return 1;
-    }
-    return 0;
+    return explain ? write_all(output, plan_text.data(), plan_text.size())
+                   : write_all(output, reinterpret_cast<const char*>(png.data()), png.size());
   } catch (const raster::SceneError& e) {
     std::cerr << "rasterd: " << input << ": " << describe(e) << "\n";
     return 1;

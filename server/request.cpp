@@ -164,29 +164,6 @@ bool is_json_media_type(std::string_view content_type) {
   return type == "application/json" || type == "text/json" || type.ends_with("+json");
 }
 
-std::optional<raster::ModelFormat> format_of_media_type(std::string_view content_type) {
-  std::string type(content_type.substr(0, content_type.find(';')));
-  while (!type.empty() && (type.back() == ' ' || type.back() == '\t')) type.pop_back();
-  std::transform(type.begin(), type.end(), type.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  using raster::ModelFormat;
-  static constexpr std::pair<std::string_view, ModelFormat> kTypes[] = {
-      {"model/obj", ModelFormat::obj},
-      {"text/x-obj", ModelFormat::obj},
-      {"model/stl", ModelFormat::stl},
-      {"model/x.stl-ascii", ModelFormat::stl},
-      {"model/x.stl-binary", ModelFormat::stl},
-      {"application/sla", ModelFormat::stl},
-      {"application/vnd.ms-pki.stl", ModelFormat::stl},
-      {"model/ply", ModelFormat::ply},
-      {"application/ply", ModelFormat::ply},
-      {"model/gltf+json", ModelFormat::gltf},
-      {"model/gltf-binary", ModelFormat::glb}};
-  for (const auto& [name, format] : kTypes)
-    if (type == name) return format;
-  return std::nullopt;
-}
-
 bool is_scene_text(std::string_view body) {
   if (body.starts_with(kUtf8Bom)) body.remove_prefix(kUtf8Bom.size());
   const std::size_t i = body.find_first_not_of(" \t\r\n");

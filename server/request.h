@@ -1,5 +1,5 @@
-// What a render request means: a scene JSON, or a bare OBJ model with query parameters, plus uploads.
-// Shared by the HTTP routes and the CLI so both accept exactly the same inputs.
+// What a render request means: a scene JSON, or a bare model (OBJ, STL, PLY, glTF) with query
+// parameters, plus uploads. Shared by the HTTP routes and the CLI so both accept exactly the same inputs.
 #pragma once
 
 #include <map>
@@ -65,9 +65,8 @@ void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts
 /// scene whatever its first byte.
 bool is_json_media_type(std::string_view content_type);
 
-/// The model format a Content-Type names (model/stl, model/gltf-binary, model/gltf+json, model/obj,
-/// application/sla, model/ply, ...), or nullopt.
-std::optional<raster::ModelFormat> format_of_media_type(std::string_view content_type);
+/// The model format a Content-Type names: the library's table of formats knows their media types.
+using raster::format_of_media_type;
 
 /// True when `body` is a scene by its bytes: the first byte after an optional UTF-8 byte order mark and
 /// whitespace is '{' or '['; anything else is a model.

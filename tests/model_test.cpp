@@ -240,6 +240,30 @@ TEST(Models, FormatsAreToldByTheirBytesThenByName) {
                  "PLY");
 }
 
+// The table is the one place a format is described: every name, extension and media type in a row leads
+// back to that row, and the scene's "format" lists the names in the table's order.
+TEST(Models, EveryFormatIsOneRowOfTheTable) {
+  ASSERT_EQ(raster::model_formats().size(), raster::kModelFormatCount);
+  for (std::size_t i = 0; i < raster::model_formats().size(); ++i) {
+    const raster::ModelFormatInfo& row = raster::model_formats()[i];
+    EXPECT_EQ(&raster::model_format(row.format), &row);
+    EXPECT_EQ(raster::format_names()[i], row.name);
+    EXPECT_EQ(raster::format_named(row.name), row.format);
+    EXPECT_EQ(raster::format_name(row.format), row.name);
+    EXPECT_NE(row.read, nullptr) << row.name;
+    EXPECT_EQ(row.files != nullptr, row.file_rounds > 0) << row.name;
+    for (const std::string_view e : row.extensions)
+      EXPECT_EQ(raster::format_of_file_name("dir/part." + std::string(e)), row.format) << e;
+    for (const std::string_view t : row.media_types) {
+      EXPECT_EQ(raster::format_of_media_type(t), row.format) << t;
+      EXPECT_EQ(raster::format_of_media_type(std::string(t) + " ; charset=utf-8"), row.format) << t;
+    }
+  }
+  EXPECT_EQ(raster::format_of_media_type("Model/GLTF-Binary"), ModelFormat::glb);
+  EXPECT_EQ(raster::format_of_media_type("application/json"), std::nullopt);
+  EXPECT_EQ(raster::format_of_media_type(""), std::nullopt);
+}
+
 // Each declared count is checked against the bytes before it sizes anything: these would ask for
 // terabytes (the test runs under ASan too, whose allocator fails loudly on such sizes).
 TEST(Models, DeclaredCountsAreCheckedAgainstTheBytesFirst) {

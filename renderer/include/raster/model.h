@@ -1,9 +1,14 @@
 // Models in the formats people bring: OBJ, STL (ASCII and binary), PLY (ASCII, binary little and big
 // endian) and glTF 2.0 (.gltf and .glb). Each reader turns bytes into a Mesh and never reads a file: the
 // files a model names (an OBJ's MTL and textures, a glTF's buffers and images) come from `files`, by name.
+// Which format a model is in, and what each format is called, is decided by one table (model_formats()).
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,7 +19,38 @@ namespace raster {
 
 enum class ModelFormat : std::uint8_t { obj, stl, ply, gltf, glb };
 
-/// The format's name as the scene's "format" field and the service's ?format= take it: "obj", "stl",
+/// Everything rasterd knows about one model format, in one row, so that the service (its media types and
+/// ?format=), the CLI (a file's extension and the files beside it) and the scene reader (a model
+/// primitive's "format") decide alike, and a format is added in one place.
+struct ModelFormatInfo {
+  ModelFormat format;  ///< the format this row describes
+  /// As the scene's "format" and ?format= take it: "obj", "stl", "ply", "gltf", "glb".
+  std::string_view name;
+  std::span<const std::string_view> extensions;   ///< file name extensions naming it: lower case, no dot
+  std::span<const std::string_view> media_types;  ///< Content-Types naming it: lower case, no parameters
+  /// True when `bytes` are in this format by their own look (see sniff_model for each test).
+  bool (*sniff)(std::string_view bytes);
+  /// Reads the model: `files` holds the files it names, by file name; `mtl_text` is an OBJ's materials
+  /// (as parse_obj takes them; the other formats ignore it).
+  Mesh (*read)(std::string_view bytes, const Limits& limits, const Uploads& files, std::string_view mtl_text);
+  /// The files the model names (obj_files, gltf_files), for a program that has its folder at hand; null
+  /// for a format that names none (STL, PLY).
+  std::vector<std::string> (*files)(std::string_view bytes, std::string_view mtl_text, const Uploads& files);
+  /// How many times `files` is asked, each time with the files found before: OBJ 2 (the libraries its
+  /// mtllib lines name, then the textures those name), glTF 1, STL and PLY 0.
+  int file_rounds;
+};
+
+/// The table, one row per ModelFormat, in the enum's order.
+std::span<const ModelFormatInfo> model_formats();
+inline constexpr std::size_t kModelFormatCount = 5;  ///< rows of model_formats()
+/// The row of `format`.
+const ModelFormatInfo& model_format(ModelFormat format);
+/// The rows' names, in the table's order ("obj", "stl", "ply", "gltf", "glb"): what a scene's "format"
+/// may be, in the order its error lists them.
+const std::array<std::string_view, kModelFormatCount>& format_names();
+
+/// The format's name as the scene's "format" and the service's ?format= take it: "obj", "stl",
 /// "ply", "gltf", "glb".
 std::string_view format_name(ModelFormat format);
 /// The inverse of format_name (ASCII case ignored); nullopt for any other word.
@@ -22,19 +58,43 @@ std::optional<ModelFormat> format_named(std::string_view name);
 /// "OBJ, STL (ASCII or binary), PLY (ASCII or binary) and glTF 2.0 (.gltf or .glb)": for errors.
 std::string_view accepted_formats();
 
-/// The format `bytes` are in, by the bytes alone, or nullopt when they are in none:
+/// The format `bytes` are in, by the bytes alone, or nullopt when they are in none. The tests are tried
+/// from the most particular to the loosest (glb, ply, stl, gltf, obj):
 /// - glb: the magic "glTF" and version 2;
-/// - gltf: a JSON object whose first key is a glTF top-level property ("asset", "scene", "nodes", ...);
-///   only that key is read, so a scene document of any size is told apart at once;
 /// - ply: "ply" and a line break;
 /// - stl: "solid" followed by "facet" or "endsolid" (ASCII), else a size of exactly 84 + 50 x the count
 ///   the header gives (binary; some binary files start with "solid" too);
+/// - gltf: a JSON object whose first key is a glTF top-level property ("asset", "scene", "nodes", ...);
+///   only that key is read, so a scene document of any size is told apart at once;
 /// - obj: text whose first statement (after blank lines and '#' comments) is an OBJ keyword; a file of
 ///   nothing but comments too, which parse_obj then calls empty.
 std::optional<ModelFormat> sniff_model(std::string_view bytes);
 
 /// The format a file name's extension names (.obj, .stl, .ply, .gltf, .glb; ASCII case ignored), or nullopt.
 std::optional<ModelFormat> format_of_file_name(std::string_view file_name);
+
+/// The format a media type names (model/stl, model/gltf-binary, model/gltf+json, model/obj,
+/// application/sla, model/ply, ...; a Content-Type's parameters after ';' and ASCII case ignored), or
+/// nullopt.
+std::optional<ModelFormat> format_of_media_type(std::string_view media_type);
+
+/// Parses an OBJ model (and optional MTL text) into a mesh. Throws SceneError(model) naming the line.
+/// `files` are the uploaded files by file name (a name differing only in case is accepted); nothing is
+/// ever read from disk. Without `mtl_text`, the materials are the files the model's `mtllib` lines name,
+/// found there by file name without folders (left out if not sent). Textures the MTL names (map_Kd) are
+/// looked up there the same way (a missing one is SceneError(model) naming it and the names there are);
+/// `limits.max_texture_pixels` bounds them all together. Faces of more than three corners are split as
+/// parse_ply splits them: quads on their shorter diagonal, larger polygons by ear clipping in their plane.
+Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {},
+               const Uploads& files = {});
+
+/// The files an OBJ model names, as parse_obj looks for them (file names without folders, each once, in the
+/// order named): the libraries of its `mtllib` lines (a line's whole text as one name, and each word of it),
+/// and the textures (map_Kd) of the materials in `mtl_text` or, without it, in those libraries as `files`
+/// holds them. For a program that has the model's folder at hand (the CLI) to gather them as uploads, in two
+/// rounds: libraries first, then the textures they name. Never throws for a bad MTL: parse_obj reports it.
+std::vector<std::string> obj_files(std::string_view obj_text, std::string_view mtl_text = {},
+                                   const Uploads& files = {});
 
 /// STL, ASCII or binary (told apart as sniff_model does). Each facet is a triangle of its own (an STL has
 /// no shared corners); shading is flat, from each facet's plane: the stored facet normals are not read,
@@ -76,5 +136,10 @@ std::vector<std::string> gltf_files(std::string_view bytes);
 /// find the files they name in `files`.
 Mesh parse_model(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits = {},
                  const Uploads& files = {}, std::string_view mtl_text = {});
+
+/// Decodes a PNG or JPEG texture to RGBA8. The size is read from the header and checked first: over
+/// kMaxTextureSide a side, or over `texel_budget` texels, is SceneError(limit) before any pixel is decoded.
+/// Anything else that is not a whole PNG or JPEG is SceneError(model). `name` is quoted in the errors.
+Texture decode_texture(std::string_view bytes, std::string_view name, std::int64_t texel_budget);
 
 }  // namespace raster

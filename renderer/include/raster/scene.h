@@ -270,27 +270,4 @@ void validate(const Scene& scene);
 /// Largest texture side accepted (stb_image's STBI_MAX_DIMENSIONS, too).
 inline constexpr int kMaxTextureSide = 16384;
 
-/// Decodes a PNG or JPEG texture to RGBA8. The size is read from the header and checked first: over
-/// kMaxTextureSide a side, or over `texel_budget` texels, is SceneError(limit) before any pixel is decoded.
-/// Anything else that is not a whole PNG or JPEG is SceneError(model). `name` is quoted in the errors.
-Texture decode_texture(std::string_view bytes, std::string_view name, std::int64_t texel_budget);
-
-/// Parses an OBJ model (and optional MTL text) into a mesh. Throws SceneError(model) naming the line.
-/// `files` are the uploaded files by file name (a name differing only in case is accepted); nothing is
-/// ever read from disk. Without `mtl_text`, the materials are the files the model's `mtllib` lines name,
-/// found there by file name without folders (left out if not sent). Textures the MTL names (map_Kd) are
-/// looked up there the same way (a missing one is SceneError(model) naming it and the names there are);
-/// `limits.max_texture_pixels` bounds them all together. Faces of more than three corners are split as
-/// parse_ply splits them: quads on their shorter diagonal, larger polygons by ear clipping in their plane.
-Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {},
-               const Uploads& files = {});
-
-/// The files an OBJ model names, as parse_obj looks for them (file names without folders, each once, in the
-/// order named): the libraries of its `mtllib` lines (a line's whole text as one name, and each word of it),
-/// and the textures (map_Kd) of the materials in `mtl_text` or, without it, in those libraries as `files`
-/// holds them. For a program that has the model's folder at hand (the CLI) to gather them as uploads, in two
-/// rounds: libraries first, then the textures they name. Never throws for a bad MTL: parse_obj reports it.
-std::vector<std::string> obj_files(std::string_view obj_text, std::string_view mtl_text = {},
-                                   const Uploads& files = {});
-
 }  // namespace raster

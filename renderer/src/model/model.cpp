@@ -1,5 +1,5 @@
-// Which reader a model goes to: its bytes first, then a file name's extension or the format a request
-// names (the hint). One reader per format: obj.cpp, stl.cpp, ply.cpp, gltf.cpp.
+// The model-format table, and which reader a model goes to: its bytes first, then a file name's extension
+// or the format a request names (the hint). One reader per format: obj.cpp, stl.cpp, ply.cpp, gltf.cpp.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -9,8 +9,6 @@
 
 namespace raster {
 namespace {
-
-constexpr std::array<std::string_view, 5> kNames = {"obj", "stl", "ply", "gltf", "glb"};
 
 bool iequals(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -107,15 +105,102 @@ bool looks_like_obj(std::string_view bytes) {
   return std::find(std::begin(kStatements), std::end(kStatements), word) != std::end(kStatements);
 }
 
+bool looks_like_glb(std::string_view bytes) {
+  return bytes.size() >= 12 && bytes.starts_with("glTF") && bytes[4] == 2 && bytes[5] == 0 && bytes[6] == 0 &&
+         bytes[7] == 0;
+}
+
+bool looks_like_ply(std::string_view bytes) {
+  return bytes.starts_with("ply\n") || bytes.starts_with("ply\r\n");
+}
+
+bool looks_like_stl(std::string_view bytes) {
+  return looks_like_ascii_stl(bytes) || looks_like_binary_stl(bytes);
+}
+
+// The readers and file lists under the table's one signature each.
+Mesh read_obj(std::string_view bytes, const Limits& limits, const Uploads& files, std::string_view mtl_text) {
+  return parse_obj(bytes, mtl_text, limits, files);
+}
+Mesh read_stl(std::string_view bytes, const Limits& limits, const Uploads&, std::string_view) {
+  return parse_stl(bytes, limits);
+}
+Mesh read_ply(std::string_view bytes, const Limits& limits, const Uploads&, std::string_view) {
+  return parse_ply(bytes, limits);
+}
+Mesh read_gltf(std::string_view bytes, const Limits& limits, const Uploads& files, std::string_view) {
+  return parse_gltf(bytes, limits, files);
+}
+std::vector<std::string> files_of_gltf(std::string_view bytes, std::string_view, const Uploads&) {
+  return gltf_files(bytes);
+}
+
+constexpr std::string_view kObjExtensions[] = {"obj"}, kStlExtensions[] = {"stl"}, kPlyExtensions[] = {"ply"},
+                           kGltfExtensions[] = {"gltf"}, kGlbExtensions[] = {"glb"};
+constexpr std::string_view kObjTypes[] = {"model/obj", "text/x-obj"};
+constexpr std::string_view kStlTypes[] = {"model/stl", "model/x.stl-ascii", "model/x.stl-binary",
+                                          "application/sla", "application/vnd.ms-pki.stl"};
+constexpr std::string_view kPlyTypes[] = {"model/ply", "application/ply"};
+constexpr std::string_view kGltfTypes[] = {"model/gltf+json"};
+constexpr std::string_view kGlbTypes[] = {"model/gltf-binary"};
+
+constexpr ModelFormatInfo kFormats[] = {
+    {ModelFormat::obj, "obj", kObjExtensions, kObjTypes, looks_like_obj, read_obj, obj_files, 2},
+    {ModelFormat::stl, "stl", kStlExtensions, kStlTypes, looks_like_stl, read_stl, nullptr, 0},
+    {ModelFormat::ply, "ply", kPlyExtensions, kPlyTypes, looks_like_ply, read_ply, nullptr, 0},
+    {ModelFormat::gltf, "gltf", kGltfExtensions, kGltfTypes, looks_like_gltf_json, read_gltf, files_of_gltf,
+     1},
+    {ModelFormat::glb, "glb", kGlbExtensions, kGlbTypes, looks_like_glb, read_gltf, files_of_gltf, 1},
+};
+static_assert(std::size(kFormats) == kModelFormatCount);
+// model_format() finds a row by its enum value.
+static_assert([] {
+  for (std::size_t i = 0; i < std::size(kFormats); ++i)
+    if (static_cast<std::size_t>(kFormats[i].format) != i) return false;
+  return true;
+}());
+
+// The order sniff_model tries the tests in: a test that is sure (a magic number) before a looser one that
+// could also match the same bytes (a binary STL's free header may start like JSON or like an OBJ
+// statement; "glTF" bytes are no text), and OBJ, whose test is a first word, last.
+constexpr ModelFormat kSniffOrder[] = {ModelFormat::glb, ModelFormat::ply, ModelFormat::stl,
+                                       ModelFormat::gltf, ModelFormat::obj};
+
+// The media type of a Content-Type: before any ';', without trailing blanks, in lower case.
+std::string bare_media_type(std::string_view content_type) {
+  std::string type(content_type.substr(0, content_type.find(';')));
+  while (!type.empty() && (type.back() == ' ' || type.back() == '\t')) type.pop_back();
+  std::transform(type.begin(), type.end(), type.begin(),
+                 [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + 32) : c; });
+  return type;
+}
+
 }  // namespace
 
+std::span<const ModelFormatInfo> model_formats() {
+  return kFormats;
+}
+
+const ModelFormatInfo& model_format(ModelFormat format) {
+  return kFormats[static_cast<std::size_t>(format)];
+}
+
+const std::array<std::string_view, kModelFormatCount>& format_names() {
+  static constexpr std::array<std::string_view, kModelFormatCount> kNames = [] {
+    std::array<std::string_view, kModelFormatCount> names;
+    for (std::size_t i = 0; i < names.size(); ++i) names[i] = kFormats[i].name;
+    return names;
+  }();
+  return kNames;
+}
+
 std::string_view format_name(ModelFormat format) {
-  return kNames[static_cast<std::size_t>(format)];
+  return model_format(format).name;
 }
 
 std::optional<ModelFormat> format_named(std::string_view name) {
-  for (std::size_t i = 0; i < kNames.size(); ++i)
-    if (iequals(name, kNames[i])) return static_cast<ModelFormat>(i);
+  for (const ModelFormatInfo& row : kFormats)
+    if (iequals(name, row.name)) return row.format;
   return std::nullopt;
 }
 
@@ -124,21 +209,27 @@ std::string_view accepted_formats() {
 }
 
 std::optional<ModelFormat> sniff_model(std::string_view bytes) {
-  if (bytes.size() >= 12 && bytes.starts_with("glTF") && bytes[4] == 2 && bytes[5] == 0 && bytes[6] == 0 &&
-      bytes[7] == 0)
-    return ModelFormat::glb;
-  if (bytes.starts_with("ply\n") || bytes.starts_with("ply\r\n")) return ModelFormat::ply;
-  if (looks_like_ascii_stl(bytes)) return ModelFormat::stl;
-  if (looks_like_binary_stl(bytes)) return ModelFormat::stl;
-  if (looks_like_gltf_json(bytes)) return ModelFormat::gltf;
-  if (looks_like_obj(bytes)) return ModelFormat::obj;
+  for (const ModelFormat format : kSniffOrder)
+    if (model_format(format).sniff(bytes)) return format;
   return std::nullopt;
 }
 
 std::optional<ModelFormat> format_of_file_name(std::string_view file_name) {
   const std::size_t dot = file_name.find_last_of('.');
   if (dot == std::string_view::npos) return std::nullopt;
-  return format_named(file_name.substr(dot + 1));
+  const std::string_view extension = file_name.substr(dot + 1);
+  for (const ModelFormatInfo& row : kFormats)
+    for (const std::string_view e : row.extensions)
+      if (iequals(extension, e)) return row.format;
+  return std::nullopt;
+}
+
+std::optional<ModelFormat> format_of_media_type(std::string_view media_type) {
+  const std::string type = bare_media_type(media_type);
+  for (const ModelFormatInfo& row : kFormats)
+    for (const std::string_view t : row.media_types)
+      if (type == t) return row.format;
+  return std::nullopt;
 }
 
 Mesh parse_model(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits,
@@ -154,18 +245,7 @@ Mesh parse_model(std::string_view bytes, std::optional<ModelFormat> hint, const 
                                            ". Name the format if the bytes are one of them (?format=stl, "
                                            "or \"format\" in the scene)");
   }
-  switch (*format) {
-    case ModelFormat::obj:
-      return parse_obj(bytes, mtl_text, limits, files);
-    case ModelFormat::stl:
-      return parse_stl(bytes, limits);
-    case ModelFormat::ply:
-      return parse_ply(bytes, limits);
-    case ModelFormat::gltf:
-    case ModelFormat::glb:
-      return parse_gltf(bytes, limits, files);
-  }
-  return {};
+  return model_format(*format).read(bytes, limits, files, mtl_text);
 }
 
 }  // namespace raster

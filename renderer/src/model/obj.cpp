@@ -21,7 +21,7 @@
 #include "base/budget_ask.h"
 #include "model/obj_mtl.h"
 #include "model/polygon.h"
-#include "raster/scene.h"
+#include "raster/model.h"
 #include "raster/utf8.h"
 
 namespace raster::obj {

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "raster/scene.h"
+#include "raster/model.h"
 
 #define STBI_ONLY_PNG
 #define STBI_ONLY_JPEG

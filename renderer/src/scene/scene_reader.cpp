@@ -78,8 +78,7 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
      [](Reader& r, PrimitiveState& s, const Path&) { s.mtl_source = r.in.string(); }},
     {"format", format::kString, "a string",
      [](Reader& r, PrimitiveState& s, const Path& at) {
-       s.format = static_cast<ModelFormat>(
-           r.choice(at, std::array<std::string_view, 5>{"obj", "stl", "ply", "gltf", "glb"}));
+       s.format = model_formats()[r.choice(at, format_names())].format;
      }},
     {"textures", format::kObject, "an object of file name: base64 image",
      [](Reader& r, PrimitiveState& s, const Path& at) {
