@@ -25,6 +25,7 @@
 #include "raster/raster.h"
 #include "request.h"
 #include "resources.h"
+#include "flags.h"
 #include "service.h"
 
 namespace {
