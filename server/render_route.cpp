@@ -74,11 +74,11 @@ void RenderRoute::get(const httplib::Request& req, httplib::Response& res) {
 
 // CORS preflight (a page's POST of JSON, or a GET with If-None-Match): which methods and request headers a
 // page on an allowed origin may use.
-void RenderRoute::preflight(const httplib::Request&, httplib::Response& res) {
+void RenderRoute::preflight(httplib::Response& res, std::string_view methods) {
   res.status = 204;
-  res.set_header("Allow", "GET, HEAD, POST, OPTIONS");
+  res.set_header("Allow", std::string(methods));
   if (!res.has_header("Access-Control-Allow-Origin")) return;
-  res.set_header("Access-Control-Allow-Methods", "GET, HEAD, POST, OPTIONS");
+  res.set_header("Access-Control-Allow-Methods", std::string(methods));
   res.set_header("Access-Control-Allow-Headers", "Content-Type, If-None-Match, X-Request-Id");
   res.set_header("Access-Control-Max-Age", "86400");
 }

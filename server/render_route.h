@@ -8,6 +8,7 @@
 #include <chrono>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <httplib.h>
 
@@ -30,8 +31,8 @@ class RenderRoute {
   void post(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
   /// GET /render?scene=...: the scene is in the URL, so the answer can be cached by URL.
   void get(const httplib::Request& req, httplib::Response& res);
-  /// OPTIONS /render, the CORS preflight.
-  static void preflight(const httplib::Request& req, httplib::Response& res);
+  /// OPTIONS /render, the CORS preflight; `methods` are the route's (routes.cpp), e.g. "GET, HEAD, POST".
+  static void preflight(httplib::Response& res, std::string_view methods);
 
  private:
   /// What both methods hand to render(), read from the request.

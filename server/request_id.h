@@ -19,7 +19,7 @@ double ms_between(Clock::time_point a, Clock::time_point b);
 // cpp-httplib runs a request's pre-routing handler, route handler and logger on one thread, one request
 // at a time, and offers no per-request user data: this thread-local is that request's context.
 struct RequestContext {
-  Clock::time_point start;
+  Clock::time_point start;  ///< when the request began: its log duration and its body deadline
   std::chrono::system_clock::time_point wall;  ///< when the request began: the log line, the Date header
   std::string method;        ///< as sent (a 304 is written as a HEAD answer: see render_route.cpp)
   std::size_t bytes_in = 0;  ///< body bytes read so far

@@ -14,44 +14,52 @@ namespace {
 // by pattern, and a request with another method gets a 405 naming the methods, so the three cannot drift
 // apart: a route is added here or nowhere. (cpp-httplib answers HEAD with a GET handler.)
 struct Route {
-  std::string_view pattern;  ///< the path, or "/examples/{name}" for any one example
+  std::string_view pattern;  ///< the metrics label: the path, or "/examples/{name}" for any one example
   std::string_view methods;  ///< for the Allow header, e.g. "GET, HEAD"
-  void (*add)(httplib::Server& server, const RouteHandlers& handlers);  ///< registers those methods
+  std::string_view path;     ///< what cpp-httplib matches: the path, or a regex with the name as matches[1]
+  void (*add)(httplib::Server& server, const RouteHandlers& handlers, const Route& route);  ///< registers it
 };
 
-using Server = httplib::Server;
+using Handler = void (*)(const httplib::Request&, httplib::Response&);
+
+void serve_health(const httplib::Request&, httplib::Response& res) {
+  res.set_content("ok\n", "text/plain");
+}
+
+// A route that answers GET (and so HEAD) with a fixed handler.
+template <Handler serve>
+void add_get(httplib::Server& server, const RouteHandlers&, const Route& route) {
+  server.Get(std::string(route.path), serve);
+}
+
+void add_metrics(httplib::Server& server, const RouteHandlers& handlers, const Route& route) {
+  server.Get(std::string(route.path), handlers.metrics);
+}
+
+// POST /render, GET /render?scene=... (image URLs) and the CORS preflight naming the route's methods.
+void add_render(httplib::Server& server, const RouteHandlers& handlers, const Route& route) {
+  RenderRoute* render = &handlers.render;
+  const std::string path(route.path);
+  const std::string_view methods = route.methods;
+  server.Options(path, [methods](const httplib::Request&, httplib::Response& res) {
+    RenderRoute::preflight(res, methods);
+  });
+  server.Post(path, [render](const httplib::Request& req, httplib::Response& res,
+                             const httplib::ContentReader& reader) { render->post(req, res, reader); });
+  server.Get(path, [render](const httplib::Request& req, httplib::Response& res) { render->get(req, res); });
+}
 
 const Route kRoutes[] = {
-    {"/render", "GET, HEAD, POST, OPTIONS",
-     [](Server& server, const RouteHandlers& h) {
-       server.Options("/render", RenderRoute::preflight);
-       RenderRoute* render = &h.render;
-       server.Post("/render",
-                   [render](const httplib::Request& req, httplib::Response& res,
-                            const httplib::ContentReader& reader) { render->post(req, res, reader); });
-       // Image URLs, GET /render?scene=...
-       server.Get("/render",
-                  [render](const httplib::Request& req, httplib::Response& res) { render->get(req, res); });
-     }},
-    {"/healthz", "GET, HEAD",
-     [](Server& server, const RouteHandlers&) {
-       server.Get("/healthz", [](const httplib::Request&, httplib::Response& res) {
-         res.set_content("ok\n", "text/plain");
-       });
-     }},
-    {"/metrics", "GET, HEAD",
-     [](Server& server, const RouteHandlers& h) { server.Get("/metrics", h.metrics); }},
+    {"/render", "GET, HEAD, POST, OPTIONS", "/render", add_render},
+    {"/healthz", "GET, HEAD", "/healthz", add_get<serve_health>},
+    {"/metrics", "GET, HEAD", "/metrics", add_metrics},
     // The described API: server/api.cpp.
-    {"/schema/scene.json", "GET, HEAD",
-     [](Server& server, const RouteHandlers&) { server.Get("/schema/scene.json", serve_scene_schema); }},
-    {"/openapi.json", "GET, HEAD",
-     [](Server& server, const RouteHandlers&) { server.Get("/openapi.json", serve_openapi); }},
+    {"/schema/scene.json", "GET, HEAD", "/schema/scene.json", add_get<serve_scene_schema>},
+    {"/openapi.json", "GET, HEAD", "/openapi.json", add_get<serve_openapi>},
     // The playground page and its example scenes: server/playground.cpp.
-    {"/", "GET, HEAD", [](Server& server, const RouteHandlers&) { server.Get("/", serve_playground); }},
-    {"/examples", "GET, HEAD",
-     [](Server& server, const RouteHandlers&) { server.Get("/examples", serve_example_list); }},
-    {"/examples/{name}", "GET, HEAD",
-     [](Server& server, const RouteHandlers&) { server.Get(R"(/examples/([^/]+))", serve_example); }},
+    {"/", "GET, HEAD", "/", add_get<serve_playground>},
+    {"/examples", "GET, HEAD", "/examples", add_get<serve_example_list>},
+    {"/examples/{name}", "GET, HEAD", R"(/examples/([^/]+))", add_get<serve_example>},
 };
 
 const Route* route_of(const std::string& path) {
@@ -65,7 +73,7 @@ const Route* route_of(const std::string& path) {
 }  // namespace
 
 void install_routes(httplib::Server& server, const RouteHandlers& handlers) {
-  for (const Route& route : kRoutes) route.add(server, handlers);
+  for (const Route& route : kRoutes) route.add(server, handlers, route);
 }
 
 std::string route_label(const std::string& path) {
