@@ -22,8 +22,8 @@ namespace rasterd {
 struct ServiceConfig {
   raster::Limits limits;                   ///< scene limits, enforced by the library
   std::size_t max_body_bytes = 32u << 20;  ///< request body cap in bytes (413 above it)
-  /// Most threads one render uses (the plan takes fewer when there is little to draw); they draw the image's
-  /// tiles. 0 = the CPUs the process may use (cpu_limit()).
+  /// Most threads one render uses; they take the image's tiles (the plan takes one thread when there is
+  /// little to draw, and never more than the tiles). 0 = the CPUs the process may use (cpu_limit()).
   int render_threads = 0;
   int workers = 0;  ///< renders at once; 0 = the CPUs the process may use (cpu_limit())
   /// Bytes all requests may reserve at once (bodies, parsed models, render buffers); 0 = from the memory
