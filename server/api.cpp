@@ -12,15 +12,14 @@ std::string_view openapi_text() {
   return embedded::kApiDocuments[1].text();
 }
 
-void install_api_routes(httplib::Server& server) {
-  server.Get("/schema/scene.json", [](const httplib::Request&, httplib::Response& res) {
-    const std::string_view text = scene_schema_text();
-    res.set_content(text.data(), text.size(), "application/schema+json");
-  });
-  server.Get("/openapi.json", [](const httplib::Request&, httplib::Response& res) {
-    const std::string_view text = openapi_text();
-    res.set_content(text.data(), text.size(), "application/json");
-  });
+void serve_scene_schema(const httplib::Request&, httplib::Response& res) {
+  const std::string_view text = scene_schema_text();
+  res.set_content(text.data(), text.size(), "application/schema+json");
+}
+
+void serve_openapi(const httplib::Request&, httplib::Response& res) {
+  const std::string_view text = openapi_text();
+  res.set_content(text.data(), text.size(), "application/json");
 }
 
 }  // namespace rasterd

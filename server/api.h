@@ -9,7 +9,9 @@
 
 namespace rasterd {
 
-void install_api_routes(httplib::Server& server);
+/// GET /schema/scene.json and GET /openapi.json (server/routes.cpp registers them).
+void serve_scene_schema(const httplib::Request& req, httplib::Response& res);
+void serve_openapi(const httplib::Request& req, httplib::Response& res);
 
 /// The embedded documents, byte for byte as in server/schema/.
 std::string_view scene_schema_text();

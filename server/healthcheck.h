@@ -24,7 +24,7 @@ struct HealthTarget {
 };
 
 // The address `rasterd serve` listens on, decided as the server decides it (parse_service_flags in
-// server/service.cpp): the flags after `serve` (`--port N`, `--port=N`, `--host H`, `--host=H`; the last
+// server/flags.cpp): the flags after `serve` (`--port N`, `--port=N`, `--host H`, `--host=H`; the last
 // one wins), else RASTERD_PORT, then PORT, and RASTERD_HOST in the environment, else 0.0.0.0:8080. An
 // address of every interface (0.0.0.0, ::, empty) is asked on 127.0.0.1. `flag_host` and `flag_port` (the
 // healthcheck's own flags) win over all of it.

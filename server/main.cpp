@@ -21,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "flags.h"
 #include "healthcheck.h"
 #include "raster/raster.h"
 #include "request.h"
@@ -207,6 +208,60 @@ void keep_freed_pages() {
 #endif
 }
 
+// Tests only (tests/service_test.cpp): each admitted render first reads one byte from this FIFO, so a
+// test holds renders in flight, sends a signal, and releases them when it chooses. Opened read-write so
+// that opening never blocks and the FIFO stays open between the test's writes. In: RASTERD_TEST_RENDER_GATE
+// (unset in service). Out: config.after_admission set; false with the error printed if it cannot be opened.
+bool hold_renders_at_test_gate(rasterd::ServiceConfig& config) {
+  const char* path = std::getenv("RASTERD_TEST_RENDER_GATE");
+  if (!path) return true;
+  const int gate = ::open(path, O_RDWR | O_CLOEXEC);
+  if (gate < 0) {
+    std::cerr << "rasterd: cannot open RASTERD_TEST_RENDER_GATE " << path << ": " << std::strerror(errno)
+              << "\n";
+    return false;
+  }
+  config.after_admission = [gate] {
+    char byte;
+    while (::read(gate, &byte, 1) < 0 && errno == EINTR) {
+    }
+  };
+  return true;
+}
+
+// Serves on the bound `server` until one of `signals` (blocked in every thread) arrives, then stops: no new
+// connections, accepted requests finish within the grace period, and renders still running after it are
+// cancelled (they answer 503). Returns whether listening ended cleanly.
+bool serve_until_signalled(httplib::Server& server, rasterd::Service& service, const sigset_t& signals) {
+  std::mutex mutex;
+  std::condition_variable done_cv;
+  bool done = false;
+  std::thread signal_thread([&] {
+    int sig = 0;
+    sigwait(&signals, &sig);
+    std::unique_lock lock(mutex);
+    if (done) return;  // listen ended by itself; this was the wake-up below
+    std::cerr << "rasterd: signal " << sig << ": no new connections; finishing accepted requests (grace "
+              << service.config().shutdown_grace.count() << " ms)\n";
+    lock.unlock();
+    server.stop();  // closes the listening socket; listen_after_bind returns once accepted work is done
+    lock.lock();
+    if (!done_cv.wait_for(lock, service.config().shutdown_grace, [&] { return done; })) {
+      std::cerr << "rasterd: grace period over: stopping the renders still running\n";
+      service.cancel_renders();
+    }
+  });
+  const bool ok = server.listen_after_bind();
+  {
+    std::lock_guard lock(mutex);
+    done = true;
+  }
+  done_cv.notify_all();
+  pthread_kill(signal_thread.native_handle(), SIGTERM);  // wakes sigwait if no signal came
+  signal_thread.join();
+  return ok;
+}
+
 int run_serve(const std::vector<std::string>& args) {
   keep_freed_pages();
   std::string host = "0.0.0.0";
@@ -229,24 +284,7 @@ int run_serve(const std::vector<std::string>& args) {
   sigaddset(&signals, SIGINT);
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every thread started below
-
-  // Tests only (tests/service_test.cpp): each admitted render first reads one byte from this FIFO, so a
-  // test holds renders in flight, sends a signal, and releases them when it chooses. Opened read-write so
-  // that opening never blocks and the FIFO stays open between the test's writes.
-  int gate = -1;
-  if (const char* path = std::getenv("RASTERD_TEST_RENDER_GATE")) {
-    gate = ::open(path, O_RDWR | O_CLOEXEC);
-    if (gate < 0) {
-      std::cerr << "rasterd: cannot open RASTERD_TEST_RENDER_GATE " << path << ": " << std::strerror(errno)
-                << "\n";
-      return 1;
-    }
-    config.after_admission = [gate] {
-      char byte;
-      while (::read(gate, &byte, 1) < 0 && errno == EINTR) {
-      }
-    };
-  }
+  if (!hold_renders_at_test_gate(config)) return 1;
 
   httplib::Server server;
   rasterd::Service service(config);
@@ -258,35 +296,9 @@ int run_serve(const std::vector<std::string>& args) {
     return 1;
   }
   service.widen_backlog();
-
-  std::mutex mutex;
-  std::condition_variable done_cv;
-  bool done = false;
-  std::thread signal_thread([&] {
-    int sig = 0;
-    sigwait(&signals, &sig);
-    std::unique_lock lock(mutex);
-    if (done) return;  // listen ended by itself; this was the wake-up below
-    std::cerr << "rasterd: signal " << sig << ": no new connections; finishing accepted requests (grace "
-              << service.config().shutdown_grace.count() << " ms)\n";
-    lock.unlock();
-    server.stop();  // closes the listening socket; listen_after_bind returns once accepted work is done
-    lock.lock();
-    if (!done_cv.wait_for(lock, service.config().shutdown_grace, [&] { return done; })) {
-      std::cerr << "rasterd: grace period over: stopping the renders still running\n";
-      service.cancel_renders();
-    }
-  });
   std::cerr << "rasterd: listening on " << host << ":" << port << "\n"
             << "try:  curl --data-binary @examples/gradient.json localhost:" << port << "/render > out.png\n";
-  const bool ok = server.listen_after_bind();
-  {
-    std::lock_guard lock(mutex);
-    done = true;
-  }
-  done_cv.notify_all();
-  pthread_kill(signal_thread.native_handle(), SIGTERM);  // wakes sigwait if no signal came
-  signal_thread.join();
+  const bool ok = serve_until_signalled(server, service, signals);
   std::cerr << "rasterd: stopped\n";
   return ok ? 0 : 1;
 }

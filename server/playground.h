@@ -7,6 +7,11 @@
 
 namespace rasterd {
 
-void install_playground(httplib::Server& server);
+/// GET /: the page. (server/routes.cpp registers these.)
+void serve_playground(const httplib::Request& req, httplib::Response& res);
+/// GET /examples: the example names, a JSON array.
+void serve_example_list(const httplib::Request& req, httplib::Response& res);
+/// GET /examples/<name>.json, with the name in req.matches[1]; a 404 problem naming the examples if none.
+void serve_example(const httplib::Request& req, httplib::Response& res);
 
 }  // namespace rasterd

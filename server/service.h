@@ -1,5 +1,8 @@
-// The HTTP service: routes -> library -> response, plus what a service on a network needs: limits,
-// deadlines, admission, metrics and a graceful stop. No rendering logic lives here.
+// The HTTP service: its configuration, and the Service object that wires the concerns together on a
+// cpp-httplib server: the routes (routes.cpp), the render route (render_route.cpp), body reading (body.cpp),
+// admission (admission.cpp), metrics (metrics.cpp), request ids (request_id.cpp), and the connection and
+// shutdown settings. In: a ServiceConfig (flags.cpp reads one from `rasterd serve`'s flags). Out: a server
+// that answers every route. No rendering logic lives here.
 #pragma once
 
 #include <atomic>
@@ -19,8 +22,10 @@ namespace rasterd {
 struct ServiceConfig {
   raster::Limits limits;                   ///< scene limits, enforced by the library
   std::size_t max_body_bytes = 32u << 20;  ///< request body cap in bytes (413 above it)
-  int render_threads = 0;  ///< band threads per render; 0 = the CPUs the process may use (cpu_limit())
-  int workers = 0;         ///< renders at once; 0 = the CPUs the process may use (cpu_limit())
+  /// Most threads one render uses; they take the image's tiles (the plan takes one thread when there is
+  /// little to draw, and never more than the tiles). 0 = the CPUs the process may use (cpu_limit()).
+  int render_threads = 0;
+  int workers = 0;  ///< renders at once; 0 = the CPUs the process may use (cpu_limit())
   /// Bytes all requests may reserve at once (bodies, parsed models, render buffers); 0 = from the memory
   /// the process may use (default_memory_budget(memory_limit())).
   std::int64_t memory_budget = 0;
@@ -41,12 +46,6 @@ struct ServiceConfig {
   /// scene is read. A test holds renders in flight on a latch here, or throws to force an internal error.
   std::function<void()> after_admission;
 };
-
-/// Reads the configuration from `--flag value` arguments over environment variables over defaults.
-/// Returns an error message, empty on success. `help` receives the text for `rasterd serve --help`.
-std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig& config, std::string& host,
-                                int& port);
-std::string service_help();
 
 class Service {
  public:

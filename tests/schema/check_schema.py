@@ -235,6 +235,10 @@ def server_routes(root):
         for m in re.finditer(r'\.\s*(Get|Post|Put|Delete|Patch|Options)\(\s*(?:R"\((.*?)\)"|"([^"]*)")', text):
             route = re.sub(r"\([^)]*\)", "{}", m.group(2) or m.group(3))  # a regex group: a path parameter
             routes.add((m.group(1).lower(), route))
+        # server/routes.cpp's table: {"pattern", "METHODS", "path", add}; HEAD is answered by GET's handler.
+        for m in re.finditer(r'\{"(/[^"]*)",\s*"([A-Z, ]+)",', text):
+            route = re.sub(r"\{[^}]*\}", "{}", m.group(1))
+            routes.update((method.lower(), route) for method in m.group(2).split(", ") if method != "HEAD")
     return routes
 
 

@@ -1,0 +1,192 @@
+#include "flags.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <map>
+#include <vector>
+
+#include "memory_budget.h"
+#include "raster/raster.h"
+#include "resources.h"
+
+namespace rasterd {
+
+namespace {
+
+struct Flag {
+  const char* name;  // --name, and RASTERD_NAME (upper case, '-' as '_') in the environment
+  const char* help;
+};
+constexpr Flag kFlags[] = {
+    {"host", "address to listen on (default 0.0.0.0)"},
+    {"port", "port (default 8080; also PORT); 0 = any free port, named in the \"listening on\" line"},
+    {"max-body-bytes", "request body limit, 413 above (default 33554432 = 32 MiB)"},
+    {"max-width", "image width limit, 422 above (default 8192)"},
+    {"max-height", "image height limit, 422 above (default 8192)"},
+    {"max-pixels", "width x height limit, 422 above (default 40000000)"},
+    {"max-primitives", "primitives (and mesh triangles) limit, 422 above (default 2000000)"},
+    {"max-obj-faces",
+     "faces of one model (OBJ faces; STL, PLY and glTF triangles), 422 above (default 5000000)"},
+    {"max-json-depth", "JSON nesting limit, 400 above (default 64)"},
+    {"render-deadline-ms", "parse + render + encode deadline, 422 deadline-exceeded past it (default 10000)"},
+    {"body-deadline-ms", "time for the whole request body to arrive, 408 past it (default 10000)"},
+    {"workers", "renders at once (default: the CPUs the process may use: affinity and cgroup quota)"},
+    {"memory-budget",
+     "bytes requests may reserve at once, e.g. 1536M or 2G (default: the cgroup's memory limit, else 3/4 of "
+     "the machine's, less 480 MiB set aside; docs/memory.md)"},
+    {"log-format", "text (default) or json: one line per request on stderr"},
+    {"max-queue", "renders waiting for a worker at most, 503 + Retry-After beyond (default 256)"},
+    {"max-queue-wait-ms",
+     "a render waits only if its expected wait is within this, and at most this long (default 2000)"},
+    {"max-queued-bytes", "request bytes held by waiting renders, 503 beyond (default 268435456 = 256 MiB)"},
+    {"cors-origins",
+     "origins whose pages may read answers, comma-separated; * = any (default), none = no CORS"},
+    {"render-threads", "most threads one render draws its tiles on (default: the CPUs the process may use)"},
+    {"shutdown-grace-ms", "after SIGTERM/SIGINT, time for running and queued renders (default 20000)"},
+    {"cache-max-age",
+     "seconds in Cache-Control: public, max-age=N, immutable on GET /render (default 86400)"},
+};
+
+// "*", "none", or a comma-separated list of origins (blanks around commas ignored).
+std::vector<std::string> parse_origins(const std::string& text) {
+  std::vector<std::string> origins;
+  if (text == "none") return origins;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    std::size_t comma = text.find(',', at);
+    if (comma == std::string::npos) comma = text.size();
+    std::string origin = text.substr(at, comma - at);
+    origin.erase(0, origin.find_first_not_of(" \t"));
+    origin.erase(origin.find_last_not_of(" \t") + 1);
+    while (origin.size() > 1 && origin.back() == '/') origin.pop_back();  // an origin has no path
+    if (!origin.empty()) origins.push_back(origin);
+    at = comma + 1;
+  }
+  return origins;
+}
+
+std::string env_name(const char* flag) {
+  std::string e = "RASTERD_";
+  for (const char* c = flag; *c; ++c)
+    e += *c == '-' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+  return e;
+}
+
+// The value of each flag given, by flag name: the environment's, then the arguments' over them. Returns an
+// error message for an argument that is not a known flag with a value, else empty.
+std::string collect_flag_values(int argc, const char* const* argv,
+                                std::map<std::string, std::string>& values) {
+  for (const Flag& f : kFlags)
+    if (const char* v = std::getenv(env_name(f.name).c_str())) values[f.name] = v;
+  if (const char* p = std::getenv("PORT"); p && !values.count("port")) values["port"] = p;
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.rfind("--", 0) != 0) return "unexpected argument '" + a + "'";
+    a = a.substr(2);
+    std::string value;
+    if (const auto eq = a.find('='); eq != std::string::npos)
+      value = a.substr(eq + 1), a = a.substr(0, eq);
+    else if (i + 1 < argc)
+      value = argv[++i];
+    else
+      return "--" + a + " needs a value";
+    if (std::none_of(std::begin(kFlags), std::end(kFlags), [&](const Flag& f) { return a == f.name; }))
+      return "unknown flag --" + a;
+    values[a] = value;
+  }
+  return {};
+}
+
+// Sets what each flag names from `values` (flag name -> text). Returns the first error, else empty.
+std::string apply_flag_values(std::map<std::string, std::string>& values, ServiceConfig& config,
+                              std::string& host, int& port) {
+  std::string error;
+  auto number = [&](const std::string& name, long long lo, long long hi) -> long long {
+    const std::string& v = values[name];
+    char* end = nullptr;
+    const long long n = std::strtoll(v.c_str(), &end, 10);
+    if (v.empty() || *end || n < lo || n > hi) {
+      if (error.empty())
+        error = "--" + name + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                ", got '" + v + "'";
+      return lo;
+    }
+    return n;
+  };
+  for (const auto& [name, v] : values) {
+    if (name == "host")
+      host = v;
+    else if (name == "port")
+      port = static_cast<int>(number(name, 0, 65535));
+    else if (name == "max-body-bytes")
+      config.max_body_bytes = static_cast<std::size_t>(number(name, 1, 1ll << 32));
+    else if (name == "max-width")
+      config.limits.max_width = static_cast<int>(number(name, 1, raster::kMaxImageSide));
+    else if (name == "max-height")
+      config.limits.max_height = static_cast<int>(number(name, 1, raster::kMaxImageSide));
+    else if (name == "max-pixels")
+      config.limits.max_pixels = number(name, 1, 1ll << 28);
+    else if (name == "max-primitives")
+      config.limits.max_primitives = number(name, 1, 1ll << 31);
+    else if (name == "max-obj-faces")
+      config.limits.max_obj_faces = number(name, 1, 1ll << 31);
+    else if (name == "max-json-depth")
+      config.limits.max_json_depth = static_cast<int>(number(name, 2, 1000));
+    else if (name == "render-deadline-ms")
+      config.render_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
+    else if (name == "body-deadline-ms")
+      config.body_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
+    else if (name == "workers")
+      config.workers = static_cast<int>(number(name, 1, 1024));
+    else if (name == "max-queue")
+      config.max_queue = static_cast<int>(number(name, 1, 4096));
+    else if (name == "max-queue-wait-ms")
+      config.max_queue_wait = std::chrono::milliseconds(number(name, 0, 3'600'000));
+    else if (name == "max-queued-bytes")
+      config.max_queued_bytes = static_cast<std::size_t>(number(name, 0, 1ll << 40));
+    else if (name == "cors-origins")
+      config.cors_origins = parse_origins(v);
+    else if (name == "render-threads")
+      config.render_threads = static_cast<int>(number(name, 1, 1024));
+    else if (name == "shutdown-grace-ms")
+      config.shutdown_grace = std::chrono::milliseconds(number(name, 0, 3'600'000));
+    else if (name == "memory-budget") {
+      config.memory_budget = parse_size(v);
+      if (config.memory_budget < (1 << 20) && error.empty())
+        error = "--memory-budget must be a size of at least 1M (e.g. 1536M, 2G or bytes), got '" + v + "'";
+    } else if (name == "log-format") {
+      if (v != "text" && v != "json" && error.empty())
+        error = "--log-format must be text or json, got '" + v + "'";
+      config.log_json = v == "json";
+    } else if (name == "cache-max-age")
+      config.cache_max_age = static_cast<int>(number(name, 0, 31'536'000));
+  }
+  return error;
+}
+
+}  // namespace
+
+std::string service_help() {
+  std::string h =
+      "rasterd serve [--flag value ...]\n\nEach flag can also be set in the environment as RASTERD_<FLAG> "
+      "(e.g. RASTERD_MAX_BODY_BYTES);\nflags win over the environment.\n\n";
+  for (const Flag& f : kFlags) {
+    char line[200];
+    std::snprintf(line, sizeof line, "  --%-20s %s\n", f.name, f.help);
+    h += line;
+  }
+  return h;
+}
+
+std::string parse_service_flags(int argc, const char* const* argv, ServiceConfig& config, std::string& host,
+                                int& port) {
+  std::map<std::string, std::string> values;
+  if (std::string error = collect_flag_values(argc, argv, values); !error.empty()) return error;
+  return apply_flag_values(values, config, host, port);
+}
+
+}  // namespace rasterd
