@@ -10,125 +10,17 @@
 // process-wide settings.)
 #include "raster/png.h"
 
-#include <algorithm>
 #include <cstring>
-#include <memory>
-#include <mutex>
-#include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <isa-l/crc.h>
-#include <isa-l/igzip_lib.h>
+
+#include "png/deflate.h"
 
 namespace raster {
 namespace {
-
-// igzip's state for one level: the stream (large: it holds the history window) and the level's hash
-// buffer, 360 KB together at level 1. Setting one up costs more than compressing a small image, so they are
-// kept for reuse: a cache, not a setting (every call names its level). Kept in a pool rather than per
-// thread: a service encodes on whichever of its many connection threads serves the request, so per-thread
-// state would be set up once per thread (a first request on each of rasterd's hundreds of threads paid it)
-// and held by every thread; the pool holds as many as ever encode at once, each warm for the next.
-struct Deflater {
-  isal_zstream stream;
-  std::unique_ptr<std::uint8_t[]> level_buffer;
-  std::uint32_t level_buffer_size = 0;
-  int level = 0;
-};
-
-std::uint32_t level_buffer_size(int level) {
-  switch (level) {
-    case 0:
-      return ISAL_DEF_LVL0_DEFAULT;
-    case 1:
-      return ISAL_DEF_LVL1_DEFAULT;
-    case 2:
-      return ISAL_DEF_LVL2_DEFAULT;
-    default:
-      return ISAL_DEF_LVL3_DEFAULT;
-  }
-}
-
-class DeflaterPool {
- public:
-  std::unique_ptr<Deflater> take(int level) {
-    {
-      std::lock_guard lock(mutex_);
-      auto& spare = spare_[level];
-      if (!spare.empty()) {
-        std::unique_ptr<Deflater> d = std::move(spare.back());
-        spare.pop_back();
-        return d;
-      }
-    }
-    auto d = std::make_unique<Deflater>();
-    d->level = level;
-    d->level_buffer_size = level_buffer_size(level);
-    if (d->level_buffer_size) d->level_buffer = std::make_unique<std::uint8_t[]>(d->level_buffer_size);
-    return d;
-  }
-  std::size_t kept(int level) {
-    std::lock_guard lock(mutex_);
-    return spare_[level].size();
-  }
-  void give(std::unique_ptr<Deflater> d) {
-    std::lock_guard lock(mutex_);
-    auto& spare = spare_[d->level];
-    if (spare.size() < kMaxSpare) spare.push_back(std::move(d));  // else freed: more than ever ran at once
-  }
-
- private:
-  static constexpr std::size_t kMaxSpare = 64;  // per level: far above any machine's encodes at once
-  std::mutex mutex_;
-  std::vector<std::unique_ptr<Deflater>> spare_[4];
-};
-
-DeflaterPool& deflaters() {
-  static DeflaterPool pool;  // process-wide by nature: reusable memory, no behaviour
-  return pool;
-}
-
-// zlib stream (header, deflate, Adler-32) of `in` at igzip `level` (0..3) into a buffer that grows only if
-// the data does not compress: its untouched tail gets no memory pages. Returns the buffer and the size.
-std::pair<std::unique_ptr<std::uint8_t[]>, std::size_t> zlib_compress(const std::vector<std::uint8_t>& in,
-                                                                      int level) {
-  level = std::clamp(level, 0, 3);  // igzip's levels
-  struct Lease {
-    std::unique_ptr<Deflater> d;
-    ~Lease() { deflaters().give(std::move(d)); }
-  } lease{deflaters().take(level)};
-  Deflater& d = *lease.d;
-  isal_zstream& s = d.stream;
-  isal_deflate_init(&s);
-  s.level = static_cast<std::uint32_t>(level);
-  s.level_buf = d.level_buffer.get();
-  s.level_buf_size = d.level_buffer_size;
-  s.gzip_flag = IGZIP_ZLIB;
-  s.flush = NO_FLUSH;
-  s.end_of_stream = 1;
-  s.next_in = const_cast<std::uint8_t*>(in.data());  // igzip's API is not const-correct; it only reads
-  s.avail_in = static_cast<std::uint32_t>(in.size());
-
-  std::size_t capacity = in.size() + in.size() / 64 + 4096;  // stored blocks' overhead is 5 per 65535
-  auto out = std::unique_ptr<std::uint8_t[]>(new std::uint8_t[capacity]);
-  s.next_out = out.get();
-  s.avail_out = static_cast<std::uint32_t>(capacity);
-  for (;;) {
-    if (isal_deflate(&s) != COMP_OK)
-      throw std::runtime_error("PNG encoding failed: igzip rejected its input");
-    if (s.internal_state.state == ZSTATE_END) return {std::move(out), s.total_out};
-    if (s.avail_out == 0) {  // out of room: grow and go on where it stopped
-      auto bigger = std::unique_ptr<std::uint8_t[]>(new std::uint8_t[capacity * 2]);
-      std::memcpy(bigger.get(), out.get(), capacity);
-      out = std::move(bigger);
-      s.next_out = out.get() + capacity;
-      s.avail_out = static_cast<std::uint32_t>(capacity);
-      capacity *= 2;
-    }
-  }
-}
 
 void put_u32(std::uint8_t* p, std::uint32_t v) {
   p[0] = static_cast<std::uint8_t>(v >> 24), p[1] = static_cast<std::uint8_t>(v >> 16);
@@ -148,8 +40,9 @@ std::size_t finish_chunk(std::vector<std::uint8_t>& out, std::size_t at, const c
 
 // The PNG of filtered rows (a filter byte, then the row, per row). The rows are released before the file
 // is assembled, so at most the rows and the compressed data exist at once.
-std::vector<std::uint8_t> write_png(const Image& image, std::vector<std::uint8_t>&& filtered, const PngPlan& png) {
-  const auto [compressed, size] = zlib_compress(filtered, png.deflate_level);
+std::vector<std::uint8_t> write_png(const Image& image, std::vector<std::uint8_t>&& filtered,
+                                    const PngPlan& png) {
+  const auto [compressed, size] = deflate::zlib_compress(filtered, png.deflate_level);
   std::vector<std::uint8_t>().swap(filtered);
 
   static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -159,16 +52,15 @@ std::vector<std::uint8_t> write_png(const Image& image, std::vector<std::uint8_t
   std::uint8_t* ihdr = out.data() + 8 + 8;
   put_u32(ihdr, static_cast<std::uint32_t>(image.width));
   put_u32(ihdr + 4, static_cast<std::uint32_t>(image.height));
-  ihdr[8] = 8;  // bits per channel
+  ihdr[8] = 8;                                          // bits per channel
   ihdr[9] = static_cast<std::uint8_t>(png.color_type);  // the plan's choice
-  ihdr[10] = ihdr[11] = ihdr[12] = 0;  // deflate, adaptive filtering, no interlace
+  ihdr[10] = ihdr[11] = ihdr[12] = 0;                   // deflate, adaptive filtering, no interlace
   std::size_t at = finish_chunk(out, 8, "IHDR", kIhdr);
   std::memcpy(out.data() + at + 8, compressed.get(), size);
   at = finish_chunk(out, at, "IDAT", size);
   finish_chunk(out, at, "IEND", 0);
   return out;
 }
-
 
 // A plan made for another pixel format would write pixels under the wrong colour type: refused.
 void check_plan(const Image& image, const PngPlan& png) {
@@ -180,15 +72,11 @@ void check_plan(const Image& image, const PngPlan& png) {
 }  // namespace
 
 void prepare_png_encoders(int encodes_at_once, const PngPlan& png) {
-  const int level = std::clamp(png.deflate_level, 0, 3);
-  const int wanted = std::clamp(encodes_at_once, 0, 64);
-  std::vector<std::unique_ptr<Deflater>> taken;  // held at once, so each take makes a new one if need be
-  for (int i = 0; i < wanted; ++i) taken.push_back(deflaters().take(level));
-  for (auto& d : taken) deflaters().give(std::move(d));
+  deflate::prepare(encodes_at_once, png.deflate_level);
 }
 
 std::size_t kept_png_encoders(int deflate_level) {
-  return deflaters().kept(std::clamp(deflate_level, 0, 3));
+  return deflate::kept(deflate_level);
 }
 
 std::vector<std::uint8_t> encode_png(const Image& image) {
