@@ -38,7 +38,7 @@ raster::Mesh read(std::string_view input, const raster::Limits& limits, const ra
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string kPng = small_png();
   raster::Limits limits;
-  limits.max_obj_faces = 20000;
+  limits.max_model_faces = 20000;
   limits.max_texture_pixels = 64;
   std::string_view input(reinterpret_cast<const char*>(data), size);
   raster::Uploads files{{"t.png", kPng}};

@@ -26,7 +26,7 @@ std::string small_png() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string kPng = small_png();
   raster::Limits limits;
-  limits.max_obj_faces = 20000;
+  limits.max_model_faces = 20000;
   limits.max_texture_pixels = 64;
   const std::string_view input(reinterpret_cast<const char*>(data), size);
   const std::size_t nul = input.find('\0');

@@ -29,8 +29,9 @@ constexpr Flag kFlags[] = {
     {"max-height", "image height limit, 422 above (default 8192)"},
     {"max-pixels", "width x height limit, 422 above (default 40000000)"},
     {"max-primitives", "primitives (and mesh triangles) limit, 422 above (default 2000000)"},
-    {"max-obj-faces",
-     "faces of one model (OBJ faces; STL, PLY and glTF triangles), 422 above (default 5000000)"},
+    {"max-model-faces",
+     "faces of one model (OBJ faces; STL, PLY and glTF triangles), 422 above (default 5000000; "
+     "--max-obj-faces is its old name)"},
     {"max-json-depth", "JSON nesting limit, 400 above (default 64)"},
     {"render-deadline-ms", "parse + render + encode deadline, 422 deadline-exceeded past it (default 10000)"},
     {"body-deadline-ms", "time for the whole request body to arrive, 408 past it (default 10000)"},
@@ -80,6 +81,9 @@ std::string env_name(const char* flag) {
 // error message for an argument that is not a known flag with a value, else empty.
 std::string collect_flag_values(int argc, const char* const* argv,
                                 std::map<std::string, std::string>& values) {
+  // A flag's old name, from when it bounded only OBJ models, still sets it (deployments name it).
+  auto current = [](std::string name) { return name == "max-obj-faces" ? std::string("max-model-faces") : name; };
+  if (const char* v = std::getenv(env_name("max-obj-faces").c_str())) values["max-model-faces"] = v;
   for (const Flag& f : kFlags)
     if (const char* v = std::getenv(env_name(f.name).c_str())) values[f.name] = v;
   if (const char* p = std::getenv("PORT"); p && !values.count("port")) values["port"] = p;
@@ -94,6 +98,7 @@ std::string collect_flag_values(int argc, const char* const* argv,
       value = argv[++i];
     else
       return "--" + a + " needs a value";
+    a = current(a);
     if (std::none_of(std::begin(kFlags), std::end(kFlags), [&](const Flag& f) { return a == f.name; }))
       return "unknown flag --" + a;
     values[a] = value;
@@ -132,8 +137,8 @@ std::string apply_flag_values(std::map<std::string, std::string>& values, Servic
       config.limits.max_pixels = number(name, 1, 1ll << 28);
     else if (name == "max-primitives")
       config.limits.max_primitives = number(name, 1, 1ll << 31);
-    else if (name == "max-obj-faces")
-      config.limits.max_obj_faces = number(name, 1, 1ll << 31);
+    else if (name == "max-model-faces")
+      config.limits.max_model_faces = number(name, 1, 1ll << 31);
     else if (name == "max-json-depth")
       config.limits.max_json_depth = static_cast<int>(number(name, 2, 1000));
     else if (name == "render-deadline-ms")

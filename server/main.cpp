@@ -32,11 +32,13 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   rasterd render SCENE.json [-o OUT.png] [--explain]   render a scene file ('-' = stdin / stdout)
-  rasterd render MODEL.obj [-o OUT.png] [--width N] [--height N] [--background C] [--view V]
+  rasterd render MODEL [-o OUT.png] [--width N] [--height N] [--background C] [--view V]
                  [--projection P] [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z]
                  [--part NAME=FILE]
-                                                        a bare OBJ model with the default scene; the MTL
-                                                        and textures it names are read from its folder
+                                                        a bare model (OBJ, STL, PLY, glTF) in the default
+                                                        scene; the files it names (an OBJ's MTL and
+                                                        textures, a glTF's buffers and images) are read
+                                                        from its folder
   rasterd serve [--host H] [--port N]                   HTTP service (env PORT; default 8080; 0: any free)
   rasterd healthcheck [--pid N] [--host H] [--port N]   GET /healthz of the server PID N (default 1) at the
                                                         address it was given; exit code 0 when healthy
@@ -44,7 +46,7 @@ constexpr const char* kUsage = R"(usage:
 
 render:  writes the PNG to OUT.png (default: stdout); --explain writes the render plan as JSON instead.
          A scene file sets everything itself: the model options are for a bare model only.
-serve:   POST /render (scene JSON, OBJ, or multipart) -> image/png; GET /healthz; GET /metrics.
+serve:   POST /render (scene JSON, a model, or multipart) -> image/png; GET /healthz; GET /metrics.
          `rasterd serve --help` lists the limits and their flags.
 )";
 

@@ -306,7 +306,7 @@ TEST(Models, PlyElementsWithoutPropertiesAreSkipped) {
 
 TEST(Models, TheFaceLimitHoldsForEveryFormat) {
   raster::Limits limits;
-  limits.max_obj_faces = 10;
+  limits.max_model_faces = 10;
   const TestMesh m = make_mesh(2);
   for (const Written& w : every_format(m)) {
     SCOPED_TRACE(w.name);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "access_log.h"
+#include "flags.h"
 #include "raster/version.h"
 #include "scene_url_support.h"
 #include "service_support.h"
@@ -233,3 +234,23 @@ TEST(Ops, AClientsRequestIdComesBackUnchanged) {
 }
 
 }  // namespace
+
+// The face limit bounds every model format, so its flag is --max-model-faces; deployments that still write
+// the name it had when only OBJ models were read keep their limit.
+TEST(Ops, TheFaceLimitTakesItsNewAndItsOldName) {
+  for (const char* flag : {"--max-model-faces", "--max-obj-faces"}) {
+    rasterd::ServiceConfig config;
+    std::string host;
+    int port = 0;
+    const char* argv[] = {flag, "1234"};
+    EXPECT_EQ(rasterd::parse_service_flags(2, argv, config, host, port), "") << flag;
+    EXPECT_EQ(config.limits.max_model_faces, 1234) << flag;
+  }
+  ::setenv("RASTERD_MAX_OBJ_FACES", "77", 1);
+  rasterd::ServiceConfig config;
+  std::string host;
+  int port = 0;
+  EXPECT_EQ(rasterd::parse_service_flags(0, nullptr, config, host, port), "");
+  ::unsetenv("RASTERD_MAX_OBJ_FACES");
+  EXPECT_EQ(config.limits.max_model_faces, 77);
+}

@@ -417,7 +417,7 @@ TEST(Obj, EmptyPointsOnlyAndLinesOnlyModels) {
 
 TEST(Obj, TooManyFacesIsALimitError) {
   raster::Limits limits;
-  limits.max_obj_faces = 2;
+  limits.max_model_faces = 2;
   try {
     raster::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\nf 1 2 3\n", {}, limits);
     FAIL();

@@ -99,7 +99,7 @@ TEST(Service, ChunkedBodyIsCutAtTheCap) {
 TEST(Service, EachSceneLimitHasItsStatus) {
   rasterd::ServiceConfig config;
   config.limits.max_primitives = 3;
-  config.limits.max_obj_faces = 1;
+  config.limits.max_model_faces = 1;
   config.limits.max_json_depth = 8;
   TestServer server(config);
   auto post = [&](const std::string& body, const char* type = "application/json") {

@@ -33,7 +33,7 @@ struct Frame {
 
 // The coverage routine the plan's anti-aliasing asks for.
 template <typename T, typename Shader>
-void cover(const detail::Edges<T>& e, Rect clip, Coverage coverage, const detail::Surface& surface,
+void cover(const detail::EdgeFunctions<T>& e, Rect clip, Coverage coverage, const detail::Surface& surface,
            detail::Lanes lanes, detail::StopMeter& meter, Shader& shader) {
   switch (coverage) {
     case Coverage::centre:
@@ -51,7 +51,7 @@ void draw_triangle(const detail::Setup& setup, const detail::Records& part, cons
                    detail::StopMeter& meter) {
   const float* attributes = part.attributes.data() + t.attributes;
   if (t.wide != detail::TriangleRecord::kFast) {
-    const detail::Edges<detail::Wide>& e = part.wide_edges[t.wide];
+    const detail::EdgeFunctions<detail::Wide>& e = part.wide_edges[t.wide];
     const detail::Wide scale(detail::kSubpixelScale);
     const double dx[3] = {(e.a[0] * scale).to_double(), (e.a[1] * scale).to_double(),
                           (e.a[2] * scale).to_double()};
@@ -60,7 +60,7 @@ void draw_triangle(const detail::Setup& setup, const detail::Records& part, cons
     detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, e.area.to_double());
     cover(e, clip, coverage, surface, lanes, meter, shader);
   } else {
-    const detail::Edges<std::int64_t>& e = t.edges;
+    const detail::EdgeFunctions<std::int64_t>& e = t.edges;
     const double dx[3] = {double(e.a[0] * detail::kSubpixelScale), double(e.a[1] * detail::kSubpixelScale),
                           double(e.a[2] * detail::kSubpixelScale)};
     const double dy[3] = {double(e.b[0] * detail::kSubpixelScale), double(e.b[1] * detail::kSubpixelScale),

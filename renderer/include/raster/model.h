@@ -100,7 +100,7 @@ std::vector<std::string> obj_files(std::string_view obj_text, std::string_view m
 /// no shared corners); shading is flat, from each facet's plane: the stored facet normals are not read,
 /// as writers often leave them zero or stale, and one that disagreed with the corners' order would light
 /// the face from behind. The solid's name and the attribute bytes are ignored. The binary triangle count is
-/// checked against the size before anything is allocated; `limits.max_obj_faces` bounds the facets.
+/// checked against the size before anything is allocated; `limits.max_model_faces` bounds the facets.
 /// Throws SceneError(model) naming the line (ASCII) or byte (binary), SceneError(limit) over the limit.
 Mesh parse_stl(std::string_view bytes, const Limits& limits = {});
 
@@ -111,7 +111,7 @@ Mesh parse_stl(std::string_view bytes, const Limits& limits = {});
 /// tinyobjloader splits them; larger polygons by ear clipping in their own plane, exact for any simple
 /// polygon, convex or not; the face element may come before the vertex element). Other elements and
 /// properties are skipped. Every element count and list length is checked against the bytes left before
-/// anything is allocated; `limits.max_obj_faces` bounds the triangles.
+/// anything is allocated; `limits.max_model_faces` bounds the triangles.
 Mesh parse_ply(std::string_view bytes, const Limits& limits = {});
 
 /// glTF 2.0 through tinygltf: a .gltf document (buffers and images as data: URIs, or as `files` named by

@@ -1,6 +1,8 @@
 // Plan: Scene -> RenderPlan, every decision about what this render needs (buffers, per-primitive modes,
-// camera, tiles, threads, PNG colour type), made once before any pixel work. Geometry, setup, the tiles
-// and the encoder execute a plan; they decide nothing themselves.
+// camera, tiles, threads, PNG colour type, every buffer's size), made once before any pixel work. Geometry,
+// setup, the tiles and the encoder execute a plan and decide nothing that shows in the image; the one
+// choice left to them is how to cut their work among the plan's threads (geometry's pieces of a large
+// mesh, parallel.h), which changes who computes a record, never what it holds.
 #pragma once
 
 #include <cstdint>

@@ -236,7 +236,7 @@ struct Limits {
   std::int64_t max_primitives = 2'000'000;      ///< entries of "primitives"
   int max_json_depth = 64;                      ///< nesting of arrays and objects
   std::int64_t max_buffer_bytes = 512ll << 20;  ///< all pixel storage of one render (colour, depth, samples)
-  std::int64_t max_obj_faces = 5'000'000;       ///< faces of one model: OBJ faces (before triangulation);
+  std::int64_t max_model_faces = 5'000'000;       ///< faces of one model: OBJ faces (before triangulation);
                                                 ///< STL, PLY and glTF triangles
   /// Texels of all of a scene's textures together, checked from each image's header before it is decoded
   /// (a decoded texel is 4 bytes; the plan also counts the mipmaps made from them).

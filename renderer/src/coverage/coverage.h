@@ -248,7 +248,7 @@ struct BlockGrid {
   T block_x[3], block_y[3];  ///< ... a block right, a block down
   T low[3], high[3];         ///< the least and the most E_k changes across a block's 8x8 pixels
 
-  BlockGrid(const Edges<T>& edges, Rect clip, SamplePoint at)
+  BlockGrid(const EdgeFunctions<T>& edges, Rect clip, SamplePoint at)
       : bx0(clip.x0 - clip.x0 % kBlock), by0(clip.y0 - clip.y0 % kBlock) {  // clip >= 0
     const T sx(std::int64_t{bx0} * kSubpixelScale + at.x), sy(std::int64_t{by0} * kSubpixelScale + at.y);
     for (int k = 0; k < 3; ++k) {
@@ -365,7 +365,7 @@ void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&acce
 /// intersected): a pixel is covered when every E_k >= 0 at its `sample` point. Calls shade(block) for each
 /// block with a covered pixel (the mask), shade.rect for rectangles wholly inside (see walk_blocks).
 template <typename T, typename Shade>
-void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter,
+void cover(const EdgeFunctions<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter,
            Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;
@@ -387,7 +387,7 @@ void cover(const Edges<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, St
 /// cut pixels to shade.area(block, cover) with their exact share: one edge by a closed form, several by
 /// clipping the square. The values shading reads are the aliased ones (top-left bias included).
 template <typename T, typename Shade>
-void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
+void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;
   const BlockGrid<T> g(edges, clip, SamplePoint{});
@@ -441,7 +441,7 @@ void cover_area(const Edges<T>& edges, Rect clip, Lanes lanes, StopMeter& meter,
 /// with any sample covered. The values in a Block are at the pixel centres (where shading is evaluated),
 /// whatever the pattern.
 template <typename T, typename Shade>
-void cover_samples(const Edges<T>& edges, Rect clip, const SamplePoint* pattern, int count, Lanes lanes,
+void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* pattern, int count, Lanes lanes,
                    StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;

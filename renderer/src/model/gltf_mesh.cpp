@@ -193,9 +193,9 @@ class MeshBuilder {
   // vertex limit and the memory budget; every coordinate checked to be finite and within +-2^128.
   void add_positions(const AccessorView& positions, const Mat& m) {
     const std::size_t base = mesh_.positions.size();
-    if (base + positions.count() > 3 * static_cast<std::size_t>(limits_.max_obj_faces) + 3)
+    if (base + positions.count() > 3 * static_cast<std::size_t>(limits_.max_model_faces) + 3)
       throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(3 * limits_.max_obj_faces) + " vertices");
+                       "the model has more than " + std::to_string(3 * limits_.max_model_faces) + " vertices");
     detail::stop_if_expired(limits_);
     detail::reserve(limits_, cost::kGltfPerVertex * static_cast<std::int64_t>(positions.count()), [&] {
       return positions.what() + "'s " + std::to_string(positions.count()) + " vertices";
@@ -414,9 +414,9 @@ class MeshBuilder {
 
   // `more` triangles to come: refused over the face limit, else room made for them.
   void make_room_for_triangles(std::size_t more) {
-    if (mesh_.triangles.size() + more > static_cast<std::size_t>(limits_.max_obj_faces))
+    if (mesh_.triangles.size() + more > static_cast<std::size_t>(limits_.max_model_faces))
       throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(limits_.max_obj_faces) + " faces");
+                       "the model has more than " + std::to_string(limits_.max_model_faces) + " faces");
     detail::reserve(limits_, cost::kGltfPerTriangle * static_cast<std::int64_t>(more),
                     [&] { return std::to_string(more) + " more triangles"; });
     make_room(mesh_.triangles, more);
@@ -470,9 +470,9 @@ class MeshBuilder {
       default:
         gltf_error(where + " has mode " + std::to_string(mode) + ", which glTF does not define");
     }
-    if (mesh_.segments.size() > 3 * static_cast<std::size_t>(limits_.max_obj_faces))
+    if (mesh_.segments.size() > 3 * static_cast<std::size_t>(limits_.max_model_faces))
       throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(3 * limits_.max_obj_faces) + " lines");
+                       "the model has more than " + std::to_string(3 * limits_.max_model_faces) + " lines");
   }
 
   const tinygltf::Model& model_;

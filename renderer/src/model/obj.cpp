@@ -126,9 +126,9 @@ Counts prescan(std::string_view text, const Limits& limits) {
       if (key == "f") {
         n.corners += static_cast<std::int64_t>(w.size()) - 1;
         if (w.size() - 1 >= 256) n.long_faces.push_back({n.faces, static_cast<std::uint32_t>(w.size() - 1)});
-        if (++n.faces > limits.max_obj_faces)
+        if (++n.faces > limits.max_model_faces)
           throw SceneError(ErrorKind::limit,
-                           "the model has more than " + std::to_string(limits.max_obj_faces) + " faces",
+                           "the model has more than " + std::to_string(limits.max_model_faces) + " faces",
                            ErrorLocation{"", 0, line_no});
       } else if (key == "l") {
         n.segments += static_cast<std::int64_t>(w.size()) - 2;

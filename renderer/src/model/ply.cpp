@@ -310,9 +310,9 @@ Layout check_elements(const Header& h, std::size_t data_bytes, const Limits& lim
     ply_error("the vertex element has no x, y and z properties", l.vertex->line);
   if (!l.face || l.face->count == 0)
     ply_error("the model has no faces (no \"element face\"); rasterd draws faces");
-  if (l.face->count > static_cast<std::uint64_t>(limits.max_obj_faces))
+  if (l.face->count > static_cast<std::uint64_t>(limits.max_model_faces))
     throw SceneError(ErrorKind::limit,
-                     "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+                     "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
   if (std::none_of(l.face->properties.begin(), l.face->properties.end(),
                    [](const Property& p) { return p.role == Role::indices; }))
     ply_error("the face element has no \"vertex_indices\" list", l.face->line);
@@ -417,9 +417,9 @@ struct Faces {
   void add_or_keep() {
     if (!mesh.positions.empty()) return add();
     early_triangles += corners.size() - 2;
-    if (early_triangles > static_cast<std::size_t>(limits.max_obj_faces))
+    if (early_triangles > static_cast<std::size_t>(limits.max_model_faces))
       throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+                       "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
     early_corners.insert(early_corners.end(), corners.begin(), corners.end());
     early_sizes.push_back(static_cast<std::uint32_t>(corners.size()));
   }
@@ -431,9 +431,9 @@ struct Faces {
   }
   void add() {
     // The limit counts triangles, as for STL and glTF: one face of a million corners is a million.
-    if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_obj_faces))
+    if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_model_faces))
       throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+                       "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
     if (corners.size() == 3) {
       mesh.triangles.push_back({corners[0], corners[1], corners[2]});
       return;
@@ -499,7 +499,7 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
   const Header h = read_header(bytes);
   const Layout l = check_elements(h, bytes.size() - h.data, limits);
   // The header counts what the mesh will hold (faces of more than three corners become more triangles,
-  // each of which the limit counts, so at most max_obj_faces of them).
+  // each of which the limit counts, so at most max_model_faces of them).
   detail::reserve(limits,
                   cost::kPlyPerFace * static_cast<std::int64_t>(l.face->count) +
                       cost::kPlyPerVertex * static_cast<std::int64_t>(l.vertex->count),

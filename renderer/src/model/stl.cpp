@@ -18,9 +18,9 @@ namespace {
 }
 
 void check_facets(std::uint64_t facets, const Limits& limits) {
-  if (facets > static_cast<std::uint64_t>(limits.max_obj_faces))
+  if (facets > static_cast<std::uint64_t>(limits.max_model_faces))
     throw SceneError(ErrorKind::limit,
-                     "the model has more than " + std::to_string(limits.max_obj_faces) + " faces");
+                     "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
 }
 
 std::uint32_t le_u32(const char* p) {

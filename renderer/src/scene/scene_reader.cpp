@@ -221,7 +221,7 @@ void Reader::finish_mesh(PrimitiveState& s, const Path& at) {
   }
 }
 
-void Reader::finish_obj(PrimitiveState& s, const Path& at) {
+void Reader::finish_model(PrimitiveState& s, const Path& at) {
   auto text_of = [&](std::uint32_t inline_bit, std::uint32_t source_bit, const std::string& text,
                      std::string_view name) -> std::string_view {
     const std::string_view inline_key = kPrimitiveFields[std::countr_zero(inline_bit)].key,
@@ -322,7 +322,7 @@ void Reader::primitive(const Path& at) {
   if (kTypes[s.type].name == "mesh")
     finish_mesh(s, at);
   else
-    finish_obj(s, at);
+    finish_model(s, at);
   Primitive p;
   p.kind = PrimitiveKind::mesh;
   p.mesh = static_cast<std::uint32_t>(scene.meshes.size());

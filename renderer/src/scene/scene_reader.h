@@ -242,7 +242,7 @@ struct Reader {
   void type_first(JsonCursor::Mark start, const Path& at);
   void finish_drawn(PrimitiveState& s, const Path& at);
   void finish_mesh(PrimitiveState& s, const Path& at);
-  void finish_obj(PrimitiveState& s, const Path& at);
+  void finish_model(PrimitiveState& s, const Path& at);
   void read_root();
 };
 

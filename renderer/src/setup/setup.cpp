@@ -17,10 +17,10 @@ bool is_top_left(const T& dx, const T& dy) {
 // Edges of a triangle with positive area; edge k runs between the other two vertices, so E_k is vertex
 // k's weight times the area.
 template <typename T>
-Edges<T> make_edges(const T (&x)[3], const T (&y)[3], const T& area) {
-  Edges<T> e;
+EdgeFunctions<T> make_edges(const T (&x)[3], const T (&y)[3], const T& area) {
+  EdgeFunctions<T> e;
   e.area = area;
-  using Coefficient = typename Edges<T>::Coefficient;
+  using Coefficient = typename EdgeFunctions<T>::Coefficient;
   for (int k = 0; k < 3; ++k) {
     const int from = (k + 1) % 3, to = (k + 2) % 3;
     const T a = y[from] - y[to], b = x[to] - x[from];
@@ -50,7 +50,7 @@ std::pair<int, int> centre_span(double lo, double hi, int size) {
 
 // True when a pixel centre of `box` is covered by `e` (the box holds at most kProbePixels pixels).
 constexpr int kProbePixels = 16;
-bool covers_a_centre(const Edges<std::int64_t>& e, Rect box) {
+bool covers_a_centre(const EdgeFunctions<std::int64_t>& e, Rect box) {
   for (int y = box.y0; y < box.y1; ++y)
     for (int x = box.x0; x < box.x1; ++x) {
       const std::int64_t X = std::int64_t{x} * kSubpixelScale + kSubpixelScale / 2,
@@ -63,7 +63,7 @@ bool covers_a_centre(const Edges<std::int64_t>& e, Rect box) {
 }
 
 // False when the whole of `tile`'s sample points (any sample position) lies outside an edge of `e`.
-bool may_touch(const Edges<std::int64_t>& e, Rect tile) {
+bool may_touch(const EdgeFunctions<std::int64_t>& e, Rect tile) {
   const double x0 = double(tile.x0) * kSubpixelScale, x1 = double(tile.x1) * kSubpixelScale - 1;
   const double y0 = double(tile.y0) * kSubpixelScale, y1 = double(tile.y1) * kSubpixelScale - 1;
   for (int k = 0; k < 3; ++k) {

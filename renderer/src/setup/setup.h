@@ -71,7 +71,7 @@ struct SetupVertex {
 /// the top-left rule folded into c (an edge that is not top or left has 1 subtracted), so a sample is
 /// covered exactly when all three are >= 0. E_k is vertex k's barycentric weight times `area`.
 template <typename T>
-struct Edges {
+struct EdgeFunctions {  // not scene.h's Edges (feature edges drawn over a mesh)
   /// In the fast range a and b are coordinate differences below 2^24: 32 bits hold them.
   using Coefficient = std::conditional_t<std::is_same_v<T, std::int64_t>, std::int32_t, T>;
   Coefficient a[3], b[3];
@@ -84,7 +84,7 @@ struct Edges {
 /// from the exact edge values, so a pixel's value does not depend on which tile or block computes it.
 struct TriangleRecord {
   static constexpr std::uint32_t kFast = ~0u;
-  Edges<std::int64_t> edges;     ///< the edges, when in the fast range (kept here: one fetch per record)
+  EdgeFunctions<std::int64_t> edges;     ///< the edges, when in the fast range (kept here: one fetch per record)
   Rect box;                      ///< pixels whose sample point may be covered, clipped to the image
   std::uint32_t call = 0;        ///< index into Setup::calls
   std::uint32_t attributes = 0;  ///< index into Setup::attributes of this record's first float (see below)
@@ -116,7 +116,7 @@ struct RecordRef {
 /// parts; the tiles draw the parts in order, so the image does not depend on how the work was split.
 struct Records {
   PodArray<TriangleRecord> triangles;
-  std::vector<Edges<Wide>> wide_edges;  ///< TriangleRecord::wide indexes these
+  std::vector<EdgeFunctions<Wide>> wide_edges;  ///< TriangleRecord::wide indexes these
   PodArray<float> attributes;           ///< TriangleRecord::attributes indexes these
   std::vector<LineRecord> lines;
   PodArray<RecordRef> order;  ///< every record of the part once, in the order the scene draws them

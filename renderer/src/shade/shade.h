@@ -1,6 +1,7 @@
 // Shade: covered blocks (coverage.h) + a record's attributes -> pixels. With pixel.h (how a colour
-// becomes bytes) and fill.h (the 2D colour kernels), the only place a colour is computed: interpolation of
-// the attribute planes, perspective correction, Lambert lighting per pixel, textures, depth and samples.
+// becomes bytes), fill.h (the 2D colour kernels) and light.h (Lambert), where every pixel's colour is
+// computed: interpolation of the attribute planes, perspective correction, lighting per pixel, textures,
+// depth and samples. (Flat-lit faces get their one colour from light.h in geometry, per face.)
 // Templated on the framebuffer's channel count so the per-pixel code has no format branches.
 #pragma once
 
@@ -43,7 +44,7 @@ class TriangleShader {
       for (int k = 0; k < 3; ++k) dl_dx_[k] = step_x[k] / area, dl_dy_[k] = step_y[k] / area;
     }
     flat_ = {to_byte(attr_[0]), to_byte(attr_[1]), to_byte(attr_[2]), to_byte(attr_[3])};
-    kind_ = depth_at_ ? Kind::depth : mode_.varying_color ? Kind::smooth : Kind::flat;
+    kind_ = depth_at_ ? Kind::perspective : mode_.varying_color ? Kind::smooth : Kind::flat;
     if (msaa_ && depth_at_) {
       // Depth is affine in screen space: each sample's z is the centre's plus a constant per sample.
       double dz_dx = 0, dz_dy = 0;
@@ -98,7 +99,7 @@ class TriangleShader {
   /// and the colour goes to the covered samples; whole pixels take the aliased path.
   void samples(const Block& b, const std::uint64_t* masks) {
     const int n = surface_.sample_count;
-    if (kind_ == Kind::depth) return depth_samples(b, masks);
+    if (kind_ == Kind::perspective) return depth_samples(b, masks);
     std::uint64_t all = b.mask;
     for (int s = 0; s < n; ++s) all &= masks[s];
     if (all) {
@@ -125,7 +126,7 @@ class TriangleShader {
         return fill_.block(b);
       case Kind::smooth:
         return planes_.block(b);
-      case Kind::depth:
+      case Kind::perspective:
         return shade_depth(b);
     }
   }
@@ -155,7 +156,7 @@ class TriangleShader {
   // Multisampling, pixels with every sample covered (2D). Opaque stores make a pixel's samples one colour
   // again; blending keeps them apart, each sample blended.
   void whole(const Block& b) {
-    if (kind_ == Kind::depth) {
+    if (kind_ == Kind::perspective) {
       std::uint64_t masks[16];
       std::fill_n(masks, surface_.sample_count, b.mask);
       return depth_samples(b, masks);
@@ -356,7 +357,9 @@ class TriangleShader {
   const float* uv_at_ = nullptr;  // textured calls with a texture: 3 x (u, v)
   double dl_dx_[3] = {}, dl_dy_[3] = {};  // textured: barycentric change per pixel right and down
   Rgba8 flat_;
-  enum class Kind : std::uint8_t { flat, smooth, depth } kind_ = Kind::flat;
+  // flat: one colour; smooth: 2D per-vertex colours in screen space; perspective: the 3D path (depth-tested,
+  // attributes interpolated perspective-correct, lit, textured)
+  enum class Kind : std::uint8_t { flat, smooth, perspective } kind_ = Kind::flat;
   FlatFill<C> fill_;       // Kind::flat
   ColorPlanes<C> planes_;  // Kind::smooth
 };
