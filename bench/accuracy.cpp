@@ -45,7 +45,7 @@ struct Level {
   bool area;
   bool cairo;
 };
-constexpr Level kLevels[] = {{"1", 1, false, false},  {"4", 4, false, false},    {"8", 8, false, false},
+constexpr Level kLevels[] = {{"1", 1, false, false},   {"4", 4, false, false},   {"8", 8, false, false},
                              {"16", 16, false, false}, {"area", 1, true, false}, {"Cairo", 1, false, true}};
 constexpr std::size_t kSampleLevels = 4;  // the first four are the sample counts
 
@@ -143,7 +143,8 @@ std::vector<Suite> suites() {
     const Rgba8 color{230, 200, 80, 255};
     for (int j = 0; j < 11; ++j)
       for (int i = 0; i < 11; ++i) {
-        const Point2 a{x0 + i * cell, y0 + j * cell}, b{a.x + cell, a.y}, c{a.x + cell, a.y + cell}, d{a.x, a.y + cell};
+        const Point2 a{x0 + i * cell, y0 + j * cell}, b{a.x + cell, a.y}, c{a.x + cell, a.y + cell},
+            d{a.x, a.y + cell};
         add_triangle(s, a, b, c, color);
         add_triangle(s, a, c, d, color);
       }
@@ -296,7 +297,8 @@ raster::Image cairo_render(const Suite& s, double* ms) {
         for (int x = 0; x < kSize; ++x) {
           std::uint32_t v;
           std::memcpy(&v, data + y * stride + x * 4, 4);
-          for (int k = 0; k < 3; ++k) img.pixels[(y * kSize + x) * 3 + k] = static_cast<std::uint8_t>(v >> (16 - 8 * k));
+          for (int k = 0; k < 3; ++k)
+            img.pixels[(y * kSize + x) * 3 + k] = static_cast<std::uint8_t>(v >> (16 - 8 * k));
         }
     }
     cairo_destroy(cr);
@@ -433,7 +435,9 @@ int main(int argc, char** argv) {
   char buf[512];
   auto mode_name = [&](const Row& r) {
     if (r.level->cairo) return std::string("Cairo 1.16, default");
-    if (r.level->area) return r.samples_used > 1 ? "area (3D: " + std::to_string(r.samples_used) + " samples)" : std::string("area");
+    if (r.level->area)
+      return r.samples_used > 1 ? "area (3D: " + std::to_string(r.samples_used) + " samples)"
+                                : std::string("area");
     return r.level->samples == 1 ? std::string("1 (aliased)") : std::to_string(r.level->samples) + " samples";
   };
   // docs/accuracy.md
@@ -446,14 +450,15 @@ int main(int argc, char** argv) {
       "instead, which is exact: there, any error of a compositing renderer is a seam). The bunny is 3D, "
       "where visibility makes per-triangle areas wrong; its reference is its own render at 16× the "
       "resolution, box-filtered (256 samples per pixel). Errors are per channel over *edge pixels* (partly "
-      "covered by some shape; for the bunny, pixels whose 256 samples differ), in 1/255 units; \"> 8\" is the "
-      "share of edge pixels with a channel more than 8/255 off. Times are the median of " +
+      "covered by some shape; for the bunny, pixels whose 256 samples differ), in 1/255 units; \"> 8\" is "
+      "the share of edge pixels with a channel more than 8/255 off. Times are the median of " +
       std::to_string(kRuns) +
       " renders (rasterd: plan + render; Cairo: surface creation to flushed pixels, the same polygons filled "
       "in the same order with its default anti-aliasing), one thread, this machine. The two *held-back* "
       "scenes (white on black) were never looked at while tuning.\n\n";
-  md += "| scene | anti-aliasing | mean error | p99 error | max error | > 8 | render ms |\n"
-        "|---|---|---:|---:|---:|---:|---:|\n";
+  md +=
+      "| scene | anti-aliasing | mean error | p99 error | max error | > 8 | render ms |\n"
+      "|---|---|---:|---:|---:|---:|---:|\n";
   for (const Row& r : rows) {
     std::snprintf(buf, sizeof buf, "| %s | %s | %.2f | %.1f | %.1f | %.1f%% | %.3f |\n", r.suite.c_str(),
                   mode_name(r).c_str(), r.err.mean, r.err.p99, r.err.max, 100 * r.err.over8, r.ms);
@@ -479,23 +484,28 @@ int main(int argc, char** argv) {
     target("area: time ≤ Cairo's", suite, area->ms / cairo->ms, 1, "× Cairo");
     target("area: time ≤ 3× aliased", suite, area->ms / aliased->ms, 3, "× aliased");
   }
-  for (const char* suite : {"triangles", "fan", "slivers", "lines", "grid", "held-back triangles", "held-back lines"}) {
+  for (const char* suite :
+       {"triangles", "fan", "slivers", "lines", "grid", "held-back triangles", "held-back lines"}) {
     const Row* aliased = find(suite, "1");
-    if (const Row* r = find(suite, "4")) target("4 samples: ≤ 1.5× aliased", suite, r->ms / aliased->ms, 1.5, "×");
-    if (const Row* r = find(suite, "16")) target("16 samples: ≤ 3× aliased", suite, r->ms / aliased->ms, 3, "×");
+    if (const Row* r = find(suite, "4"))
+      target("4 samples: ≤ 1.5× aliased", suite, r->ms / aliased->ms, 1.5, "×");
+    if (const Row* r = find(suite, "16"))
+      target("16 samples: ≤ 3× aliased", suite, r->ms / aliased->ms, 3, "×");
   }
   if (const Row* r = find("bunny (3D)", "16"))
     target("16 samples: ≤ 2.5× aliased", "bunny (3D)", r->ms / find("bunny (3D)", "1")->ms, 2.5, "×");
   for (const char* suite : {"fan", "grid"})
     if (const Row* r = find(suite, "area")) {
-      std::snprintf(buf, sizeof buf, "| area's seam (no target: the known limit) | %s | mean %.2f, p99 %.1f, max %.1f | — |\n",
+      std::snprintf(buf, sizeof buf,
+                    "| area's seam (no target: the known limit) | %s | mean %.2f, p99 %.1f, max %.1f | — |\n",
                     suite, r->err.mean, r->err.p99, r->err.max);
       md += buf;
     }
 
-  md += "\n## Which mode to choose\n\nEach step of the sample count, as the median over the scenes of this run "
-        "(error and time relative to the level before):\n\n"
-        "| step | mean edge error | render time |\n|---|---:|---:|\n";
+  md +=
+      "\n## Which mode to choose\n\nEach step of the sample count, as the median over the scenes of this run "
+      "(error and time relative to the level before):\n\n"
+      "| step | mean edge error | render time |\n|---|---:|---:|\n";
   for (std::size_t k = 1; k < kSampleLevels; ++k) {
     std::vector<double> err_ratio, time_ratio;
     for (const Suite& s : all) {
@@ -520,8 +530,9 @@ int main(int argc, char** argv) {
       "is not what is visible.\n"
       "- **1 (default)**: exactly the GPU rules and the fastest; on edge pixels the error is the whole step "
       "between two colours, by design.\n"
-      "- **4, 8, 16 samples**: coverage per sample position (Direct3D's patterns), each pixel shaded once per "
-      "primitive, a pixel's samples stored apart only where they differ, resolved per tile. No seams between "
+      "- **4, 8, 16 samples**: coverage per sample position (Direct3D's patterns), each pixel shaded once "
+      "per primitive, a pixel's samples stored apart only where they differ, resolved per tile. No seams "
+      "between "
       "abutting shapes (each sample belongs to exactly one of them), so meshes, fans and grids are exact "
       "where area is not; the error left is the pattern's: a fixed set of N points cannot measure an edge "
       "finer than about 1/N of a pixel, and along lines of rational slope the lattice aliases (a 45° line "
@@ -538,12 +549,14 @@ int main(int argc, char** argv) {
   const double left = 70, right = 560, top = 40, bottom = 400;
   double t_lo = 1e9, t_hi = 0, e_lo = 1e9, e_hi = 0;
   for (const Row& r : rows)
-    t_lo = std::min(t_lo, r.ms), t_hi = std::max(t_hi, r.ms), e_lo = std::min(e_lo, std::max(r.err.mean, 0.05)),
-    e_hi = std::max(e_hi, r.err.mean);
+    t_lo = std::min(t_lo, r.ms), t_hi = std::max(t_hi, r.ms),
+    e_lo = std::min(e_lo, std::max(r.err.mean, 0.05)), e_hi = std::max(e_hi, r.err.mean);
   const double lt0 = std::floor(std::log10(t_lo)), lt1 = std::ceil(std::log10(t_hi)),
                le0 = std::floor(std::log10(e_lo)), le1 = std::ceil(std::log10(e_hi));
   auto px = [&](double ms) { return left + (std::log10(ms) - lt0) / (lt1 - lt0) * (right - left); };
-  auto py = [&](double e) { return bottom - (std::log10(std::max(e, 0.05)) - le0) / (le1 - le0) * (bottom - top); };
+  auto py = [&](double e) {
+    return bottom - (std::log10(std::max(e, 0.05)) - le0) / (le1 - le0) * (bottom - top);
+  };
   const Rgba8 ink{40, 40, 40, 255}, grid{225, 225, 225, 255};
   for (double d = lt0; d <= lt1; ++d) {
     plot.line({px(std::pow(10, d)), top}, {px(std::pow(10, d)), bottom}, grid);
@@ -557,10 +570,13 @@ int main(int argc, char** argv) {
   }
   plot.line({left, bottom}, {right, bottom}, ink, 1.5f);
   plot.line({left, top}, {left, bottom}, ink, 1.5f);
-  plot.text(left, 12, "mean edge error (1/255) against render time: samples 1/4/8/16 (line), area (square), Cairo (cross)",
-            ink, 1.2);
-  const Rgba8 palette[] = {{220, 60, 60, 255},  {40, 120, 220, 255}, {30, 160, 90, 255}, {200, 130, 20, 255},
-                           {140, 70, 200, 255}, {20, 160, 170, 255}, {120, 120, 120, 255}, {230, 90, 170, 255}};
+  plot.text(
+      left, 12,
+      "mean edge error (1/255) against render time: samples 1/4/8/16 (line), area (square), Cairo (cross)",
+      ink, 1.2);
+  const Rgba8 palette[] = {{220, 60, 60, 255},   {40, 120, 220, 255}, {30, 160, 90, 255},
+                           {200, 130, 20, 255},  {140, 70, 200, 255}, {20, 160, 170, 255},
+                           {120, 120, 120, 255}, {230, 90, 170, 255}};
   for (std::size_t series = 0; series < all.size(); ++series) {
     const Rgba8 col = palette[series % std::size(palette)];
     const std::string& name = all[series].name;
@@ -576,12 +592,15 @@ int main(int argc, char** argv) {
     }
     if (const Row* a = find(name, "area")) {
       const Point2 c{px(a->ms), py(a->err.mean)};
-      plot.line({c.x - 5, c.y - 5}, {c.x + 5, c.y - 5}, col, 2), plot.line({c.x + 5, c.y - 5}, {c.x + 5, c.y + 5}, col, 2);
-      plot.line({c.x + 5, c.y + 5}, {c.x - 5, c.y + 5}, col, 2), plot.line({c.x - 5, c.y + 5}, {c.x - 5, c.y - 5}, col, 2);
+      plot.line({c.x - 5, c.y - 5}, {c.x + 5, c.y - 5}, col, 2),
+          plot.line({c.x + 5, c.y - 5}, {c.x + 5, c.y + 5}, col, 2);
+      plot.line({c.x + 5, c.y + 5}, {c.x - 5, c.y + 5}, col, 2),
+          plot.line({c.x - 5, c.y + 5}, {c.x - 5, c.y - 5}, col, 2);
     }
     if (const Row* a = find(name, "Cairo")) {
       const Point2 c{px(a->ms), py(a->err.mean)};
-      plot.line({c.x - 5, c.y - 5}, {c.x + 5, c.y + 5}, col, 2), plot.line({c.x - 5, c.y + 5}, {c.x + 5, c.y - 5}, col, 2);
+      plot.line({c.x - 5, c.y - 5}, {c.x + 5, c.y + 5}, col, 2),
+          plot.line({c.x - 5, c.y + 5}, {c.x + 5, c.y - 5}, col, 2);
     }
     plot.line({right + 20, top + 12 + 16 * series}, {right + 40, top + 12 + 16 * series}, col, 3);
     plot.text(right + 46, top + 7 + 16 * series, name, ink, 1.2);

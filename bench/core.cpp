@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "raster/raster.h"
 #include "peer.h"
+#include "raster/raster.h"
 #include "scenes.h"
 #include "timing.h"
 
@@ -57,25 +57,35 @@ int main(int argc, char** argv) {
       std::printf("| %s | | | %s | | | | |\n", t.kind, e.what());
       continue;
     }
-    const std::size_t triangles = scene.meshes.empty() ? scene.primitives.size() : scene.meshes[0].triangles.size();
+    const std::size_t triangles =
+        scene.meshes.empty() ? scene.primitives.size() : scene.meshes[0].triangles.size();
     for (int threads : {1, 2}) {
       raster::PlanOptions options;
       options.max_threads = threads;
       raster::Image image;
-      const double ms = bench::median_ms(runs, [&] { image = raster::render(scene, raster::plan(scene, {}, options)); });
+      const double ms =
+          bench::median_ms(runs, [&] { image = raster::render(scene, raster::plan(scene, {}, options)); });
       raster_ms[t.kind][threads] = ms;
-      const double theirs = llvmpipe.count(threads) && llvmpipe[threads].count(t.kind) ? llvmpipe[threads][t.kind] : 0;
+      const double theirs =
+          llvmpipe.count(threads) && llvmpipe[threads].count(t.kind) ? llvmpipe[threads][t.kind] : 0;
       const double ratio = theirs > 0 ? theirs / ms : 0;
-      std::printf("| %s | %d | %zu | %.2f | %.2f | %.2fx | %.1fx | %s |\n", t.kind, threads, triangles, ms, theirs,
-                  ratio, t.ratio, theirs <= 0 ? "n/a" : ratio >= t.ratio ? "met" : "**gap**");
+      std::printf("| %s | %d | %zu | %.2f | %.2f | %.2fx | %.1fx | %s |\n", t.kind, threads, triangles, ms,
+                  theirs, ratio, t.ratio,
+                  theirs <= 0        ? "n/a"
+                  : ratio >= t.ratio ? "met"
+                                     : "**gap**");
       if (std::string(t.kind) == "flat") flat_ms[std::to_string(threads)] = ms, flat_scene = scene;
     }
   }
 
   // Where the time goes, one thread, and what the bins cost.
-  std::printf("\nStages at 1 thread (milliseconds, median of %d; geometry includes transform, clipping and setup"
-              " of every record; tiles are coverage and shading):\n\n", runs);
-  std::printf("| scene | geometry + setup | bin | clear | tiles | records | bin entries | bin bytes | bytes per record-tile |\n");
+  std::printf(
+      "\nStages at 1 thread (milliseconds, median of %d; geometry includes transform, clipping and setup"
+      " of every record; tiles are coverage and shading):\n\n",
+      runs);
+  std::printf(
+      "| scene | geometry + setup | bin | clear | tiles | records | bin entries | bin bytes | bytes per "
+      "record-tile |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   struct Stages {
     double geometry, bin, clear, tiles;
@@ -98,11 +108,12 @@ int main(int argc, char** argv) {
       raster::RenderControl control;
       control.stats = &stats;
       raster::render(scene, plan, control);
-      g.push_back(stats.geometry_ms), b.push_back(stats.bin_ms), c.push_back(stats.clear_ms), t.push_back(stats.tiles_ms);
+      g.push_back(stats.geometry_ms), b.push_back(stats.bin_ms), c.push_back(stats.clear_ms),
+          t.push_back(stats.tiles_ms);
     }
     stage[kind] = {bench::median(g), bench::median(b), bench::median(c), bench::median(t)};
-    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %lld | %lld | %lld | %.1f |\n", kind, bench::median(g), bench::median(b),
-                bench::median(c), bench::median(t), static_cast<long long>(stats.records),
+    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %lld | %lld | %lld | %.1f |\n", kind, bench::median(g),
+                bench::median(b), bench::median(c), bench::median(t), static_cast<long long>(stats.records),
                 static_cast<long long>(stats.bin_entries), static_cast<long long>(stats.bin_bytes),
                 stats.bin_entries ? double(stats.bin_bytes) / double(stats.bin_entries) : 0.0);
   }
@@ -126,13 +137,17 @@ int main(int argc, char** argv) {
   }
   if (stage.count("small")) {
     const Stages& st = stage["small"];
-    std::printf("Where the small scene's time goes at 1 thread: tiles %.1f ms of %.1f (coverage of 8x8 blocks that "
-                "triangles of ~44 px mostly cross, and shading per block), geometry + setup %.1f ms, bins %.1f ms.\n",
-                st.tiles, st.geometry + st.bin + st.clear + st.tiles, st.geometry, st.bin);
+    std::printf(
+        "Where the small scene's time goes at 1 thread: tiles %.1f ms of %.1f (coverage of 8x8 blocks that "
+        "triangles of ~44 px mostly cross, and shading per block), geometry + setup %.1f ms, bins %.1f ms.\n",
+        st.tiles, st.geometry + st.bin + st.clear + st.tiles, st.geometry, st.bin);
   }
 
   // Tile size: the same renders at 32, 64 and 128 pixels a side.
-  std::printf("\nTile size (raster ms, 1 / 2 threads, median of %d):\n\n| scene | 32 | 64 | 128 |\n|---|---:|---:|---:|\n", runs);
+  std::printf(
+      "\nTile size (raster ms, 1 / 2 threads, median of %d):\n\n| scene | 32 | 64 | 128 "
+      "|\n|---|---:|---:|---:|\n",
+      runs);
   for (const char* kind : {"small", "large", "grid", "sphere"}) {
     const std::string k = kind;
     const raster::Scene scene = k == "sphere" ? bench::mesh_scene(k) : bench::make_scene(k, 1);
@@ -143,7 +158,8 @@ int main(int argc, char** argv) {
         raster::PlanOptions options;
         options.max_threads = threads;
         options.tile = tile;
-        ms[threads - 1] = bench::median_ms(runs, [&] { raster::render(scene, raster::plan(scene, {}, options)); });
+        ms[threads - 1] =
+            bench::median_ms(runs, [&] { raster::render(scene, raster::plan(scene, {}, options)); });
       }
       std::printf(" %.2f / %.2f |", ms[0], ms[1]);
     }
@@ -158,11 +174,13 @@ int main(int argc, char** argv) {
       asm volatile("" : : "r"(buffer.data()) : "memory");
     });
     const double memset_gpx = buffer.size() / 3.0 / (memset_ms * 1e6);
-    const double px = covered_pixels(flat_scene) + double(flat_scene.width) * flat_scene.height;  // + the clear
+    const double px =
+        covered_pixels(flat_scene) + double(flat_scene.width) * flat_scene.height;  // + the clear
     const double fill_gpx = px / (flat_ms["1"] * 1e6);
-    std::printf("\nFlat fill, the \"flat\" scene at 1 thread (clear included): %.2f Gpx/s; memset of the RGB buffer: "
-                "%.2f Gpx/s (%.1f GB/s); fill / memset = %.0f%% (target ≥ 25%%: %s)\n",
-                fill_gpx, memset_gpx, buffer.size() / (memset_ms * 1e6), 100 * fill_gpx / memset_gpx,
-                fill_gpx / memset_gpx >= 0.25 ? "met" : "**gap**");
+    std::printf(
+        "\nFlat fill, the \"flat\" scene at 1 thread (clear included): %.2f Gpx/s; memset of the RGB buffer: "
+        "%.2f Gpx/s (%.1f GB/s); fill / memset = %.0f%% (target ≥ 25%%: %s)\n",
+        fill_gpx, memset_gpx, buffer.size() / (memset_ms * 1e6), 100 * fill_gpx / memset_gpx,
+        fill_gpx / memset_gpx >= 0.25 ? "met" : "**gap**");
   }
 }

@@ -12,8 +12,8 @@
 
 #include <tiny_obj_loader.h>
 
-#include "raster/raster.h"
 #include "peer.h"
+#include "raster/raster.h"
 #include "scenes.h"
 #include "stb_stock.h"
 #include "timing.h"

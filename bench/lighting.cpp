@@ -50,7 +50,8 @@ Figures measure(const std::string& obj, const Rig& rig, raster::View view) {
   const int c = raster::channel_count(image.format);
   for (std::size_t i = 0; i + c <= image.pixels.size(); i += c) {
     if (image.pixels[i + c - 1] == 0) continue;  // not covered (alpha 0)
-    const double r = image.pixels[i], g = c >= 3 ? image.pixels[i + 1] : r, b = c >= 3 ? image.pixels[i + 2] : r;
+    const double r = image.pixels[i], g = c >= 3 ? image.pixels[i + 1] : r,
+                 b = c >= 3 ? image.pixels[i + 2] : r;
     luma.push_back(0.2126 * r + 0.7152 * g + 0.0722 * b);
   }
   f.pixels = luma.size();
@@ -76,13 +77,16 @@ std::string read(const std::string& path) {
   return s.str();
 }
 
-std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+std::string base_name(const std::string& path) {
+  return path.substr(path.find_last_of('/') + 1);
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<Rig> rigs = {{"before (0.1: headlight 0.8 + ambient 0.2)", raster::single_light(0.2, nullptr)},
-                                 {"after (default: key 0.45 + fill 0.25 + ambient 0.35)", raster::default_lights()}};
+  const std::vector<Rig> rigs = {
+      {"before (0.1: headlight 0.8 + ambient 0.2)", raster::single_light(0.2, nullptr)},
+      {"after (default: key 0.45 + fill 0.25 + ambient 0.35)", raster::default_lights()}};
   std::vector<std::pair<std::string, std::string>> models = {{"cube (built in)", kCube}};
   for (int i = 1; i < argc; ++i) models.emplace_back(base_name(argv[i]), read(argv[i]));
 
@@ -92,7 +96,8 @@ int main(int argc, char** argv) {
   std::vector<std::vector<double>> means(rigs.size()), p5s(rigs.size()), p95s(rigs.size());
   for (const auto& [name, obj] : models) {
     bool drawn = true;
-    for (const auto& [view, view_name] : {std::pair{raster::View::front, "front"}, {raster::View::iso, "iso"}}) {
+    for (const auto& [view, view_name] :
+         {std::pair{raster::View::front, "front"}, {raster::View::iso, "iso"}}) {
       for (std::size_t r = 0; drawn && r < rigs.size(); ++r) {
         Figures f;
         try {
@@ -113,7 +118,9 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::printf("\n| rig | renders | mean of means | lowest p5 | median p5 | median p95 | highest p95 | mean share at full value |\n");
+  std::printf(
+      "\n| rig | renders | mean of means | lowest p5 | median p5 | median p95 | highest p95 | mean share at "
+      "full value |\n");
   std::printf("|---|--:|--:|--:|--:|--:|--:|--:|\n");
   for (std::size_t r = 0; r < rigs.size(); ++r) {
     auto median = [](std::vector<double> v) {
@@ -123,9 +130,10 @@ int main(int argc, char** argv) {
     double mean = 0;
     for (double m : means[r]) mean += m;
     const std::size_t n = means[r].size();
-    std::printf("| %s | %zu | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f%% |\n", rigs[r].name, n, n ? mean / n : 0,
-                n ? *std::min_element(p5s[r].begin(), p5s[r].end()) : 0, median(p5s[r]), median(p95s[r]),
-                n ? *std::max_element(p95s[r].begin(), p95s[r].end()) : 0, n ? totals[r].saturated / n : 0);
+    std::printf("| %s | %zu | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f%% |\n", rigs[r].name, n,
+                n ? mean / n : 0, n ? *std::min_element(p5s[r].begin(), p5s[r].end()) : 0, median(p5s[r]),
+                median(p95s[r]), n ? *std::max_element(p95s[r].begin(), p95s[r].end()) : 0,
+                n ? totals[r].saturated / n : 0);
   }
   return 0;
 }

@@ -114,7 +114,8 @@ const std::string& model_bytes(const std::string& kind) {
   if (kind == "ply_binary") bytes = test::write_ply_binary(mesh, false);
   if (kind == "gltf") {
     const test::Gltf g = test::make_gltf(mesh, "", true);
-    bytes = test::make_gltf(mesh, "data:application/octet-stream;base64," + test::base64(g.buffer), true).json;
+    bytes =
+        test::make_gltf(mesh, "data:application/octet-stream;base64," + test::base64(g.buffer), true).json;
   }
   if (kind == "glb") bytes = test::write_glb(test::make_gltf(mesh, "", true));
   return cache.emplace(kind, std::move(bytes)).first->second;
@@ -133,11 +134,12 @@ void tinygltf_load(benchmark::State& state, const std::string& kind) {
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     std::string err, warn;
-    const bool ok = kind == "glb" ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                                                reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                                static_cast<unsigned>(bytes.size()))
-                                  : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
-                                                               static_cast<unsigned>(bytes.size()), "");
+    const bool ok = kind == "glb"
+                        ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                                      reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                      static_cast<unsigned>(bytes.size()))
+                        : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                                     static_cast<unsigned>(bytes.size()), "");
     if (!ok) state.SkipWithError(err.c_str());
     benchmark::DoNotOptimize(model);
   }

@@ -101,8 +101,8 @@ int main(int argc, char** argv) {
     glEnable(GL_LIGHT0);
     glEnable(GL_NORMALIZE);
     glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
-    // The scenes it draws are lit by ambient plus one directional light (bench/scenes.cpp): GL's model ambient
-    // and LIGHT0.
+    // The scenes it draws are lit by ambient plus one directional light (bench/scenes.cpp): GL's model
+    // ambient and LIGHT0.
     float amb = 0, dif = 0;
     raster::Vec3 to_light{0, 0, 1};
     for (const raster::LightPlan& l : plan.view.lights) {

@@ -162,7 +162,8 @@ raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path)
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j) {
         const double theta = pi * i / n, phi = 2 * pi * j / n;
-        mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+        mesh.positions.push_back(
+            {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
       }
     auto at = [](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
     for (int i = 0; i < n; ++i)
@@ -187,7 +188,8 @@ raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path)
     throw std::invalid_argument("unknown mesh scene: " + kind);
   }
   mesh.shading = raster::Shading::smooth;
-  // One headlight plus ambient: what the llvmpipe peer draws with its one GL light (the default rig has three).
+  // One headlight plus ambient: what the llvmpipe peer draws with its one GL light (the default rig has
+  // three).
   s.lights = raster::single_light(0.2, nullptr);
   s.meshes.push_back(std::move(mesh));
   raster::Primitive p;

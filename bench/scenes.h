@@ -8,8 +8,9 @@
 namespace bench {
 
 /// Kinds: "small" (100,000 triangles of about +-12 px, 1024x1024, per-vertex colours), "large" (200
-/// triangles of about +-340 px), "flat" (the same 200 large triangles, one colour each), "grid" (64x64 jittered grid, 8,192 triangles, flat colours), "mid"
-/// (2,000 triangles of about +-30 px on 512x512, the load-test scene). Same seed, same scene.
+/// triangles of about +-340 px), "flat" (the same 200 large triangles, one colour each), "grid" (64x64
+/// jittered grid, 8,192 triangles, flat colours), "mid" (2,000 triangles of about +-30 px on 512x512, the
+/// load-test scene). Same seed, same scene.
 raster::Scene make_scene(const std::string& kind, unsigned seed = 1);
 
 /// `count` triangles with vertices within +-radius px of a uniformly random centre on a side x side image,
@@ -38,6 +39,7 @@ namespace bench {
 /// with computed normals, 1024x1024) and "bunny" (the Stanford bunny from $RASTERD_BUNNY, else `bunny_path`,
 /// smooth-lit, 512x512).
 /// Camera and light are the defaults (auto-framed, headlight). Throws if the bunny file cannot be read.
-raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path = "../shared/models/bunny.obj");
+raster::Scene mesh_scene(const std::string& kind,
+                         const std::string& bunny_path = "../shared/models/bunny.obj");
 
 }  // namespace bench

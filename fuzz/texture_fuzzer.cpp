@@ -12,8 +12,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   constexpr std::int64_t kBudget = 512 * 512;  // texels: keeps each run fast; the check is the same at 4096^2
   try {
-    raster::Texture texture =
-        raster::decode_texture(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.png", kBudget);
+    raster::Texture texture = raster::decode_texture(
+        std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.png", kBudget);
     if (texture.width < 1 || texture.height < 1 ||
         static_cast<std::int64_t>(texture.width) * texture.height > kBudget ||
         texture.rgba.size() != static_cast<std::size_t>(texture.width) * texture.height * 4)

@@ -38,8 +38,8 @@ class ConnectionThreads final : public httplib::TaskQueue {
  private:
   struct Worker {
     std::thread thread;
-    std::function<void()> job;         // the connection handed to this thread; empty while idle
-    std::condition_variable wake;      // signalled when `job` is set or on shutdown
+    std::function<void()> job;     // the connection handed to this thread; empty while idle
+    std::condition_variable wake;  // signalled when `job` is set or on shutdown
   };
   void run(Worker& worker);
 

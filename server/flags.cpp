@@ -82,7 +82,9 @@ std::string env_name(const char* flag) {
 std::string collect_flag_values(int argc, const char* const* argv,
                                 std::map<std::string, std::string>& values) {
   // A flag's old name, from when it bounded only OBJ models, still sets it (deployments name it).
-  auto current = [](std::string name) { return name == "max-obj-faces" ? std::string("max-model-faces") : name; };
+  auto current = [](std::string name) {
+    return name == "max-obj-faces" ? std::string("max-model-faces") : name;
+  };
   if (const char* v = std::getenv(env_name("max-obj-faces").c_str())) values["max-model-faces"] = v;
   for (const Flag& f : kFlags)
     if (const char* v = std::getenv(env_name(f.name).c_str())) values[f.name] = v;

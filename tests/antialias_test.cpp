@@ -321,7 +321,8 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
     EXPECT_EQ(plan.tiles_in_place, !c.depth && c.samples == 1 && scene.width % 8 == 0) << c.name;
     EXPECT_EQ(plan.memory.tile_bytes, plan.tiles_in_place ? 0 : tile * raster::channel_count(c.format))
         << c.name;
-    EXPECT_EQ(plan.memory.sample_bytes, c.samples > 1 ? tile * c.samples * raster::channel_count(c.format) + tile / 8 : 0)
+    EXPECT_EQ(plan.memory.sample_bytes,
+              c.samples > 1 ? tile * c.samples * raster::channel_count(c.format) + tile / 8 : 0)
         << c.name;
     raster::RenderStats stats;
     raster::RenderControl control;
@@ -355,7 +356,8 @@ TEST(Multisample, EverySampleFollowsTheRuleAndEachPixelIsShadedOnce) {
       std::vector<int> count(kSide * kSide, 0);
       for (const auto& s : pattern) {
         const double mx = (128 - s.x) / 256.0, my = (128 - s.y) / 256.0;
-        const ref::Coverage cov = ref::triangle(a.x + mx, a.y + my, b.x + mx, b.y + my, c.x + mx, c.y + my, kSide, kSide);
+        const ref::Coverage cov =
+            ref::triangle(a.x + mx, a.y + my, b.x + mx, b.y + my, c.x + mx, c.y + my, kSide, kSide);
         for (int i = 0; i < kSide * kSide; ++i) count[i] += cov.mask[i];
       }
       test::SceneBuilder flat(kSide, kSide, kBlack);
@@ -368,7 +370,8 @@ TEST(Multisample, EverySampleFollowsTheRuleAndEachPixelIsShadedOnce) {
           const int k = count[y * kSide + x];
           touched += k > 0;
           ASSERT_EQ(test::pixel(img, x, y).r, (255 * k + samples / 2) / samples)
-              << samples << " samples, triangle " << n << ", pixel " << x << "," << y << ": " << k << " inside";
+              << samples << " samples, triangle " << n << ", pixel " << x << "," << y << ": " << k
+              << " inside";
         }
       // The same triangle with three vertex colours: shaded once per pixel it touches.
       test::SceneBuilder smooth(kSide, kSide, kBlack);
@@ -385,7 +388,8 @@ TEST(Multisample, EverySampleFollowsTheRuleAndEachPixelIsShadedOnce) {
 
 // 3D: depth per sample, and the mesh shaded once per pixel per triangle it is seen through.
 TEST(Multisample, MeshesAreShadedOncePerPixelPerVisibleTriangle) {
-  const raster::Scene scene = raster::parse_scene(R"({"width": 64, "height": 64, "antialias": 16, "primitives": [
+  const raster::Scene scene =
+      raster::parse_scene(R"({"width": 64, "height": 64, "antialias": 16, "primitives": [
       {"type": "mesh", "positions": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]], "indices": [[0, 1, 2]],
        "colors": ["#ff0000", "#00ff00", "#0000ff"], "shading": "unlit"}]})");
   raster::RenderStats stats;

@@ -28,10 +28,14 @@ double share(const std::vector<Point2>& poly, int x, int y) {
   for (int side = 0; side < 4 && !cur.empty(); ++side) {
     auto f = [&](Point2 p) {
       switch (side) {
-        case 0: return p.x - x;
-        case 1: return x + 1 - p.x;
-        case 2: return p.y - y;
-        default: return y + 1 - p.y;
+        case 0:
+          return p.x - x;
+        case 1:
+          return x + 1 - p.x;
+        case 2:
+          return p.y - y;
+        default:
+          return y + 1 - p.y;
       }
     };
     next.clear();
@@ -70,7 +74,9 @@ TEST(Area, RandomTrianglesAreWithinOneLevelOfTheExactShareAtEveryPixel) {
   for (int n = 0; n < 300; ++n) {
     // Sizes from a tenth of a pixel to beyond the image, and one in five a sliver.
     const double size = std::pow(10.0, -1 + unit(rng) * 3), cx = unit(rng) * kSide, cy = unit(rng) * kSide;
-    auto p = [&] { return Point2{on_grid(cx + (unit(rng) - 0.5) * size), on_grid(cy + (unit(rng) - 0.5) * size)}; };
+    auto p = [&] {
+      return Point2{on_grid(cx + (unit(rng) - 0.5) * size), on_grid(cy + (unit(rng) - 0.5) * size)};
+    };
     Point2 a = p(), b = p(), c = p();
     if (n % 5 == 0) c = {on_grid((a.x + b.x) / 2 + 0.02 * size), on_grid((a.y + b.y) / 2 - 0.013 * size)};
     const raster::Image img = render_area(SceneBuilder(kSide, kSide, kBlack).triangle(a, b, c, kWhite).scene);
@@ -82,7 +88,7 @@ TEST(Area, RandomTrianglesAreWithinOneLevelOfTheExactShareAtEveryPixel) {
         if (want > 0 && want < 255) ++cut_pixels, exact += got == std::lround(want);
       }
   }
-  EXPECT_GT(cut_pixels, 3000);         // the test reached many cut pixels
+  EXPECT_GT(cut_pixels, 3000);          // the test reached many cut pixels
   EXPECT_GT(exact, cut_pixels * 0.99);  // and nearly all are the rounded exact share itself
 }
 
@@ -114,7 +120,8 @@ TEST(Area, WholePixelsAreExactlyTheFlatColourAndCutOnesBlendTowardIt) {
   int whole = 0;
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x) {
-      const double s = share({{on_grid(a.x), on_grid(a.y)}, {on_grid(b.x), on_grid(b.y)}, {on_grid(c.x), on_grid(c.y)}}, x, y);
+      const double s = share(
+          {{on_grid(a.x), on_grid(a.y)}, {on_grid(b.x), on_grid(b.y)}, {on_grid(c.x), on_grid(c.y)}}, x, y);
       const Rgba8 got = test::pixel(img, x, y);
       if (s == 1) {
         ASSERT_EQ(got, color) << x << "," << y;
@@ -132,15 +139,16 @@ TEST(Area, AZeroAreaTriangleDrawsNothing) {
   const Rgba8 bg{10, 20, 30, 255};
   SceneBuilder s(32, 32, bg);
   s.triangle({1, 1}, {30, 30}, {15.5, 15.5}, kWhite);  // collinear
-  s.triangle({5, 5}, {5, 5}, {20, 7}, kWhite);          // two vertices equal
+  s.triangle({5, 5}, {5, 5}, {20, 7}, kWhite);         // two vertices equal
   EXPECT_EQ(test::count_not(render_area(s.scene), bg), 0);
 }
 
 TEST(Area, TranslucentColourScalesByTheShare) {
   // A half-covered pixel of white at alpha 128 over black: 255 x 0.5 x 128/255 = 64.
-  const raster::Image img =
-      render_area(SceneBuilder(4, 4, kBlack).triangle({0, 0}, {2.5, 0}, {2.5, 4}, Rgba8{255, 255, 255, 128})
-                      .triangle({0, 0}, {0, 4}, {2.5, 4}, Rgba8{255, 255, 255, 128}).scene);
+  const raster::Image img = render_area(SceneBuilder(4, 4, kBlack)
+                                            .triangle({0, 0}, {2.5, 0}, {2.5, 4}, Rgba8{255, 255, 255, 128})
+                                            .triangle({0, 0}, {0, 4}, {2.5, 4}, Rgba8{255, 255, 255, 128})
+                                            .scene);
   EXPECT_EQ(test::pixel(img, 2, 1).r, 64);
   EXPECT_EQ(test::pixel(img, 0, 3).r, 128);  // wholly inside the second triangle
 }
@@ -150,7 +158,8 @@ TEST(Area, TranslucentColourScalesByTheShare) {
 std::vector<Point2> line_rectangle(Point2 a, Point2 b, double w) {
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy), nx = -dy / len * w / 2,
                ny = dx / len * w / 2;
-  std::vector<Point2> q = {{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
+  std::vector<Point2> q = {
+      {a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
   for (Point2& p : q) p = {std::floor(p.x * 256 + 0.5) / 256, std::floor(p.y * 256 + 0.5) / 256};
   return q;
 }
@@ -197,7 +206,8 @@ TEST(Area, ATranslucentPolylineCoversEachPixelOnceAtItsJoints) {
   const raster::Image separate = render_area(apart.scene);
   int separate_darkest = 255;
   for (int y = 0; y < 60; ++y)
-    for (int x = 0; x < 80; ++x) separate_darkest = std::min<int>(separate_darkest, test::pixel(separate, x, y).r);
+    for (int x = 0; x < 80; ++x)
+      separate_darkest = std::min<int>(separate_darkest, test::pixel(separate, x, y).r);
   EXPECT_LT(separate_darkest, middle - 30);
 }
 
@@ -210,11 +220,22 @@ TEST(Area, SameBytesForEveryTileSizeAndThreadCount) {
     const Rgba8 c0{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
                    static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(i % 3 ? 255 : 100)};
     switch (i % 5) {
-      case 0: s.triangle(a, b, c, c0); break;
-      case 1: s.triangle(a, b, c, c0, kWhite, Rgba8{0, 90, 200, 255}); break;
-      case 2: s.polyline({a, b, c}, c0, i % 2); s.scene.primitives.back().width = 3; break;
-      case 3: s.triangle(a, {a.x + 1e12, a.y + 3e11}, {a.x - 2e11, a.y + 9e12}, c0); break;
-      default: s.triangle(a, b, c, c0, false); break;
+      case 0:
+        s.triangle(a, b, c, c0);
+        break;
+      case 1:
+        s.triangle(a, b, c, c0, kWhite, Rgba8{0, 90, 200, 255});
+        break;
+      case 2:
+        s.polyline({a, b, c}, c0, i % 2);
+        s.scene.primitives.back().width = 3;
+        break;
+      case 3:
+        s.triangle(a, {a.x + 1e12, a.y + 3e11}, {a.x - 2e11, a.y + 9e12}, c0);
+        break;
+      default:
+        s.triangle(a, b, c, c0, false);
+        break;
     }
   }
   s.scene.antialias = raster::Antialias::area;

@@ -22,8 +22,8 @@ using raster::Rgba8;
 using test::SceneBuilder;
 
 Rgba8 random_color(std::mt19937& rng, bool opaque = true) {
-  return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
-          static_cast<std::uint8_t>(opaque ? 255 : 40 + rng() % 200)};
+  return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+          static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(opaque ? 255 : 40 + rng() % 200)};
 }
 
 // A seeded scene that mixes every primitive kind: flat, smooth and translucent triangles, slivers, huge
@@ -70,7 +70,11 @@ raster::Scene mixed_scene(unsigned seed, int side, int samples = 1) {
   mesh.positions = {{0, 0, 1}, {-1, -0.8, 0}, {1, -0.8, 0}, {0, 1, 0}, {0, 0, -1}};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {4, 2, 1}, {4, 3, 2}};
   mesh.segments = {{0, 4}};
-  mesh.colors = {{200, 180, 90, 255}, {90, 200, 120, 255}, {80, 120, 230, 255}, {230, 90, 90, 255}, {250, 250, 250, 255}};
+  mesh.colors = {{200, 180, 90, 255},
+                 {90, 200, 120, 255},
+                 {80, 120, 230, 255},
+                 {230, 90, 90, 255},
+                 {250, 250, 250, 255}};
   s.scene.meshes.push_back(mesh);
   raster::Primitive p;
   p.kind = raster::PrimitiveKind::mesh;
@@ -98,8 +102,8 @@ TEST(Core, SameBytesForEveryTileSizeAndThreadCount) {
       for (int tile : {16, 64, 128})
         for (int threads : {1, 2, 3, 7}) {
           const raster::Image got = render_with(scene, tile, threads);
-          ASSERT_EQ(got.pixels, expected.pixels)
-              << "seed " << seed << ", " << samples << " samples, tile " << tile << ", " << threads << " threads";
+          ASSERT_EQ(got.pixels, expected.pixels) << "seed " << seed << ", " << samples << " samples, tile "
+                                                 << tile << ", " << threads << " threads";
         }
     }
 }
@@ -278,7 +282,8 @@ TEST(Core, OddTileSizesAndTheDirectPathAgree) {
 TEST(Core, SimdBlocksMatchTheScalarPath) {
   for (unsigned seed = 1; seed <= 8; ++seed) {
     const raster::Scene scene = mixed_scene(seed, 160, seed % 2 ? 1 : 8);
-    EXPECT_EQ(render_with(scene, 64, 1, true).pixels, render_with(scene, 64, 1, false).pixels) << "seed " << seed;
+    EXPECT_EQ(render_with(scene, 64, 1, true).pixels, render_with(scene, 64, 1, false).pixels)
+        << "seed " << seed;
   }
 }
 
@@ -314,7 +319,8 @@ TEST(Core, PaintedScenesMatchTheLiteralReferenceExactly) {
       for (int threads : {1, 3}) {
         const raster::Image got = render_with(s.scene, tile, threads);
         ASSERT_EQ(got.format, raster::PixelFormat::rgb8);
-        ASSERT_EQ(got.pixels, expect) << "seed " << seed << ", tile " << tile << ", " << threads << " threads";
+        ASSERT_EQ(got.pixels, expect)
+            << "seed " << seed << ", tile " << tile << ", " << threads << " threads";
       }
   }
 }
@@ -374,9 +380,9 @@ TEST(Contracts, ParsedAndBuiltScenesGetTheSameValidation) {
 // scene's), and it alone decides whether a wide line interpolates colour.
 TEST(Contracts, ThePlanOwnsThePerPrimitiveDecisions) {
   SceneBuilder s(32, 32);
-  s.line({-90, -90}, {-80, -80}, test::kRed)                      // culled
-      .line({2, 2}, {30, 20}, test::kRed, test::kRed)              // wide, one colour
-      .line({2, 20}, {30, 4}, test::kRed, test::kBlue);            // wide, two colours
+  s.line({-90, -90}, {-80, -80}, test::kRed)             // culled
+      .line({2, 2}, {30, 20}, test::kRed, test::kRed)    // wide, one colour
+      .line({2, 20}, {30, 4}, test::kRed, test::kBlue);  // wide, two colours
   s.scene.primitives[1].width = s.scene.primitives[2].width = 3;
   const raster::RenderPlan p = raster::plan(s.scene);
   ASSERT_EQ(p.draws.size(), 2u);

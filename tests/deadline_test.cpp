@@ -151,9 +151,9 @@ TEST(Deadline, MeshGeometryIsCheckedWhileItIsTransformed) {
 }
 
 // A deadline that does not pass changes nothing: the same bytes as a render without one.
-// A texture's mip chain is made in geometry, before any pixel: a 2048^2 texture on an 8x8 image is 1.4M texels
-// of mipmaps and 64 pixels, and the deadline is looked at while the chain is built (it was not, once: a
-// 4096^2 texture overran the deadline by the ~1 s its chain then took).
+// A texture's mip chain is made in geometry, before any pixel: a 2048^2 texture on an 8x8 image is 1.4M
+// texels of mipmaps and 64 pixels, and the deadline is looked at while the chain is built (it was not, once:
+// a 4096^2 texture overran the deadline by the ~1 s its chain then took).
 TEST(Deadline, TextureMipmapsAreCheckedWhileTheyAreBuilt) {
   raster::Mesh quad;
   quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};

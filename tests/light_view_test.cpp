@@ -25,10 +25,11 @@ const char* kCubeMtl =
     "newmtl ny\nKd 1 0 1\nnewmtl pz\nKd 0 0 1\nnewmtl nz\nKd 1 1 0\n";
 
 raster::Scene cube_scene(const json& camera, int size = 33) {
-  const json doc = {{"width", size},
-                    {"height", size},
-                    {"camera", camera},
-                    {"primitives", {{{"type", "obj"}, {"data", kCubeObj}, {"mtl", kCubeMtl}, {"shading", "unlit"}}}}};
+  const json doc = {
+      {"width", size},
+      {"height", size},
+      {"camera", camera},
+      {"primitives", {{{"type", "obj"}, {"data", kCubeObj}, {"mtl", kCubeMtl}, {"shading", "unlit"}}}}};
   return raster::parse_scene(doc.dump());
 }
 
@@ -45,8 +46,8 @@ raster::SceneError error_of(const json& doc) {
 
 TEST(View, EachNamedViewLooksAtItsFace) {
   const std::pair<const char*, raster::Rgba8> cases[] = {
-      {"front", {0, 0, 255, 255}}, {"back", {255, 255, 0, 255}},   {"right", {255, 0, 0, 255}},
-      {"left", {0, 255, 255, 255}}, {"top", {0, 255, 0, 255}},     {"bottom", {255, 0, 255, 255}}};
+      {"front", {0, 0, 255, 255}},  {"back", {255, 255, 0, 255}}, {"right", {255, 0, 0, 255}},
+      {"left", {0, 255, 255, 255}}, {"top", {0, 255, 0, 255}},    {"bottom", {255, 0, 255, 255}}};
   int front_count = -1;
   for (const auto& [name, colour] : cases) {
     const raster::Image image = test::render(cube_scene({{"view", name}}));
@@ -124,8 +125,8 @@ raster::Image render(const json& doc, int threads = 1) {
 }
 
 TEST(Lights, ColouredDirectionalLightTintsAndTheImageIsNotGrey) {
-  const json doc =
-      quad_scene({{{"type", "directional"}, {"direction", {0, 0, -1}}, {"color", "#ff8000"}, {"intensity", 0.8}}});
+  const json doc = quad_scene(
+      {{{"type", "directional"}, {"direction", {0, 0, -1}}, {"color", "#ff8000"}, {"intensity", 0.8}}});
   const raster::Scene s = raster::parse_scene(doc.dump());
   EXPECT_EQ(raster::plan(s).format, raster::PixelFormat::rgb8);
   EXPECT_EQ(test::pixel(test::render(s), 3, 3), (raster::Rgba8{204, 102, 0, 255}));  // 255 x 0.8 x colour
@@ -143,8 +144,10 @@ TEST(Lights, PointLightFollowsTheExactFalloffOfAngle) {
     }
   EXPECT_EQ(test::pixel(image, 3, 3).r, test::pixel(image, 4, 4).r) << "symmetric about the centre";
   EXPECT_GT(test::pixel(image, 3, 3).r, test::pixel(image, 0, 0).r + 40);
-  // Flat shading: one term per face, at its centroid (1/3 of the way to the corners): 1 / sqrt(1 + 2/9 + 2/9)...
-  const raster::Image flat = render(quad_scene({{{"type", "point"}, {"position", {0, 0, 1}}}}, "front", "flat"));
+  // Flat shading: one term per face, at its centroid (1/3 of the way to the corners): 1 / sqrt(1 + 2/9 +
+  // 2/9)...
+  const raster::Image flat =
+      render(quad_scene({{{"type", "point"}, {"position", {0, 0, 1}}}}, "front", "flat"));
   const double centroid = 255 / std::sqrt(1 + 1.0 / 9 + 1.0 / 9);
   EXPECT_NEAR(test::pixel(flat, 0, 7).r, centroid, 1.0);
   EXPECT_NEAR(test::pixel(flat, 7, 0).r, centroid, 1.0);
@@ -176,10 +179,11 @@ TEST(Lights, DefaultRigLightsAFaceSeenHeadOn) {
   doc["primitives"][0].erase("color");
   double sum = 0;
   for (const raster::Light& l : raster::default_lights())
-    sum += l.intensity * (l.kind == raster::LightKind::ambient ? 1 : -l.direction.z / std::sqrt(
-                                                                      l.direction.x * l.direction.x +
-                                                                      l.direction.y * l.direction.y +
-                                                                      l.direction.z * l.direction.z));
+    sum += l.intensity *
+           (l.kind == raster::LightKind::ambient
+                ? 1
+                : -l.direction.z / std::sqrt(l.direction.x * l.direction.x + l.direction.y * l.direction.y +
+                                             l.direction.z * l.direction.z));
   EXPECT_NEAR(sum, 0.35 + 0.45 / std::sqrt(3.0) + 0.25, 1e-12);
   EXPECT_LT(sum, 1) << "a face seen head on is not washed out";
   EXPECT_NEAR(test::pixel(render(doc), 4, 4).r, 204 * sum, 1.0);
@@ -235,11 +239,12 @@ TEST(View, TransparentBackgroundGivesAntialiasedRgbaEdges) {
 
 // Feature edges of the unlit cube, iso view, orthographic, 65 px.
 raster::Scene edged_cube(const json& edges, const char* obj = kCubeObj) {
-  const json doc = {{"width", 65},
-                    {"height", 65},
-                    {"camera", {{"view", "iso"}, {"projection", "orthographic"}}},
-                    {"primitives",
-                     {{{"type", "obj"}, {"data", obj}, {"mtl", kCubeMtl}, {"shading", "unlit"}, {"edges", edges}}}}};
+  const json doc = {
+      {"width", 65},
+      {"height", 65},
+      {"camera", {{"view", "iso"}, {"projection", "orthographic"}}},
+      {"primitives",
+       {{{"type", "obj"}, {"data", obj}, {"mtl", kCubeMtl}, {"shading", "unlit"}, {"edges", edges}}}}};
   return raster::parse_scene(doc.dump());
 }
 
@@ -256,7 +261,8 @@ bool black_near(const raster::Image& image, double x, double y, int radius) {
   for (int dy = -radius; dy <= radius; ++dy)
     for (int dx = -radius; dx <= radius; ++dx) {
       const int px = static_cast<int>(std::floor(x)) + dx, py = static_cast<int>(std::floor(y)) + dy;
-      if (px >= 0 && py >= 0 && px < image.width && py < image.height && test::pixel(image, px, py) == test::kBlack)
+      if (px >= 0 && py >= 0 && px < image.width && py < image.height &&
+          test::pixel(image, px, py) == test::kBlack)
         return true;
     }
   return false;
@@ -277,7 +283,8 @@ TEST(Edges, VisibleCreasesAreDrawnWholeHiddenOnesAndFaceDiagonalsAreNot) {
     // Visible edges whole, up to their corners (the nearest corner's edges once lost their ends to the near
     // plane); hidden ones away from the visible corners they end at.
     for (double t = hidden ? 0.2 : 0.05; t <= (hidden ? 0.8 : 0.951); t += 0.05) {
-      const auto [x, y] = on_screen(plan, {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t});
+      const auto [x, y] =
+          on_screen(plan, {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t});
       if (hidden)
         EXPECT_FALSE(black_near(image, x, y, 1)) << "hidden edge " << e[0] << "-" << e[1] << " at " << t;
       else
@@ -327,9 +334,10 @@ TEST(Edges, TheNearestFaceKeepsItsEdgesOnASmallImage) {
 TEST(Edges, RepeatedCornersAreWeldedWidthAndAngleApply) {
   // The same cube with every face's corners repeated (as UV seams and STL soups have them).
   std::string soup = "mtllib c.mtl\n";
-  const char* faces[6][4] = {{"-1 -1 -1", "-1 1 -1", "1 1 -1", "1 -1 -1"}, {"-1 -1 1", "1 -1 1", "1 1 1", "-1 1 1"},
-                             {"-1 -1 -1", "1 -1 -1", "1 -1 1", "-1 -1 1"}, {"-1 1 -1", "-1 1 1", "1 1 1", "1 1 -1"},
-                             {"-1 -1 -1", "-1 -1 1", "-1 1 1", "-1 1 -1"}, {"1 -1 -1", "1 1 -1", "1 1 1", "1 -1 1"}};
+  const char* faces[6][4] = {
+      {"-1 -1 -1", "-1 1 -1", "1 1 -1", "1 -1 -1"}, {"-1 -1 1", "1 -1 1", "1 1 1", "-1 1 1"},
+      {"-1 -1 -1", "1 -1 -1", "1 -1 1", "-1 -1 1"}, {"-1 1 -1", "-1 1 1", "1 1 1", "1 1 -1"},
+      {"-1 -1 -1", "-1 -1 1", "-1 1 1", "-1 1 -1"}, {"1 -1 -1", "1 1 -1", "1 1 1", "1 -1 1"}};
   const char* materials[6] = {"nz", "pz", "ny", "py", "nx", "px"};
   for (int f = 0; f < 6; ++f) {
     for (const char* v : faces[f]) soup += std::string("v ") + v + "\n";
@@ -338,7 +346,8 @@ TEST(Edges, RepeatedCornersAreWeldedWidthAndAngleApply) {
   const raster::Image shared = test::render(edged_cube(true));
   EXPECT_EQ(test::render(edged_cube(true, soup.c_str())).pixels, shared.pixels);
 
-  const int thin = test::count_not(shared, test::kBlack), none = test::count_not(test::render(edged_cube(false)), test::kBlack);
+  const int thin = test::count_not(shared, test::kBlack),
+            none = test::count_not(test::render(edged_cube(false)), test::kBlack);
   const int wide = test::count_not(test::render(edged_cube({{"width", 3}})), test::kBlack);
   EXPECT_LT(thin, none);
   EXPECT_LT(none - wide, 4 * (none - thin)) << "3 px edges cover about three times the pixels of 1 px";
@@ -355,11 +364,14 @@ TEST(Edges, RepeatedCornersAreWeldedWidthAndAngleApply) {
 }
 
 TEST(Edges, BadEdgesAreInvalidWithTheirPointer) {
-  for (const auto& [edges, pointer] : {std::pair<json, const char*>{{{"width", 0}}, "/primitives/0/edges/width"},
-                                       {{{"angle", 200}}, "/primitives/0/edges/angle"},
-                                       {{{"colour", "#000"}}, "/primitives/0/edges/colour"},
-                                       {"yes", "/primitives/0/edges"}}) {
-    const json doc = {{"width", 8}, {"height", 8}, {"primitives", {{{"type", "obj"}, {"data", kCubeObj}, {"edges", edges}}}}};
+  for (const auto& [edges, pointer] :
+       {std::pair<json, const char*>{{{"width", 0}}, "/primitives/0/edges/width"},
+        {{{"angle", 200}}, "/primitives/0/edges/angle"},
+        {{{"colour", "#000"}}, "/primitives/0/edges/colour"},
+        {"yes", "/primitives/0/edges"}}) {
+    const json doc = {{"width", 8},
+                      {"height", 8},
+                      {"primitives", {{{"type", "obj"}, {"data", kCubeObj}, {"edges", edges}}}}};
     const raster::SceneError e = error_of(doc);
     EXPECT_EQ(e.where().pointer, pointer) << edges.dump() << ": " << e.what();
   }

@@ -1,5 +1,5 @@
-// The render's large arrays (renderer/src/base/memory.h): blocks freed by one render are what the next one gets,
-// whatever the element size, and what is kept stays bounded.
+// The render's large arrays (renderer/src/base/memory.h): blocks freed by one render are what the next one
+// gets, whatever the element size, and what is kept stays bounded.
 #include <gtest/gtest.h>
 
 #include <array>

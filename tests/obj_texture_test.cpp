@@ -33,11 +33,14 @@ std::string texture_png(bool white) {
 }
 
 raster::Uploads images() {
-  return {{"checker.png", texture_png(false)}, {"my checker.png", texture_png(false)}, {"white.png", texture_png(true)}};
+  return {{"checker.png", texture_png(false)},
+          {"my checker.png", texture_png(false)},
+          {"white.png", texture_png(true)}};
 }
 
 Mesh read(const std::string& mtl_file) {
-  return raster::parse_obj(test::read_file(kDir + "quad.obj"), test::read_file(kDir + mtl_file), {}, images());
+  return raster::parse_obj(test::read_file(kDir + "quad.obj"), test::read_file(kDir + mtl_file), {},
+                           images());
 }
 
 // The quad filling a 4x4 image, unlit: each pixel centre is a texel centre of the 4x4 texture (lod 0).
@@ -74,7 +77,8 @@ TEST(ObjTexture, TheTextureTheMtlNamesIsUsed) {
 }
 
 TEST(ObjTexture, NameQuirksAllFindTheFile) {
-  for (const char* fixture : {"trailing-blanks.mtl", "windows-path.mtl", "relative-path.mtl", "map-kd-capital.mtl"})
+  for (const char* fixture :
+       {"trailing-blanks.mtl", "windows-path.mtl", "relative-path.mtl", "map-kd-capital.mtl"})
     expect_checker(read(fixture), fixture);
   const Mesh spaces = read("spaces.mtl");
   ASSERT_EQ(spaces.textures.size(), 1u);
@@ -172,8 +176,9 @@ TEST(ObjTexture, MtllibFindsTheMaterialsAmongTheUploadedFiles) {
   expect_checker(raster::parse_obj(in_folder, {}, {}, files), "mtllib with a Windows folder and a CR");
 
   // Two libraries on one line, each defining one of the two materials the faces use.
-  const std::string two = "mtllib colours.mtl skin.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
-                          "usemtl skin\nf 1/1 2/2 3/3\nusemtl red\nf 1 3 4\n";
+  const std::string two =
+      "mtllib colours.mtl skin.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+      "usemtl skin\nf 1/1 2/2 3/3\nusemtl red\nf 1 3 4\n";
   raster::Uploads split = images();
   split["colours.mtl"] = "newmtl red\nKd 1 0 0\n";
   split["skin.mtl"] = test::read_file(kDir + "basic.mtl");
@@ -310,7 +315,8 @@ TEST(ObjTexture, AMaterialTheMtlDoesNotDefineKeepsTheDefaultGrey) {
   // With no colour anywhere the mesh carries none: the scene's default grey applies.
   EXPECT_TRUE(raster::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \nf 1 2 3\nusemtl nowhere\nf 1 3 2\n")
                   .face_colors.empty());
-  const Mesh red = raster::parse_obj("mtllib r.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl r\nf 1 2 3\n", "newmtl r\nKd 1 0 0\n");
+  const Mesh red = raster::parse_obj("mtllib r.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl r\nf 1 2 3\n",
+                                     "newmtl r\nKd 1 0 0\n");
   ASSERT_EQ(red.face_colors.size(), 1u);
   EXPECT_EQ(red.face_colors[0], (raster::Rgba8{255, 0, 0, 255}));
 }

@@ -1,5 +1,5 @@
-// Faces of more than three corners (renderer/src/model/polygon.h), as OBJ and PLY split them: seeded random simple
-// polygons, concave ones too, tilted anywhere in space and far from the origin, become n - 2 triangles
+// Faces of more than three corners (renderer/src/model/polygon.h), as OBJ and PLY split them: seeded random
+// simple polygons, concave ones too, tilted anywhere in space and far from the origin, become n - 2 triangles
 // that all turn as the polygon does and add up to its area (a fan over a concave polygon has triangles that
 // turn the other way); degenerate polygons still end; a face whose splitting would take hours is refused.
 #include <gtest/gtest.h>

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support.h"
 #include "base/vecmath.h"
+#include "support.h"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <zlib.h>
 
 #include "raster/raster.h"
-#include "support.h"
 #include "shade/texture.h"
+#include "support.h"
 
 // JPEGs made here, by stb's own writer (baseline: JFIF, DQT, SOF0, one DHT of four tables, SOS, EOI).
 #define STB_IMAGE_WRITE_STATIC
@@ -64,7 +64,8 @@ raster::Rgba8 reference_bilinear(const Texture& t, double u, double v) {
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i) {
       const double w = (i ? x - fx : 1 - (x - fx)) * (j ? y - fy : 1 - (y - fy));
-      const std::uint8_t* p = &t.rgba[(std::size_t(wrap(fy + j, t.height)) * t.width + wrap(fx + i, t.width)) * 4];
+      const std::uint8_t* p =
+          &t.rgba[(std::size_t(wrap(fy + j, t.height)) * t.width + wrap(fx + i, t.width)) * 4];
       for (int c = 0; c < 3; ++c) acc[c] += w * to_linear(p[c]);
     }
   return {static_cast<std::uint8_t>(to_byte(acc[0])), static_cast<std::uint8_t>(to_byte(acc[1])),
@@ -120,7 +121,8 @@ TEST(Texture, CheckerboardMatchesTheAnalyticRender) {
   for (int j = 0; j < 64; ++j)
     for (int i = 0; i < 64; ++i) {
       const double u = (i + 0.5) / 64, v = 1 - (j + 0.5) / 64;
-      worst = std::max(worst, max_channel_difference(test::pixel(image, i, j), reference_bilinear(tex, u, v)));
+      worst =
+          std::max(worst, max_channel_difference(test::pixel(image, i, j), reference_bilinear(tex, u, v)));
     }
   EXPECT_LE(worst, 1);
   // And it is the texture, the right way up: texel (0, 0) is the image's top-left (v = 1 at the top).
@@ -160,7 +162,8 @@ TEST(Texture, PerspectiveCorrectOnARecedingPlane) {
       worst = std::max(worst, max_channel_difference(test::pixel(image, i, j), want));
       // What screen-affine interpolation would give: u linear in the row.
       const double u_affine = std::clamp((row_near - (j + 0.5)) / (row_near - row_far), 0.0, 1.0);
-      affine_gap = std::max(affine_gap, max_channel_difference(reference_bilinear(ramp, u_affine, 0.5), want));
+      affine_gap =
+          std::max(affine_gap, max_channel_difference(reference_bilinear(ramp, u_affine, 0.5), want));
     }
   EXPECT_GT(checked, 1500);
   EXPECT_LE(worst, 1);
@@ -169,10 +172,10 @@ TEST(Texture, PerspectiveCorrectOnARecedingPlane) {
 
 TEST(Texture, MipLevelFollowsThePixelFootprint) {
   using raster::detail::mip_lod;
-  EXPECT_DOUBLE_EQ(mip_lod(1.0 / 16, 0, 0, 1.0 / 16, 256, 256), 4);  // 16 texels a pixel
+  EXPECT_DOUBLE_EQ(mip_lod(1.0 / 16, 0, 0, 1.0 / 16, 256, 256), 4);     // 16 texels a pixel
   EXPECT_DOUBLE_EQ(mip_lod(1.0 / 256, 0, 0, 1.0 / 1024, 256, 256), 0);  // the longer axis decides
-  EXPECT_DOUBLE_EQ(mip_lod(0, 1.0 / 64, 0, 0, 64, 256), 2);           // scaled by the side it runs along
-  EXPECT_LT(mip_lod(1.0 / 1024, 0, 0, 1.0 / 1024, 256, 256), 0);      // magnified
+  EXPECT_DOUBLE_EQ(mip_lod(0, 1.0 / 64, 0, 0, 64, 256), 2);             // scaled by the side it runs along
+  EXPECT_LT(mip_lod(1.0 / 1024, 0, 0, 1.0 / 1024, 256, 256), 0);        // magnified
   EXPECT_EQ(mip_lod(NAN, 0, 0, 0, 4, 4), 0);
 }
 
@@ -199,7 +202,8 @@ TEST(Texture, LinearToSrgbRoundsExactlyAtEveryThreshold) {
   EXPECT_EQ(raster::detail::linear_to_srgb(-1), 0);
   EXPECT_EQ(raster::detail::linear_to_srgb(2), 255);
   EXPECT_EQ(raster::detail::linear_to_srgb(NAN), 0);
-  for (int b = 0; b < 256; ++b) EXPECT_EQ(raster::detail::linear_to_srgb(raster::detail::srgb_to_linear(b)), b);
+  for (int b = 0; b < 256; ++b)
+    EXPECT_EQ(raster::detail::linear_to_srgb(raster::detail::srgb_to_linear(b)), b);
 }
 
 TEST(Texture, MipmapsAverageInLinearLight) {
@@ -341,7 +345,7 @@ TEST(TextureDecode, EmptyIdatChunksAreHarmless) {
   const Texture t = checker(5, 2, {1, 2, 3, 255}, {250, 251, 252, 128});
   std::string png = png_of(t);
   const std::string empty_idat("\0\0\0\0IDAT\0\0\0\0", 12);  // length 0, type, CRC (not checked)
-  png.insert(33, empty_idat + empty_idat);  // after the signature (8) and IHDR (25)
+  png.insert(33, empty_idat + empty_idat);                   // after the signature (8) and IHDR (25)
   EXPECT_EQ(raster::decode_texture(png, "e.png", 1000).rgba, t.rgba);
   // And the fuzzer's own case: an empty IDAT that is the file's last, cut before its CRC.
   std::string cut = png_of(t).substr(0, 33) + std::string("\0\0\0\0IDATx", 9);
@@ -421,20 +425,24 @@ TEST(TextureDecode, BrokenFilesAreModelErrors) {
   EXPECT_NE(std::string(decode_error("GIF89a....").what()).find("PNG or JPEG"), std::string::npos);
   const std::string png = png_of(checker(16, 2, test::kWhite, test::kBlack));
   EXPECT_EQ(decode_error(png.substr(0, png.size() / 2)).kind(), ErrorKind::model);  // truncated
-  EXPECT_EQ(decode_error(png_header(4, 4)).kind(), ErrorKind::model);                 // header only
+  EXPECT_EQ(decode_error(png_header(4, 4)).kind(), ErrorKind::model);               // header only
 }
 
 std::string jpeg_of(const Texture& t) {
   std::string out;
   stbi_write_jpg_to_func(
-      [](void* into, void* data, int size) { static_cast<std::string*>(into)->append(static_cast<char*>(data), size); },
+      [](void* into, void* data, int size) {
+        static_cast<std::string*>(into)->append(static_cast<char*>(data), size);
+      },
       &out, t.width, t.height, 4, t.rgba.data(), 95);
   return out;
 }
 
 // Red on the left half, blue on the right: 16 x 8.
 Texture two_halves() {
-  return make_texture(16, 8, [](int x, int) { return x < 8 ? raster::Rgba8{200, 30, 30, 255} : raster::Rgba8{20, 40, 220, 255}; });
+  return make_texture(16, 8, [](int x, int) {
+    return x < 8 ? raster::Rgba8{200, 30, 30, 255} : raster::Rgba8{20, 40, 220, 255};
+  });
 }
 
 // Where the first marker `code` (FF code) is, at or after `from`.
@@ -463,11 +471,11 @@ TEST(TextureDecode, DecodesAJpeg) {
 // texture_fuzzer; stb issues #1289, #1291). Such a table is refused wherever stb_image could read it.
 TEST(TextureDecode, JpegHuffmanTablesOfMoreThan256CodesAreRefused) {
   // texture_fuzzer's finding: a DHT before the frame declaring 0x23 + ... codes.
-  const unsigned char finding[] = {
-      0xff, 0xd8, 0xff, 0xff, 0xc4, 0x00, 0x23, 0x00, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
-      0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
-      0xff, 0xff, 0xff, 0xff, 0xff, 0xc0, 0x0e, 0x20, 0x70, 0x00, 0x60, 0x00, 0xd8, 0xff, 0xff, 0xff, 0xbe, 0x00,
-      0x00, 0x50};
+  const unsigned char finding[] = {0xff, 0xd8, 0xff, 0xff, 0xc4, 0x00, 0x23, 0x00, 0xff, 0xff, 0xff, 0xff,
+                                   0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
+                                   0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
+                                   0xff, 0xff, 0xff, 0xff, 0xff, 0xc0, 0x0e, 0x20, 0x70, 0x00, 0x60, 0x00,
+                                   0xd8, 0xff, 0xff, 0xff, 0xbe, 0x00, 0x00, 0x50};
   const SceneError found = decode_error(std::string(reinterpret_cast<const char*>(finding), sizeof finding));
   EXPECT_EQ(found.kind(), ErrorKind::model);
   EXPECT_NE(std::string(found.what()).find("Huffman table"), std::string::npos) << found.what();
@@ -498,13 +506,15 @@ TEST(TextureDecode, AJpegScanWithoutItsHuffmanTableIsRefused) {
   const std::string jpeg = jpeg_of(two_halves());
   std::string no_tables = jpeg;
   const std::size_t dht = marker_at(no_tables, 0xc4);
-  const std::size_t length = static_cast<std::uint8_t>(no_tables[dht + 2]) << 8 | static_cast<std::uint8_t>(no_tables[dht + 3]);
+  const std::size_t length =
+      static_cast<std::uint8_t>(no_tables[dht + 2]) << 8 | static_cast<std::uint8_t>(no_tables[dht + 3]);
   no_tables.erase(dht, 2 + length);
   const SceneError e = decode_error(no_tables);
   EXPECT_EQ(e.kind(), ErrorKind::model);
   EXPECT_NE(std::string(e.what()).find("no table segment (DHT)"), std::string::npos) << e.what();
 
-  std::string other_table = jpeg;  // the first component's DC and AC tables: 2 and 2 (the writer defines 0 and 1)
+  std::string other_table =
+      jpeg;  // the first component's DC and AC tables: 2 and 2 (the writer defines 0 and 1)
   const std::size_t sos = marker_at(other_table, 0xda);
   other_table[sos + 6] = '\x22';
   EXPECT_NE(std::string(decode_error(other_table).what()).find("DC Huffman table 2"), std::string::npos);

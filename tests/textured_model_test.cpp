@@ -59,19 +59,19 @@ const char* kQuery = "/render?width=64&height=64&eye=3,2.5,4";
 TEST(TexturedModel, MultipartPartsNamedByTheirFileNameRenderTheTexture) {
   test::TestServer server;
   const Box box;
-  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                            {"model", box.obj, "box.obj", "model/obj"},
-                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                            {"texture", box.png, "box_diffuse.png", "image/png"}});
+  auto r = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   expect_textured(r->body);
 
   // A folder in the file name (curl sends what -F names) is dropped, as the MTL's own folders are.
-  auto folder = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                                 {"model", box.obj, "box.obj", "model/obj"},
-                                                 {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                                 {"texture", box.png, "textures/box_diffuse.png", "image/png"}});
+  auto folder = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "textures/box_diffuse.png", "image/png"}});
   ASSERT_TRUE(folder);
   EXPECT_EQ(folder->body, r->body);
 }
@@ -81,14 +81,14 @@ TEST(TexturedModel, MultipartPartsNamedByTheirFileNameRenderTheTexture) {
 TEST(TexturedModel, AnMtlSentUnderItsFileNameIsTheOneMtllibNames) {
   test::TestServer server;
   const Box box;
-  auto named = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                                {"model", box.obj, "box.obj", "model/obj"},
-                                                {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                                {"texture", box.png, "box_diffuse.png", "image/png"}});
-  auto by_file = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                                  {"model", box.obj, "box.obj", "model/obj"},
-                                                  {"files", box.mtl, "box.mtl", "model/mtl"},
-                                                  {"files", box.png, "box_diffuse.png", "image/png"}});
+  auto named = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "box_diffuse.png", "image/png"}});
+  auto by_file = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"files", box.mtl, "box.mtl", "model/mtl"},
+                                              {"files", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(named && by_file);
   ASSERT_EQ(by_file->status, 200) << by_file->body;
   expect_textured(by_file->body);
@@ -141,10 +141,10 @@ TEST(TexturedModel, ScenesStillNamePartsByTheirPartName) {
 TEST(TexturedModel, AMissingTextureIsA422NamingTheFileAndThePartsSent) {
   test::TestServer server;
   const Box box;
-  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                            {"model", box.obj, "box.obj", "model/obj"},
-                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                            {"texture", box.png, "other.png", "image/png"}});
+  auto r = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "other.png", "image/png"}});
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422);
   EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
@@ -158,11 +158,11 @@ TEST(TexturedModel, AMissingTextureIsA422NamingTheFileAndThePartsSent) {
 TEST(TexturedModel, TwoPartsUnderOneNameAreA400) {
   test::TestServer server;
   const Box box;
-  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                            {"model", box.obj, "box.obj", "model/obj"},
-                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                            {"texture", box.png, "box_diffuse.png", "image/png"},
-                                            {"texture", box.png, "maps/box_diffuse.png", "image/png"}});
+  auto r = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "box_diffuse.png", "image/png"},
+                                              {"texture", box.png, "maps/box_diffuse.png", "image/png"}});
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 400);
   EXPECT_EQ(nlohmann::json::parse(r->body).at("type"), "urn:rasterd:problem:duplicate-part") << r->body;
@@ -174,10 +174,10 @@ TEST(TexturedModel, HostileTextureHeaderIsA422BeforeDecoding) {
   // A PNG signature and an IHDR claiming 100000 x 100000 (the CRC is not checked before the size is).
   std::string png = box.png.substr(0, 16);
   png += std::string("\x00\x01\x86\xa0\x00\x01\x86\xa0\x08\x02\x00\x00\x00", 13);
-  auto r = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                            {"model", box.obj, "box.obj", "model/obj"},
-                                            {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                            {"texture", png, "box_diffuse.png", "image/png"}});
+  auto r = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422) << r->body;
   EXPECT_NE(r->body.find("100000"), std::string::npos) << r->body;
@@ -187,20 +187,19 @@ TEST(TexturedModel, HostileTextureHeaderIsA422BeforeDecoding) {
 TEST(TexturedModel, InlineJsonGivesTheSamePictureAsMultipart) {
   test::TestServer server;
   const Box box;
-  const nlohmann::json scene = {
-      {"width", 64},
-      {"height", 64},
-      {"camera", {{"eye", {3, 2.5, 4}}}},
-      {"primitives",
-       {{{"type", "obj"},
-         {"data", box.obj},
-         {"mtl", box.mtl},
-         {"textures", {{"box_diffuse.png", base64(box.png)}}}}}}};
+  const nlohmann::json scene = {{"width", 64},
+                                {"height", 64},
+                                {"camera", {{"eye", {3, 2.5, 4}}}},
+                                {"primitives",
+                                 {{{"type", "obj"},
+                                   {"data", box.obj},
+                                   {"mtl", box.mtl},
+                                   {"textures", {{"box_diffuse.png", base64(box.png)}}}}}}};
   auto inline_r = server.client().Post("/render", scene.dump(), "application/json");
-  auto multipart = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                                    {"model", box.obj, "box.obj", "model/obj"},
-                                                    {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                                    {"texture", box.png, "box_diffuse.png", "image/png"}});
+  auto multipart = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(inline_r && multipart);
   ASSERT_EQ(inline_r->status, 200) << inline_r->body;
   expect_textured(inline_r->body);
@@ -211,16 +210,17 @@ TEST(TexturedModel, InlineJsonGivesTheSamePictureAsMultipart) {
   auto r = server.client().Post("/render", bad.dump(), "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 400) << r->body;
-  EXPECT_EQ(nlohmann::json::parse(r->body).at("pointer"), "/primitives/0/textures/box_diffuse.png") << r->body;
+  EXPECT_EQ(nlohmann::json::parse(r->body).at("pointer"), "/primitives/0/textures/box_diffuse.png")
+      << r->body;
 }
 
 TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
   test::TestServer server;
   const Box box;
-  auto http = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                               {"model", box.obj, "box.obj", "model/obj"},
-                                               {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                               {"texture", box.png, "box_diffuse.png", "image/png"}});
+  auto http = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(http);
   const std::string out = testing::TempDir() + "cli-box.png";
   const std::string command = std::string(RASTERD_BINARY) + " render " + kDir + "box.obj --part mtl=" + kDir +
@@ -254,10 +254,10 @@ TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
 TEST(TexturedModel, CliFindsTheFilesTheModelNamesBesideIt) {
   test::TestServer server;
   const Box box;
-  auto http = server.client().Post(kQuery, httplib::MultipartFormDataItems{
-                                               {"model", box.obj, "box.obj", "model/obj"},
-                                               {"mtl", box.mtl, "box.mtl", "model/mtl"},
-                                               {"texture", box.png, "box_diffuse.png", "image/png"}});
+  auto http = server.client().Post(
+      kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
+                                              {"mtl", box.mtl, "box.mtl", "model/mtl"},
+                                              {"texture", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(http);
   const std::string out = testing::TempDir() + "cli-box-beside.png";
   const std::string args = " --width 64 --height 64 --eye 3,2.5,4 -o " + out + " 2>&1";
@@ -267,7 +267,9 @@ TEST(TexturedModel, CliFindsTheFilesTheModelNamesBesideIt) {
 
   // The model and its MTL alone in a folder: the texture the MTL names is missing, and said to be.
   const std::string folder = testing::TempDir() + "cli-box-no-texture/";
-  ASSERT_EQ(std::system(("mkdir -p " + folder + " && cp " + kDir + "box.obj " + kDir + "box.mtl " + folder).c_str()), 0);
+  ASSERT_EQ(std::system(
+                ("mkdir -p " + folder + " && cp " + kDir + "box.obj " + kDir + "box.mtl " + folder).c_str()),
+            0);
   FILE* pipe = popen((std::string(RASTERD_BINARY) + " render " + folder + "box.obj" + args).c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   std::string said;

@@ -211,8 +211,8 @@ TEST(Triangle, ThousandSliceFanIsWatertight) {
     }
 }
 
-// The production rasterizer (blocks in tiles, corner accept/reject, SIMD lanes) against the literal reference on
-// seeded random triangles of every size and position: zero mismatching pixels, colours within 1/255.
+// The production rasterizer (blocks in tiles, corner accept/reject, SIMD lanes) against the literal reference
+// on seeded random triangles of every size and position: zero mismatching pixels, colours within 1/255.
 TEST(Triangle, MatchesExactReferenceOnRandomTriangles) {
   constexpr int w = 48, h = 40;
   std::mt19937_64 rng(20261121);

@@ -4,9 +4,9 @@
 
 #include <random>
 
+#include "base/wide.h"
 #include "geometry/geometry.h"
 #include "support.h"
-#include "base/wide.h"
 
 namespace {
 

@@ -10,12 +10,12 @@
 #include <unordered_set>
 #include <vector>
 
+#include "base/base64.h"
+#include "base/vecmath.h"
 #include "raster/model.h"
 #include "raster/scene.h"
 #include "raster/utf8.h"
 #include "scene_dom.h"
-#include "base/base64.h"
-#include "base/vecmath.h"
 
 namespace raster::scene_json {
 

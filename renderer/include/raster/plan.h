@@ -18,13 +18,13 @@ namespace raster {
 struct PrimitivePlan {
   bool smooth =
       false;  ///< interpolate per-vertex values (colours; normals when lit); false: one colour per face
-  bool varying_color = false;  ///< vertex colours differ: interpolated (else one colour per face, as given)
+  bool varying_color = false;    ///< vertex colours differ: interpolated (else one colour per face, as given)
   bool blend = false;            ///< some colour has alpha < 255: source-over blending; false: plain stores
   bool depth = false;            ///< 3D: depth-tested and depth-written; 2D overlays are not
   bool lit = false;              ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
   bool compute_normals = false;  ///< smooth lighting on a mesh without normals: computed, angle-weighted
   bool light_per_pixel =
-      false;  ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
+      false;              ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
   bool textured = false;  ///< 3D: texture coordinates interpolated and each draw call's texture sampled
   bool position_per_pixel = false;  ///< per-pixel lighting with a point light: world position interpolated
   bool line_rectangles =
@@ -48,9 +48,9 @@ struct DrawPlan {
 /// One light resolved for this view: camera-space lights turned into world space, colour x intensity folded.
 struct LightPlan {
   LightKind kind = LightKind::ambient;
-  Vec3 to_light;                ///< directional: unit world vector pointing toward the light
-  Vec3 position;                ///< point: world position
-  double rgb[3] = {0, 0, 0};    ///< colour x intensity per channel, >= 0
+  Vec3 to_light;              ///< directional: unit world vector pointing toward the light
+  Vec3 position;              ///< point: world position
+  double rgb[3] = {0, 0, 0};  ///< colour x intensity per channel, >= 0
 };
 
 /// The camera after fitting, and the light: everything geometry needs to go from world to clip space.
@@ -58,11 +58,11 @@ struct LightPlan {
 /// falls toward 0 at the far plane, which spreads float precision evenly over distance.
 struct ViewPlan {
   Projection projection = Projection::perspective;
-  Vec3 eye, target, up;      ///< world
-  double fov_deg = 45;       ///< vertical, degrees
-  double near = 1, far = 2;  ///< distances from the eye along the view direction
-  double height = 0;         ///< orthographic: world units visible vertically
-  Mat4 world_to_clip;        ///< projection * view
+  Vec3 eye, target, up;           ///< world
+  double fov_deg = 45;            ///< vertical, degrees
+  double near = 1, far = 2;       ///< distances from the eye along the view direction
+  double height = 0;              ///< orthographic: world units visible vertically
+  Mat4 world_to_clip;             ///< projection * view
   std::vector<LightPlan> lights;  ///< the scene's lights (or the default ones) in world space
 };
 
@@ -137,12 +137,12 @@ struct RenderPlan {
   std::vector<DrawPlan> draws;             ///< the visible primitives, in scene order
 
   // Counts of the per-primitive decisions, for the explain output and the X-Render-Plan header.
-  std::int64_t flat_count = 0;    ///< visible primitives drawn with one colour
-  std::int64_t smooth_count = 0;  ///< visible primitives with interpolated colours
-  std::int64_t blend_count = 0;   ///< visible primitives that blend
-  std::int64_t culled_count = 0;  ///< primitives skipped before setup
-  std::int64_t lit_count = 0;     ///< meshes lit by the light
-  std::int64_t triangles_3d = 0;  ///< triangles of all visible meshes (before clipping)
+  std::int64_t flat_count = 0;      ///< visible primitives drawn with one colour
+  std::int64_t smooth_count = 0;    ///< visible primitives with interpolated colours
+  std::int64_t blend_count = 0;     ///< visible primitives that blend
+  std::int64_t culled_count = 0;    ///< primitives skipped before setup
+  std::int64_t lit_count = 0;       ///< meshes lit by the light
+  std::int64_t triangles_3d = 0;    ///< triangles of all visible meshes (before clipping)
   std::int64_t textured_count = 0;  ///< meshes drawn with textures
 
   ViewPlan view;  ///< meaningful only when depth_buffer is true (the scene has 3D content)
@@ -174,12 +174,11 @@ struct RenderPlan {
 
 /// Execution knobs that are the caller's, not the scene's.
 struct PlanOptions {
-  int max_threads = 0;  ///< 0: the machine's core count; 1: never leave the calling thread
-  int tile = 0;         ///< 0: the plan's choice; else the tile side (rounded up to a multiple of 8)
+  int max_threads = 0;           ///< 0: the machine's core count; 1: never leave the calling thread
+  int tile = 0;                  ///< 0: the plan's choice; else the tile side (rounded up to a multiple of 8)
   bool scalar_coverage = false;  ///< test hook, see RenderPlan::scalar_coverage
   Simd max_simd = Simd::avx2;    ///< the widest kernels to use (tests force each one the machine has)
 };
-
 
 /// Makes the plan. Throws SceneError(limit) when its memory or size exceeds `limits`.
 RenderPlan plan(const Scene& scene, const Limits& limits = {}, const PlanOptions& options = {});

@@ -20,8 +20,8 @@
 #endif
 
 #include "base/grid.h"
-#include "setup/setup.h"
 #include "base/stop.h"
+#include "setup/setup.h"
 
 namespace raster::detail {
 
@@ -76,7 +76,8 @@ inline std::uint64_t row_mask(int r0, int r1) {
 /// Whether edge values `at_origin` (at the sample point of pixel (bx, by), the clip's block-grid origin)
 /// stay >= 0 over every pixel of `clip`: its nearest corner decides. Then the clip is accepted whole.
 template <typename T>
-bool clip_inside(const T (&at_origin)[3], const T (&step_x)[3], const T (&step_y)[3], Rect clip, int bx, int by) {
+bool clip_inside(const T (&at_origin)[3], const T (&step_x)[3], const T (&step_y)[3], Rect clip, int bx,
+                 int by) {
   for (int k = 0; k < 3; ++k) {
     const T first = at_origin[k] + step_x[k] * T(clip.x0 - bx) + step_y[k] * T(clip.y0 - by);
     const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
@@ -441,8 +442,8 @@ void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter
 /// with any sample covered. The values in a Block are at the pixel centres (where shading is evaluated),
 /// whatever the pattern.
 template <typename T, typename Shade>
-void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* pattern, int count, Lanes lanes,
-                   StopMeter& meter, Shade&& shade) {
+void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* pattern, int count,
+                   Lanes lanes, StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;
   const BlockGrid<T> g(edges, clip, SamplePoint{});

@@ -3,10 +3,10 @@
 // Wide and anti-aliased lines are not drawn here: geometry turns them into triangle records.
 #pragma once
 
-#include "raster/image.h"
-#include "framebuffer/surface.h"
-#include "setup/setup.h"
 #include "base/stop.h"
+#include "framebuffer/surface.h"
+#include "raster/image.h"
+#include "setup/setup.h"
 
 namespace raster::detail {
 

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/stop.h"
 #include "raster/image.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
-#include "base/stop.h"
 
 namespace raster::detail {
 

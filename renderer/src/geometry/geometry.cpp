@@ -45,7 +45,8 @@ void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint3
   const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
   const Rgba8 c[4] = {ca, cb, cb, ca};
   for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
-    const SetupVertex v[3] = {vertex_2d(q[t[0]], c[t[0]]), vertex_2d(q[t[1]], c[t[1]]), vertex_2d(q[t[2]], c[t[2]])};
+    const SetupVertex v[3] = {vertex_2d(q[t[0]], c[t[0]]), vertex_2d(q[t[1]], c[t[1]]),
+                              vertex_2d(q[t[2]], c[t[2]])};
     setup.add_triangle(call, v);
   }
 }

@@ -5,10 +5,10 @@
 // image takes the exact wide records instead of being clipped in floating point.
 #pragma once
 
+#include "base/stop.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
 #include "setup/setup.h"
-#include "base/stop.h"
 
 namespace raster::detail {
 

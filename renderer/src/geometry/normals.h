@@ -4,9 +4,9 @@
 #include <span>
 
 #include "base/memory.h"
-#include "raster/scene.h"
 #include "base/stop.h"
 #include "base/vecmath.h"
+#include "raster/scene.h"
 
 namespace raster::detail {
 

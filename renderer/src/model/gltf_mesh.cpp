@@ -194,8 +194,8 @@ class MeshBuilder {
   void add_positions(const AccessorView& positions, const Mat& m) {
     const std::size_t base = mesh_.positions.size();
     if (base + positions.count() > 3 * static_cast<std::size_t>(limits_.max_model_faces) + 3)
-      throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(3 * limits_.max_model_faces) + " vertices");
+      throw SceneError(ErrorKind::limit, "the model has more than " +
+                                             std::to_string(3 * limits_.max_model_faces) + " vertices");
     detail::stop_if_expired(limits_);
     detail::reserve(limits_, cost::kGltfPerVertex * static_cast<std::int64_t>(positions.count()), [&] {
       return positions.what() + "'s " + std::to_string(positions.count()) + " vertices";

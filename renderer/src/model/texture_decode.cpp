@@ -12,8 +12,8 @@
 
 #define STBI_ONLY_PNG
 #define STBI_ONLY_JPEG
-#define STBI_NO_STDIO      // from memory only: a texture never names a file on this machine
-#define STBI_NO_LINEAR     // no float (HDR) paths
+#define STBI_NO_STDIO   // from memory only: a texture never names a file on this machine
+#define STBI_NO_LINEAR  // no float (HDR) paths
 #define STBI_NO_HDR
 #define STBI_MAX_DIMENSIONS 16384  // = kMaxTextureSide: stb_image refuses larger sides by itself, too
 #define STB_IMAGE_STATIC           // private to this file: no clash with another copy of stb_image
@@ -139,8 +139,8 @@ void check_png_chunks(std::string_view b, std::string_view name) {
     const std::string type(b.substr(at + 4, 4));
     if (n > b.size() - at - 12)
       texture_error(ErrorKind::model, name,
-                    "truncated or corrupt: PNG chunk \"" + type + "\" at byte " +
-                        std::to_string(at) + " declares " + std::to_string(n) + " bytes; the file has " +
+                    "truncated or corrupt: PNG chunk \"" + type + "\" at byte " + std::to_string(at) +
+                        " declares " + std::to_string(n) + " bytes; the file has " +
                         std::to_string(b.size() - at - 12) + " left");
     at += 12 + n;
     if (type == "IEND") break;
@@ -152,9 +152,11 @@ void check_png_chunks(std::string_view b, std::string_view name) {
 // table if it decodes AC coefficients (baseline, or Se > 0).
 void check_first_scan(std::string_view b, std::size_t at, bool progressive, const bool (&defined)[2][4],
                       std::string_view name) {
-  auto byte = [&](std::size_t k) -> std::size_t { return k < b.size() ? static_cast<std::uint8_t>(b[k]) : 0; };
+  auto byte = [&](std::size_t k) -> std::size_t {
+    return k < b.size() ? static_cast<std::uint8_t>(b[k]) : 0;
+  };
   const std::size_t components = byte(at + 2);
-  if (components < 1 || components > 4) return;  // stb_image refuses it ("bad SOS component count")
+  if (components < 1 || components > 4) return;      // stb_image refuses it ("bad SOS component count")
   const std::size_t tail = at + 3 + 2 * components;  // Ss, Se, Ah/Al
   const bool uses_dc = !progressive || (byte(tail) == 0 && byte(tail + 2) >> 4 == 0);
   const bool uses_ac = !progressive || byte(tail + 1) > 0;
@@ -180,12 +182,14 @@ void check_first_scan(std::string_view b, std::size_t at, bool progressive, cons
 // decoder stops, which only decoding tells, so every FF C4 pair is taken for a DHT it might read; a valid
 // file never has one inside scan data (an FF there is followed by 00 or a restart marker).
 //
-// The first scan's tables are known exactly: one it selects that no DHT before it defined is refused (stb_image
-// would decode it from zeroed tables, as flat grey). Later scans (progressive files) are left to the zeroed
-// allocation above.
+// The first scan's tables are known exactly: one it selects that no DHT before it defined is refused
+// (stb_image would decode it from zeroed tables, as flat grey). Later scans (progressive files) are left to
+// the zeroed allocation above.
 void check_jpeg_huffman_tables(std::string_view b, std::string_view name) {
-  auto byte = [&](std::size_t at) -> std::size_t { return at < b.size() ? static_cast<std::uint8_t>(b[at]) : 0; };
-  bool defined[2][4] = {};  // [DC, AC][table id]: by the DHTs read so far
+  auto byte = [&](std::size_t at) -> std::size_t {
+    return at < b.size() ? static_cast<std::uint8_t>(b[at]) : 0;
+  };
+  bool defined[2][4] = {};                // [DC, AC][table id]: by the DHTs read so far
   auto check_dht = [&](std::size_t at) {  // `at`: the segment's length field
     std::int64_t left = static_cast<std::int64_t>(byte(at) << 8 | byte(at + 1)) - 2;
     for (at += 2; left > 0 && at < b.size();) {
@@ -283,8 +287,9 @@ class StbDecode {
 
 Texture decode_texture(std::string_view bytes, std::string_view name, std::int64_t texel_budget) {
   if (!format_of(bytes))
-    texture_error(ErrorKind::model, name,
-                  bytes.empty() ? "the file is empty" : "not a PNG or JPEG file (textures must be PNG or JPEG)");
+    texture_error(
+        ErrorKind::model, name,
+        bytes.empty() ? "the file is empty" : "not a PNG or JPEG file (textures must be PNG or JPEG)");
   if (bytes.size() > static_cast<std::size_t>(INT32_MAX))
     texture_error(ErrorKind::limit, name, "the file is larger than 2 GiB");
   std::int64_t w = 0, h = 0;
@@ -316,7 +321,8 @@ Texture decode_texture(std::string_view bytes, std::string_view name, std::int64
     texture_error(ErrorKind::model, name,
                   "corrupt: its compressed data inflates to more than a " + size +
                       " image holds (the decoder stopped at " + std::to_string(bound.cap()) + " bytes)");
-  if (!pixels) texture_error(ErrorKind::model, name, std::string("cannot be decoded: ") + stbi_failure_reason());
+  if (!pixels)
+    texture_error(ErrorKind::model, name, std::string("cannot be decoded: ") + stbi_failure_reason());
   if (dw != w || dh != h)  // the header said one size and the decoder made another: not trusted
     texture_error(ErrorKind::model, name, "the decoded size differs from the header's");
   Texture t;

@@ -11,14 +11,13 @@
 
 #include "base/grid.h"
 #include "base/memory.h"
+#include "base/stop.h"
+#include "base/wide.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
-#include "base/stop.h"
 #include "shade/texture.h"
-#include "base/wide.h"
 
 namespace raster::detail {
-
 
 /// Triangles whose vertices all lie within +-kFastRangePx take the int64 records: snapped coordinates fit
 /// in 24 bits, so every edge value at a pixel of the image fits in 50 bits (exact in a double, too).
@@ -57,12 +56,12 @@ inline DrawCall make_call(const PrimitivePlan& mode) {
 /// The three vertices of a triangle, snapped, in either winding; colours (0..255 straight RGBA) per vertex.
 /// 3D triangles also carry what the shading interpolates.
 struct SetupVertex {
-  double x = 0, y = 0;  ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
-  float color[4] = {};  ///< straight RGBA, 0..255 (3D flat lighting already applied)
-  float depth = 0;      ///< 3D: z / w in [0, 1], 1 at the near plane (reversed)
-  float inv_w = 1;      ///< 3D: 1 / w, for perspective-correct interpolation
-  float normal[3] = {};  ///< 3D per-pixel lighting: world-space unit normal
-  float uv[2] = {};      ///< 3D textured: texture coordinates (scene.h: Mesh::uvs)
+  double x = 0, y = 0;     ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
+  float color[4] = {};     ///< straight RGBA, 0..255 (3D flat lighting already applied)
+  float depth = 0;         ///< 3D: z / w in [0, 1], 1 at the near plane (reversed)
+  float inv_w = 1;         ///< 3D: 1 / w, for perspective-correct interpolation
+  float normal[3] = {};    ///< 3D per-pixel lighting: world-space unit normal
+  float uv[2] = {};        ///< 3D textured: texture coordinates (scene.h: Mesh::uvs)
   float position[3] = {};  ///< 3D lit by a point light per pixel: world position
 };
 
@@ -84,14 +83,13 @@ struct EdgeFunctions {  // not scene.h's Edges (feature edges drawn over a mesh)
 /// from the exact edge values, so a pixel's value does not depend on which tile or block computes it.
 struct TriangleRecord {
   static constexpr std::uint32_t kFast = ~0u;
-  EdgeFunctions<std::int64_t> edges;     ///< the edges, when in the fast range (kept here: one fetch per record)
-  Rect box;                      ///< pixels whose sample point may be covered, clipped to the image
-  std::uint32_t call = 0;        ///< index into Setup::calls
+  EdgeFunctions<std::int64_t> edges;  ///< the edges, when in the fast range (kept here: one fetch per record)
+  Rect box;                           ///< pixels whose sample point may be covered, clipped to the image
+  std::uint32_t call = 0;             ///< index into Setup::calls
   std::uint32_t attributes = 0;  ///< index into Setup::attributes of this record's first float (see below)
   std::uint32_t wide = kFast;    ///< kFast, or the index of its edges in Setup::wide_edges
   bool back_facing = false;      ///< 3D: seen from behind (per-pixel lighting flips the normal)
 };
-
 
 /// A 1-px line between the pixels that contain its endpoints. Pixel indices are integers held exactly in
 /// doubles (|value| <= 2^128). Coverage orders the endpoints canonically, so a->b and b->a are the same.
@@ -117,7 +115,7 @@ struct RecordRef {
 struct Records {
   PodArray<TriangleRecord> triangles;
   std::vector<EdgeFunctions<Wide>> wide_edges;  ///< TriangleRecord::wide indexes these
-  PodArray<float> attributes;           ///< TriangleRecord::attributes indexes these
+  PodArray<float> attributes;                   ///< TriangleRecord::attributes indexes these
   std::vector<LineRecord> lines;
   PodArray<RecordRef> order;  ///< every record of the part once, in the order the scene draws them
 };

@@ -133,7 +133,6 @@ class FlatFill {
   }
 
  private:
-
   // A full block row of the flat colour. From registers: loading the pattern after each store would make
   // the load wait on the store whenever their addresses agree modulo 4 KiB.
   template <typename Pattern>
@@ -291,7 +290,6 @@ class ColorPlanes {
   }
 
  private:
-
 #if defined(__x86_64__)
   // block_sse2's opaque RGB(A) path in AVX2: the four channels' starting values side by side in doubles
   // (the same operations in the same order, so the same bits), then a block row in one register per

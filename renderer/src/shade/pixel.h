@@ -11,9 +11,9 @@
 #include <cstring>
 #include <span>
 
+#include "framebuffer/surface.h"
 #include "raster/image.h"
 #include "raster/plan.h"
-#include "framebuffer/surface.h"
 
 namespace raster::detail {
 

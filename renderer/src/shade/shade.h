@@ -12,12 +12,12 @@
 #include <cstring>
 
 #include "coverage/coverage.h"
-#include "shade/fill.h"
-#include "shade/light.h"
-#include "shade/pixel.h"
 #include "raster/image.h"
 #include "raster/scene.h"
 #include "setup/setup.h"
+#include "shade/fill.h"
+#include "shade/light.h"
+#include "shade/pixel.h"
 
 namespace raster::detail {
 
@@ -30,7 +30,10 @@ class TriangleShader {
   /// `area` its doubled area, as doubles (exact for the fast range).
   TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
                  const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
-      : call_(call), mode_(call.mode), attr_(attributes), surface_(surface),
+      : call_(call),
+        mode_(call.mode),
+        attr_(attributes),
+        surface_(surface),
         flip_(record.back_facing ? -1.0 : 1.0),
         union_(call.mode.union_coverage && surface.coverage_mode == Coverage::area),
         msaa_(surface.coverage_mode == Coverage::samples) {
@@ -48,7 +51,8 @@ class TriangleShader {
     if (msaa_ && depth_at_) {
       // Depth is affine in screen space: each sample's z is the centre's plus a constant per sample.
       double dz_dx = 0, dz_dy = 0;
-      for (int k = 0; k < 3; ++k) dz_dx += step_x[k] * depth_at_[k] / area, dz_dy += step_y[k] * depth_at_[k] / area;
+      for (int k = 0; k < 3; ++k)
+        dz_dx += step_x[k] * depth_at_[k] / area, dz_dy += step_y[k] * depth_at_[k] / area;
       for (int s = 0; s < surface.sample_count; ++s)
         z_offset_[s] = static_cast<float>(dz_dx * (surface.pattern[s].x - 128) / 256.0 +
                                           dz_dy * (surface.pattern[s].y - 128) / 256.0);
@@ -80,9 +84,11 @@ class TriangleShader {
       const std::uint64_t rows = coverage_detail::row_mask(r0, r1);
       for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock) {
         b.x0 = x0, b.y0 = y0;
-        b.mask = rows & coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+        b.mask =
+            rows & coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
         const double bx = (x0 - first.x0) / kBlock, by = (y0 - first.y0) / kBlock;  // exact steps
-        for (int k = 0; k < 3; ++k) b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
+        for (int k = 0; k < 3; ++k)
+          b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
         (*this)(b);
       }
     }
@@ -115,7 +121,8 @@ class TriangleShader {
       const Rgba8 c = color_at(b, i, r, covered);
       const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
       if (!((expanded >> bit) & 1)) expand(index), expanded |= std::uint64_t{1} << bit;
-      for (unsigned k = covered; k; k &= k - 1) put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
+      for (unsigned k = covered; k; k &= k - 1)
+        put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
     }
     *surface_.shaded += std::popcount(b.mask & ~all);
   }
@@ -228,8 +235,9 @@ class TriangleShader {
   // sample), else the centroid of its covered samples. `l` holds the centre's on entry.
   void shading_point(const Block& b, int i, int r, unsigned covered, double (&l)[3]) const {
     const unsigned all = (1u << surface_.sample_count) - 1;
-    if (covered == all || (!(b.e[0] + i * b.dx[0] + r * b.dy[0] < 0) && !(b.e[1] + i * b.dx[1] + r * b.dy[1] < 0) &&
-                           !(b.e[2] + i * b.dx[2] + r * b.dy[2] < 0)))
+    if (covered == all ||
+        (!(b.e[0] + i * b.dx[0] + r * b.dy[0] < 0) && !(b.e[1] + i * b.dx[1] + r * b.dy[1] < 0) &&
+         !(b.e[2] + i * b.dx[2] + r * b.dy[2] < 0)))
       return;
     double cx = 0, cy = 0;
     for (unsigned k = covered; k; k &= k - 1) {
@@ -260,7 +268,8 @@ class TriangleShader {
       const Rgba8 c = color_at(b, i, r);
       const float share = shares ? shares[bit] : 1.0f;
       float* acc = surface_.coverage + surface_.index(b.x0 + i, b.y0 + r) * kUnionFloats;
-      acc[0] += share, acc[1] += share * c.r, acc[2] += share * c.g, acc[3] += share * c.b, acc[4] += share * c.a;
+      acc[0] += share, acc[1] += share * c.r, acc[2] += share * c.g, acc[3] += share * c.b,
+          acc[4] += share * c.a;
     }
   }
 
@@ -335,8 +344,9 @@ class TriangleShader {
     u /= sum, v /= sum;
     const MipChain& tex = *call_.texture;
     const double sx = tex.texture->scale[0], sy = tex.texture->scale[1];
-    const double lod = mip_lod((su_x - u * s_x) / sum * sx, (sv_x - v * s_x) / sum * sy, (su_y - u * s_y) / sum * sx,
-                               (sv_y - v * s_y) / sum * sy, tex.levels[0].width, tex.levels[0].height);
+    const double lod =
+        mip_lod((su_x - u * s_x) / sum * sx, (sv_x - v * s_x) / sum * sy, (su_y - u * s_y) / sum * sx,
+                (sv_y - v * s_y) / sum * sy, tex.levels[0].width, tex.levels[0].height);
     float texel[4];
     tex.sample(u, v, lod, texel);
     for (int c = 0; c < 4; ++c) rgba[c] *= texel[c];
@@ -353,8 +363,8 @@ class TriangleShader {
   const float* depth_at_ = nullptr;
   const float* inv_w_at_ = nullptr;
   const float* normal_at_ = nullptr;
-  const float* position_at_ = nullptr;  // lit by a point light per pixel: 3 x world xyz
-  const float* uv_at_ = nullptr;  // textured calls with a texture: 3 x (u, v)
+  const float* position_at_ = nullptr;    // lit by a point light per pixel: 3 x world xyz
+  const float* uv_at_ = nullptr;          // textured calls with a texture: 3 x (u, v)
   double dl_dx_[3] = {}, dl_dy_[3] = {};  // textured: barycentric change per pixel right and down
   Rgba8 flat_;
   // flat: one colour; smooth: 2D per-vertex colours in screen space; perspective: the 3D path (depth-tested,

@@ -94,7 +94,10 @@ MipChain build_mips(const Texture& texture, StopMeter* meter) {
     const MipLevel from = chain.levels.back();
     const int w = std::max(1, from.width / 2), h = std::max(1, from.height / 2);
     // Not zeroed: every byte is written below (a 4096^2 chain is 21 MB).
-    std::uint8_t* const out = chain.storage.emplace_back(std::make_unique_for_overwrite<std::uint8_t[]>(std::size_t(w) * std::size_t(h) * 4)).get();
+    std::uint8_t* const out =
+        chain.storage
+            .emplace_back(std::make_unique_for_overwrite<std::uint8_t[]>(std::size_t(w) * std::size_t(h) * 4))
+            .get();
     // Texel 2x + 1 (row 2y + 1) exists unless that side of `from` is 1 (an odd side's last one is dropped).
     const std::size_t dx = from.width > 1 ? 4 : 0, dy = from.height > 1 ? std::size_t(from.width) * 4 : 0;
     for (int y = 0; y < h; ++y) {
@@ -150,8 +153,7 @@ void MipChain::sample(double u, double v, double lod, float (&out)[4]) const {
     if (f > 0) bilinear(levels[std::min(l0 + 1, last)], u, v, texture->clamp, f, acc);
   }
   const double a = acc[3];
-  for (int c = 0; c < 3; ++c)
-    out[c] = a > 0 ? linear_to_srgb(static_cast<float>(acc[c] / a)) / 255.0f : 0.0f;
+  for (int c = 0; c < 3; ++c) out[c] = a > 0 ? linear_to_srgb(static_cast<float>(acc[c] / a)) / 255.0f : 0.0f;
   out[3] = static_cast<float>(a);
 }
 

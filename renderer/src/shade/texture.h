@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "raster/scene.h"
 #include "base/stop.h"
+#include "raster/scene.h"
 
 namespace raster::detail {
 
