@@ -47,9 +47,11 @@ void check_references(const Scene& scene) {
       ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
     ok = ok && (m.uv_triangles.empty() || m.uv_triangles.size() == m.triangles.size()) &&
          (m.face_textures.empty() || m.face_textures.size() == m.triangles.size());
-    for (const auto& t : m.uv_triangles) ok = ok && t[0] < m.uvs.size() && t[1] < m.uvs.size() && t[2] < m.uvs.size();
+    for (const auto& t : m.uv_triangles)
+      ok = ok && t[0] < m.uvs.size() && t[1] < m.uvs.size() && t[2] < m.uvs.size();
     for (const auto& uv : m.uvs) ok = ok && std::isfinite(uv[0]) && std::isfinite(uv[1]);
-    for (std::int32_t f : m.face_textures) ok = ok && f >= -1 && f < static_cast<std::int32_t>(m.textures.size());
+    for (std::int32_t f : m.face_textures)
+      ok = ok && f >= -1 && f < static_cast<std::int32_t>(m.textures.size());
     for (const Texture& t : m.textures)
       ok = ok && t.width >= 1 && t.height >= 1 && t.width <= kMaxTextureSide && t.height <= kMaxTextureSide &&
            t.rgba.size() == std::size_t(t.width) * std::size_t(t.height) * 4 && std::isfinite(t.scale[0]) &&
@@ -58,9 +60,11 @@ void check_references(const Scene& scene) {
       ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate &&
            std::fabs(q.z) <= kMaxCoordinate;
     if (!ok)
-      throw SceneError(ErrorKind::invalid,
-                       "mesh has indices, colours, normals, texture coordinates or textures that do not match its "
-                       "positions", {where, 0, 0});
+      throw SceneError(
+          ErrorKind::invalid,
+          "mesh has indices, colours, normals, texture coordinates or textures that do not match its "
+          "positions",
+          {where, 0, 0});
   }
   // Scenes built in code skip the parser's checks; coverage relies on these bounds.
   for (std::size_t i = 0; i < scene.points.size(); ++i) {
@@ -84,7 +88,8 @@ void check_camera_and_light(const Scene& scene) {
   within(true, c.fov_deg, format::kFov, "/camera/fov");
   within(c.has_near, c.near, format::kNear, "/camera/near");
   within(c.has_far, c.far, format::kFar, "/camera/far");
-  if (c.has_near && c.has_far && !(c.near < c.far)) invalid("/camera/far", "\"far\" must be greater than \"near\"");
+  if (c.has_near && c.has_far && !(c.near < c.far))
+    invalid("/camera/far", "\"far\" must be greater than \"near\"");
   within(c.has_height, c.height, format::kViewHeight, "/camera/height");
   if (c.has_eye && c.has_target && c.eye == c.target)
     invalid("/camera/target", "\"eye\" and \"target\" are the same point: the camera has no view direction");
@@ -102,30 +107,7 @@ void check_camera_and_light(const Scene& scene) {
   }
 }
 
-
-// A light of `kind` and `intensity`; camera-space directional lights travel `direction`.
-Light make_light(LightKind kind, double intensity, bool camera_space = false, Vec3 direction = {0, 0, -1}) {
-  Light l;
-  l.kind = kind, l.intensity = intensity, l.camera_space = camera_space, l.direction = direction;
-  return l;
-}
-
 }  // namespace
-
-std::vector<Light> default_lights() {
-  return {
-      make_light(LightKind::ambient, 0.35),
-      // From the viewer's upper left, as a photographer's key: travels right, down and away from the viewer.
-      make_light(LightKind::directional, 0.45, true, {1, -1, -1}),
-      // Along the view direction: every face seen gets some light, so none is left black.
-      make_light(LightKind::directional, 0.25, true, {0, 0, -1}),
-  };
-}
-
-std::vector<Light> single_light(double ambient, const Vec3* direction) {
-  if (direction) return {make_light(LightKind::ambient, ambient), make_light(LightKind::directional, 1 - ambient, false, *direction)};
-  return {make_light(LightKind::ambient, ambient), make_light(LightKind::directional, 1 - ambient, true)};  // the headlight
-}
 
 void validate(const Scene& scene) {
   if (scene.width < 1 || scene.height < 1)
