@@ -176,8 +176,10 @@ bool set_field(raster::Scene& scene, const std::string& name, const std::string&
 // parameter reads as that field would in a scene document. The order errors are found in: each parameter
 // when it is read, in name order (the map's); then the camera's fields together, the image's pixels, the
 // model, and validate().
+// `sniffed`: the model's format by its bytes, when the request has already asked.
 raster::Scene default_scene(const Params& params, std::optional<raster::ModelFormat> named_format,
-                            const raster::Uploads& uploads, const raster::Limits& limits) {
+                            const raster::Uploads& uploads, const raster::Limits& limits,
+                            std::optional<raster::ModelFormat> sniffed) {
   raster::Scene scene;
   scene.width = scene.height = 512;
   // The bytes tell the format first (the reader sniffs them); else the part's file name, else ?format=.
@@ -203,7 +205,7 @@ raster::Scene default_scene(const Params& params, std::optional<raster::ModelFor
     const auto mtl = uploads.find("mtl");  // an MTL uploaded as part "mtl" goes with the model
     scene.meshes.push_back(raster::checks::model_mesh(uploads.at("model"), hint, limits, uploads,
                                                       mtl == uploads.end() ? std::string_view() : mtl->second,
-                                                      "/primitives/0", 0));
+                                                      "/primitives/0", 0, sniffed));
     raster::Primitive model;
     model.kind = raster::PrimitiveKind::mesh;
     scene.primitives.push_back(model);
@@ -380,8 +382,10 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     throw raster::SceneError(raster::ErrorKind::syntax,
                              "the request is empty: send a scene (JSON) or a model (" +
                                  std::string(raster::accepted_formats()) + ")");
+  // The body is the model when it has bytes (else a part is): its format by its bytes is known already.
+  const std::optional<raster::ModelFormat> model_sniffed = body.empty() ? std::nullopt : sniffed;
   if (!body.empty()) uploads["model"] = std::move(body);
-  raster::Scene scene = default_scene(params, named_format, uploads, limits);
+  raster::Scene scene = default_scene(params, named_format, uploads, limits, model_sniffed);
   if (scale) apply_scale(scene, *scale, limits);
   return scene;
 }

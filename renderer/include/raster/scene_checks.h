@@ -50,9 +50,10 @@ ModelFormat model_format(std::string_view name);
 /// The mesh of a model primitive, read as the scene reader reads one: parse_model(bytes, hint, ...) within
 /// the texels `limits` leave, grey when the model has no colours of its own. A reader's error is rethrown
 /// with its line or its byte in the model's words, located at `pointer` and `byte` (0 when the model came in
-/// no document).
+/// no document). `sniffed`: what sniff_model(bytes) gave, when the caller has already asked it (a request is
+/// sniffed once); without it, the bytes are sniffed here.
 Mesh model_mesh(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits,
-                const Uploads& files, std::string_view mtl_text, const std::string& pointer,
-                std::size_t byte);
+                const Uploads& files, std::string_view mtl_text, const std::string& pointer, std::size_t byte,
+                std::optional<ModelFormat> sniffed = std::nullopt);
 
 }  // namespace raster::checks

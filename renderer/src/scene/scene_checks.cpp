@@ -78,11 +78,12 @@ ModelFormat model_format(std::string_view name) {
 }
 
 Mesh model_mesh(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits,
-                const Uploads& files, std::string_view mtl_text, const std::string& pointer,
-                std::size_t byte) {
+                const Uploads& files, std::string_view mtl_text, const std::string& pointer, std::size_t byte,
+                std::optional<ModelFormat> sniffed) {
   Mesh mesh;
   try {
-    mesh = parse_model(bytes, hint, limits, files, mtl_text);
+    mesh = sniffed ? model_format(*sniffed).read(bytes, limits, files, mtl_text)
+                   : parse_model(bytes, hint, limits, files, mtl_text);
   } catch (const SceneError& e) {
     // An encoding error keeps its byte: the offset into the model's own text, which the message names.
     std::string message = e.what();
