@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "raster/model.h"
+#include "raster/scene_checks.h"
 #include "raster/utf8.h"
 
 namespace rasterd {
@@ -83,11 +84,17 @@ std::string colour_param(const std::string& value) {
 
 // The query parameter a field of the default scene comes from ("/camera/fov/..." -> "fov"), or "".
 std::string param_of_pointer(const std::string& pointer, const Params& params) {
-  if (pointer.starts_with("/primitives/0/format")) return params.contains("format") ? "format" : "";
   std::string name =
       pointer.starts_with("/camera/") ? pointer.substr(8) : pointer.substr(pointer.empty() ? 0 : 1);
   name = name.substr(0, name.find('/'));
   return params.contains(name) ? name : "";
+}
+
+// A field's error as the error of the query parameter that set it: the client sent no document to point into.
+[[noreturn]] void rethrow_as(const std::string& param, const raster::SceneError& e) {
+  if (e.kind() == raster::ErrorKind::invalid)
+    throw QueryError(param, "query parameter \"" + param + "\": " + e.what());
+  throw raster::SceneError(e.kind(), "query parameter \"" + param + "\": " + e.what());
 }
 
 // An OBJ model's first statement: what a body declared as JSON holds when a model was sent with the wrong
@@ -101,57 +108,114 @@ bool starts_like_obj(std::string_view body) {
   return false;
 }
 
-// The default scene of a bare model, with the parameters turned into JSON and parsed like any scene, so
-// that a bad parameter gets the same precise message as the same field in a scene document.
-std::string default_scene_json(const Params& params, std::optional<raster::ModelFormat> named_format) {
-  nlohmann::json scene = {{"width", 512}, {"height", 512}};
-  nlohmann::json camera = nlohmann::json::object();
-  auto number = [&](const std::string& name, const std::string& text) -> nlohmann::json {
-    double v = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-      bad_param(name, "expected a number, got \"" + text + "\"");
-    // A whole number stays one, so that an error quotes "0" as it was sent, not "0.0".
-    if (v == std::trunc(v) && std::fabs(v) < 1e15) return static_cast<std::int64_t>(v);
-    return v;
-  };
-  auto vector = [&](const std::string& name, const std::string& text) {
-    nlohmann::json out = nlohmann::json::array();
-    std::size_t start = 0;
-    while (start <= text.size()) {  // "x,y,z"
-      std::size_t comma = text.find(',', start);
-      if (comma == std::string::npos) comma = text.size();
-      out.push_back(number(name, text.substr(start, comma - start)));
-      start = comma + 1;
-    }
-    if (out.size() != 3) bad_param(name, "expected x,y,z");
-    return out;
-  };
-  for (const auto& [name, value] : params) {
-    if (name == "width" || name == "height")
-      scene[name] = number(name, value);
-    else if (name == "background")
-      scene["background"] = colour_param(value);
-    else if (name == "projection" || name == "view")
-      camera[name] = value;
-    else if (name == "fov")
-      camera["fov"] = number(name, value);
-    else if (name == "eye" || name == "target" || name == "up")
-      camera[name] = vector(name, value);
-    else if (name == "explain" || name == "format" || name == "scale")
-      continue;  // the route's, and the model's (below), and the scene's once read (apply_scale)
-    else
-      bad_param(name, "unknown; known: " + known_params());
+// A number of a query parameter, and how an error quotes it: a whole number as one ("0" as it was sent, not
+// "0.0"), any other as a JSON writer prints it, the words these errors had when the parameters went through
+// a scene document.
+struct Number {
+  double value;
+  std::string text;
+};
+
+Number number_param(const std::string& name, const std::string& text) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+    bad_param(name, "expected a number, got \"" + text + "\"");
+  if (v == std::trunc(v) && std::fabs(v) < 1e15) return {v, std::to_string(static_cast<std::int64_t>(v))};
+  return {v, nlohmann::json(v).dump()};
+}
+
+// "x,y,z", each coordinate checked as a point's in a scene.
+raster::Vec3 vector_param(const std::string& name, const std::string& text) {
+  std::vector<Number> numbers;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t comma = text.find(',', start);
+    if (comma == std::string::npos) comma = text.size();
+    numbers.push_back(number_param(name, text.substr(start, comma - start)));
+    start = comma + 1;
   }
-  if (!camera.empty()) scene["camera"] = camera;
-  nlohmann::json model = {{"type", "model"}, {"source", "model"}};
+  if (numbers.size() != 3) bad_param(name, "expected x,y,z");
+  double v[3];
+  for (std::size_t k = 0; k < 3; ++k) v[k] = raster::checks::coordinate(numbers[k].value, numbers[k].text);
+  return {v[0], v[1], v[2]};
+}
+
+// Sets the default scene's field that parameter `name` names, checked with the scene reader's words for
+// that field; false for a parameter the default scene does not take.
+bool set_field(raster::Scene& scene, const std::string& name, const std::string& value,
+               const raster::Limits& limits) {
+  raster::Camera& camera = scene.camera;
+  if (name == "width" || name == "height") {
+    const Number n = number_param(name, value);
+    (name == "width" ? scene.width : scene.height) = raster::checks::image_side(
+        name, n.value, n.text, name == "width" ? limits.max_width : limits.max_height);
+  } else if (name == "background") {
+    scene.background = raster::checks::color(colour_param(value));
+  } else if (name == "projection") {
+    camera.projection = raster::checks::projection(value);
+  } else if (name == "view") {
+    camera.view = raster::checks::view(value), camera.has_view = true;
+  } else if (name == "fov") {
+    const Number n = number_param(name, value);
+    camera.fov_deg = raster::checks::fov(n.value, n.text);
+  } else if (name == "eye") {
+    camera.eye = vector_param(name, value), camera.has_eye = true;
+  } else if (name == "target") {
+    camera.target = vector_param(name, value), camera.has_target = true;
+  } else if (name == "up") {
+    camera.up = raster::checks::up(vector_param(name, value)), camera.has_up = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The default scene of a bare model (512x512, the camera framing the model) as the parameters shape it,
+// built directly: each value is checked with the words the scene reader has for its field, so a bad
+// parameter reads as that field would in a scene document. The order errors are found in: each parameter
+// when it is read, in name order (the map's); then the camera's fields together, the image's pixels, the
+// model, and validate().
+// `sniffed`: the model's format by its bytes, when the request has already asked.
+raster::Scene default_scene(const Params& params, std::optional<raster::ModelFormat> named_format,
+                            const raster::Uploads& uploads, const raster::Limits& limits,
+                            std::optional<raster::ModelFormat> sniffed) {
+  raster::Scene scene;
+  scene.width = scene.height = 512;
   // The bytes tell the format first (the reader sniffs them); else the part's file name, else ?format=.
-  if (named_format)
-    model["format"] = raster::format_name(*named_format);
-  else if (const auto format = params.find("format"); format != params.end())
-    model["format"] = format->second;
-  scene["primitives"] = nlohmann::json::array({model});
-  return scene.dump();
+  std::optional<raster::ModelFormat> hint = named_format;
+  for (const auto& [name, value] : params) {
+    if (name == "explain" || name == "scale")
+      continue;  // the route's, and the scene's once read (apply_scale)
+    try {
+      if (name == "format") {
+        if (!named_format) hint = raster::checks::model_format(value);
+      } else if (!set_field(scene, name, value, limits)) {
+        bad_param(name, "unknown; known: " + known_params());
+      }
+    } catch (const QueryError&) {
+      throw;
+    } catch (const raster::SceneError& e) {
+      rethrow_as(name, e);
+    }
+  }
+  try {
+    raster::checks::camera(scene.camera, "/camera", 0);
+    raster::checks::image_size(scene.width, scene.height, limits);
+    const auto mtl = uploads.find("mtl");  // an MTL uploaded as part "mtl" goes with the model
+    scene.meshes.push_back(raster::checks::model_mesh(uploads.at("model"), hint, limits, uploads,
+                                                      mtl == uploads.end() ? std::string_view() : mtl->second,
+                                                      "/primitives/0", 0, sniffed));
+    raster::Primitive model;
+    model.kind = raster::PrimitiveKind::mesh;
+    scene.primitives.push_back(model);
+    raster::validate(scene);
+  } catch (const raster::SceneError& e) {
+    const std::string param = param_of_pointer(e.where().pointer, params);
+    if (param.empty()) throw;
+    rethrow_as(param, e);
+  }
+  return scene;
 }
 
 }  // namespace
@@ -267,7 +331,7 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   Params params;  // what the request means: without the cache-buster and the sharing tools' parameters
   for (const auto& [name, value] : all_params)
     if (!ignored_param(name)) params.emplace(name, value);
-  // Parameters become JSON text below and are quoted in errors: their bytes must be UTF-8 first.
+  // Parameters are quoted in errors, which are UTF-8 JSON: their bytes must be UTF-8 first.
   for (const auto& [name, value] : params) {
     raster::require_utf8(name, "the name of a query parameter");
     raster::require_utf8(value, "query parameter \"" + name + "\"");
@@ -318,21 +382,12 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     throw raster::SceneError(raster::ErrorKind::syntax,
                              "the request is empty: send a scene (JSON) or a model (" +
                                  std::string(raster::accepted_formats()) + ")");
+  // The body is the model when it has bytes (else a part is): its format by its bytes is known already.
+  const std::optional<raster::ModelFormat> model_sniffed = body.empty() ? std::nullopt : sniffed;
   if (!body.empty()) uploads["model"] = std::move(body);
-  try {
-    raster::Scene scene = raster::parse_scene(default_scene_json(params, named_format), limits, uploads);
-    if (scale) apply_scale(scene, *scale, limits);
-    return scene;
-  } catch (const QueryError&) {
-    throw;
-  } catch (const raster::SceneError& e) {
-    // A field the query set is reported as that parameter: the client sent no document to point into.
-    const std::string param = param_of_pointer(e.where().pointer, params);
-    if (param.empty()) throw;
-    if (e.kind() == raster::ErrorKind::invalid)
-      throw QueryError(param, "query parameter \"" + param + "\": " + e.what());
-    throw raster::SceneError(e.kind(), "query parameter \"" + param + "\": " + e.what());
-  }
+  raster::Scene scene = default_scene(params, named_format, uploads, limits, model_sniffed);
+  if (scale) apply_scale(scene, *scale, limits);
+  return scene;
 }
 
 }  // namespace rasterd

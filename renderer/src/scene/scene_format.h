@@ -3,9 +3,11 @@
 // of fields themselves are in scene_reader.cpp and scene_objects.cpp, next to the functions that read them.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -39,6 +41,35 @@ inline constexpr Range kIntensity{0, kMaxLightIntensity, false, false, "\"intens
 static_assert(kMaxLightIntensity == 1000, "kIntensity's rule names the limit");
 inline constexpr Range kTexCoord{-1e30, 1e30, false, false,
                                  "a texture coordinate must be a number within +-1e30"};
+
+/// A number outside its range, in the words of every field that has one.
+inline std::string out_of_range(const Range& range, std::string_view text) {
+  return std::string(range.rule) + "; got " + std::string(text);
+}
+
+/// A coordinate past +-kMaxCoordinate.
+inline std::string outside_coordinates(std::string_view text) {
+  return "coordinate " + std::string(text) + " is outside +-3.4e38 (+-2^128)";
+}
+
+/// A colour string that is none of the hex forms.
+inline std::string bad_hex_color(std::string_view text) {
+  return "expected a colour \"#rgb\", \"#rgba\", \"#rrggbb\" or \"#rrggbbaa\", got \"" + std::string(text) +
+         "\"";
+}
+
+/// The names a word field takes, in its errors' words: `expected "a", "b" or "c"`.
+inline std::string expected_one_of(std::span<const std::string_view> names) {
+  std::string expected = "expected";
+  for (std::size_t i = 0; i < names.size(); ++i)
+    expected += (i == 0 ? " \"" : i + 1 == names.size() ? " or \"" : ", \"") + std::string(names[i]) + "\"";
+  return expected;
+}
+
+/// The words of a camera's "projection" and "view", in the enums' order.
+inline constexpr std::array<std::string_view, 2> kProjectionNames{"perspective", "orthographic"};
+inline constexpr std::array<std::string_view, 7> kViewNames{"front", "back",   "left", "right",
+                                                            "top",   "bottom", "iso"};
 
 /// JSON value kinds as bits, for a descriptor's accepted kinds (JsonCursor::Kind order).
 enum KindBits : std::uint8_t {

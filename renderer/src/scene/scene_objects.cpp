@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/vecmath.h"
+#include "raster/scene_checks.h"
 #include "scene/scene_reader.h"
 
 namespace raster::scene_reader {
@@ -82,14 +83,11 @@ constexpr Field<TextureState> kTextureFields[] = {
 constexpr Field<CameraState> kCameraFields[] = {
     {"projection", format::kString, "\"perspective\" or \"orthographic\"",
      [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.projection = static_cast<Projection>(
-           r.choice(at, std::array<std::string_view, 2>{"perspective", "orthographic"}));
+       c.camera.projection = static_cast<Projection>(r.choice(at, format::kProjectionNames));
      }},
     {"view", format::kString, "a view name",
      [](Reader& r, CameraState& c, const Path& at) {
-       static constexpr std::array<std::string_view, 7> kViews{"front", "back",   "left", "right",
-                                                               "top",   "bottom", "iso"};
-       c.camera.view = static_cast<View>(r.choice(at, kViews)), c.camera.has_view = true;
+       c.camera.view = static_cast<View>(r.choice(at, format::kViewNames)), c.camera.has_view = true;
      }},
     {"eye", format::kArray, "a point [x, y, z]",
      [](Reader& r, CameraState& c, const Path& at) { c.camera.eye = r.vec3(at), c.camera.has_eye = true; }},
@@ -172,10 +170,7 @@ std::uint32_t light_keys(LightKind kind) {
 Camera Reader::camera(const Path& at) {
   CameraState c;
   read_object(kCameraFields, c, at, "a camera object");
-  if (c.camera.has_view && c.camera.has_eye)
-    invalid(Path(at, "view", at.byte()), "\"view\" and \"eye\" both place the camera: give one of them");
-  if (c.camera.has_near && c.camera.has_far && !(c.camera.near < c.camera.far))
-    invalid(Path(at, "far", at.byte()), "\"far\" must be greater than \"near\"");
+  checks::camera(c.camera, at.str(), at.byte());  // the checks across its fields
   return c.camera;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "base/budget_ask.h"
+#include "raster/scene_checks.h"
 #include "raster/utf8.h"
 #include "scene/scene_reader.h"
 
@@ -249,29 +250,15 @@ void Reader::finish_model(PrimitiveState& s, const Path& at) {
     if (const auto part = uploads.find("mtl"); part != uploads.end()) mtl = part->second;
   Limits model_limits = limits;
   model_limits.max_texture_pixels = texels_left(scene, limits);
-  Mesh mesh;
-  try {
-    // Bytes that do not tell their format: "format", else the uploaded part's file name (a scene's
-    // "source": "part.stl"), as for a model sent alone.
-    std::optional<ModelFormat> hint = type == "obj" ? ModelFormat::obj : s.format;
-    if (!hint && (s.seen & bit("source"))) hint = format_of_file_name(s.source);
-    mesh = parse_model(obj, hint, model_limits, (s.seen & bit("textures")) ? s.textures : uploads, mtl);
-  } catch (const SceneError& e) {
-    // An encoding error keeps its byte: the offset into the model's own text, which the message names.
-    std::string message = e.what();
-    if (e.where().line)
-      message += " (line " + std::to_string(e.where().line) + ")";
-    else if (e.where().byte && e.kind() != ErrorKind::encoding)  // a binary model's place in its own bytes
-      message += " (byte " + std::to_string(e.where().byte) + " of the model)";
-    throw SceneError(e.kind(), message,
-                     ErrorLocation{at.str(), e.kind() == ErrorKind::encoding ? e.where().byte : at.byte(),
-                                   e.where().line});
-  }
+  // Bytes that do not tell their format: "format", else the uploaded part's file name (a scene's
+  // "source": "part.stl"), as for a model sent alone.
+  std::optional<ModelFormat> hint = type == "obj" ? ModelFormat::obj : s.format;
+  if (!hint && (s.seen & bit("source"))) hint = format_of_file_name(s.source);
+  Mesh mesh = checks::model_mesh(obj, hint, model_limits, (s.seen & bit("textures")) ? s.textures : uploads,
+                                 mtl, at.str(), at.byte());
   if (s.seen & bit("color")) {  // an explicit colour wins over the model's own
     mesh.colors = {s.color};
     mesh.face_colors.clear();
-  } else if (mesh.colors.empty()) {
-    mesh.colors = {kMeshGrey};
   }
   if (s.seen & bit("shading")) mesh.shading = s.mesh.shading;
   if (s.seen & bit("cull")) mesh.cull = s.mesh.cull;
@@ -362,13 +349,12 @@ namespace {
 
 // The image's side: a whole number in 1..the limit.
 int side(Reader& r, const Path& at, std::string_view key, int max_side) {
-  const std::int64_t v = r.integer(at);
-  const std::string quoted = "\"" + std::string(key) + "\" ";
-  if (v < 1) r.invalid(at, quoted + "must be at least 1, got " + r.number_text());
-  const int cap = std::min(max_side, kMaxImageSide);
-  if (v > cap)
-    r.fail(ErrorKind::limit, at, quoted + r.number_text() + " exceeds the limit of " + std::to_string(cap));
-  return static_cast<int>(v);
+  const double v = r.number(at);
+  try {
+    return checks::image_side(key, v, r.in.number_text(), max_side);
+  } catch (const SceneError& e) {
+    r.fail(e.kind(), at, e.what());
+  }
 }
 
 constexpr Field<Keys> kRootFields[] = {
@@ -411,10 +397,11 @@ void Reader::read_root() {
   for (const char* key : {"width", "height"})
     if (!(keys.seen & format::mask_of(kRootFields, {key})))
       invalid(root, std::string("missing \"") + key + "\" (image size in pixels)");
-  if (const std::int64_t pixels = std::int64_t{scene.width} * scene.height; pixels > limits.max_pixels)
-    fail(ErrorKind::limit, root,
-         std::to_string(scene.width) + "x" + std::to_string(scene.height) + " is " + std::to_string(pixels) +
-             " pixels, over the limit of " + std::to_string(limits.max_pixels));
+  try {
+    checks::image_size(scene.width, scene.height, limits);
+  } catch (const SceneError& e) {
+    fail(e.kind(), root, e.what());
+  }
   if ((keys.seen & format::mask_of(kRootFields, {"light"})) &&
       (keys.seen & format::mask_of(kRootFields, {"lights"})))
     invalid(Path(root, "lights", 1), "\"light\" (one light) and \"lights\" (a list) exclude each other");

@@ -165,14 +165,14 @@ struct Reader {
   template <class Where>
   double ranged(const Where& where, const Range& r) {
     const double d = number(where);
-    if (!r.contains(d)) invalid(where(in.number_offset()), std::string(r.rule) + "; got " + number_text());
+    if (!r.contains(d)) invalid(where(in.number_offset()), format::out_of_range(r, in.number_text()));
     return d;
   }
   template <class Where>
   double coordinate(const Where& where) {
     const double d = number(where);
     if (std::fabs(d) > kMaxCoordinate)
-      invalid(where(in.number_offset()), "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
+      invalid(where(in.number_offset()), format::outside_coordinates(in.number_text()));
     return d;
   }
   // 256 and 256.0, not 256.5; clamped to int64 (the range check is the caller's).
@@ -191,9 +191,7 @@ struct Reader {
   // One of `names` (a string); its index.
   template <std::size_t N>
   std::size_t choice(const Path& at, const std::array<std::string_view, N>& names) {
-    std::string expected = "expected";
-    for (std::size_t i = 0; i < N; ++i)
-      expected += (i == 0 ? " \"" : i + 1 == N ? " or \"" : ", \"") + std::string(names[i]) + "\"";
+    const std::string expected = format::expected_one_of(names);
     if (in.peek() != Kind::string) invalid(at, expected + ", got " + phrase(in.peek()));
     const std::string_view s = in.string();
     for (std::size_t i = 0; i < N; ++i)

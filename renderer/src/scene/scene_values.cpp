@@ -9,8 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_reader.h"
 #include "base/base64.h"
+#include "raster/scene_checks.h"
+#include "scene/scene_reader.h"
 
 namespace raster::scene_reader {
 
@@ -63,9 +64,7 @@ Rgba8 Reader::color(const Path& at) {
   if (expect(at, format::kString | format::kArray, "a colour (\"#rrggbb\" or [r, g, b])") == Kind::string) {
     const std::string_view s = in.string();
     Rgba8 c;
-    if (!parse_hex_color(s, c))
-      invalid(at, "expected a colour \"#rgb\", \"#rgba\", \"#rrggbb\" or \"#rrggbbaa\", got \"" +
-                      std::string(s) + "\"");
+    if (!parse_hex_color(s, c)) invalid(at, format::bad_hex_color(s));
     return c;
   }
   double comp[4];
@@ -157,8 +156,7 @@ void Reader::points(PrimitiveState& s, const Path& at) {
       const std::size_t number_byte = in.offset();
       v[n] = in.number();
       if (std::fabs(v[n]) > kMaxCoordinate)
-        invalid(Path(Path(at, k, byte), n, number_byte),
-                "coordinate " + number_text() + " is outside +-3.4e38 (+-2^128)");
+        invalid(Path(Path(at, k, byte), n, number_byte), format::outside_coordinates(in.number_text()));
     }
     if (k == 0) s.dims = n == 3 ? 3 : 2, shape = s.dims == 3 ? "[x, y, z]" : "[x, y]";
     if (n != s.dims)
@@ -256,3 +254,15 @@ std::string Reader::base64(const Path& at) {
 }
 
 }  // namespace raster::scene_reader
+
+namespace raster::checks {
+
+// Here, beside the reader's colours, for the hex parser they share.
+Rgba8 color(std::string_view text) {
+  Rgba8 c;
+  if (!scene_reader::parse_hex_color(text, c))
+    throw SceneError(ErrorKind::invalid, format::bad_hex_color(text));
+  return c;
+}
+
+}  // namespace raster::checks

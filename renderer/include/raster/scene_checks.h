@@ -1,0 +1,59 @@
+// The scene format's checks of single values, for a Scene built in code from values that did not come in a
+// scene document (the service's query parameters of a bare model). Each returns what the field would hold,
+// or throws SceneError with the words the scene reader uses for the same value in that field (the reader
+// calls these too, so the words are written once). The errors carry no location: the caller knows where the
+// value came from. `text` is how the value is quoted in an error.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "raster/model.h"
+#include "raster/scene.h"
+
+namespace raster::checks {
+
+/// "width" or "height" (`key`): a whole number from 1 to min(`max_side`, kMaxImageSide); over it is
+/// SceneError(limit).
+int image_side(std::string_view key, double value, std::string_view text, int max_side);
+
+/// width x height within `limits.max_pixels`, else SceneError(limit).
+void image_size(int width, int height, const Limits& limits);
+
+/// A colour as text: "#rgb", "#rgba", "#rrggbb" or "#rrggbbaa".
+Rgba8 color(std::string_view text);
+
+/// A camera's "projection": "perspective" or "orthographic".
+Projection projection(std::string_view name);
+
+/// A camera's "view": "front", "back", "left", "right", "top", "bottom" or "iso".
+View view(std::string_view name);
+
+/// A camera's "fov", in degrees.
+double fov(double degrees, std::string_view text);
+
+/// One coordinate of a point or direction: within +-kMaxCoordinate.
+double coordinate(double value, std::string_view text);
+
+/// A camera's "up": not the zero vector.
+Vec3 up(const Vec3& direction);
+
+/// What a camera's fields must satisfy together ("view" or "eye"; "near" before "far"), as a camera object
+/// is checked when it ends. Throws with the pointer of the field at fault under `at` (a camera object's), at
+/// `byte`.
+void camera(const Camera& camera, const std::string& at, std::size_t byte);
+
+/// A model primitive's "format": a name of model_formats(), as written (case matters, as in a scene).
+ModelFormat model_format(std::string_view name);
+
+/// The mesh of a model primitive, read as the scene reader reads one: parse_model(bytes, hint, ...) within
+/// the texels `limits` leave, grey when the model has no colours of its own. A reader's error is rethrown
+/// with its line or its byte in the model's words, located at `pointer` and `byte` (0 when the model came in
+/// no document). `sniffed`: what sniff_model(bytes) gave, when the caller has already asked it (a request is
+/// sniffed once); without it, the bytes are sniffed here.
+Mesh model_mesh(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits,
+                const Uploads& files, std::string_view mtl_text, const std::string& pointer, std::size_t byte,
+                std::optional<ModelFormat> sniffed = std::nullopt);
+
+}  // namespace raster::checks
