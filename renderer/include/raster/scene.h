@@ -212,12 +212,12 @@ struct Scene {
   int width = 0;   ///< pixels, >= 1
   int height = 0;  ///< pixels, >= 1
   Rgba8 background{0, 0, 0, 255};
-  std::vector<Primitive> primitives;  ///< drawn in this order; later ones are on top
-  std::vector<Point2> points;         ///< all vertices, referenced by Primitive::first_point
-  std::vector<Rgba8> colors;          ///< all colours, referenced by Primitive::first_color
-  std::vector<Mesh> meshes;           ///< 3D content, referenced by mesh primitives
-  Camera camera;                      ///< used only when the scene has 3D content
-  std::vector<Light> lights;          ///< lights of meshes; empty: default_lights()
+  std::vector<Primitive> primitives;      ///< drawn in this order; later ones are on top
+  std::vector<Point2> points;             ///< all vertices, referenced by Primitive::first_point
+  std::vector<Rgba8> colors;              ///< all colours, referenced by Primitive::first_color
+  std::vector<Mesh> meshes;               ///< 3D content, referenced by mesh primitives
+  Camera camera;                          ///< used only when the scene has 3D content
+  std::vector<Light> lights;              ///< lights of meshes; empty: default_lights()
   Antialias antialias = Antialias::none;  ///< "antialias"; the plan turns it into coverage and samples
   /// Field by field; the two scene readers are tested to agree by it.
   friend bool operator==(const Scene&, const Scene&) = default;
@@ -236,7 +236,7 @@ struct Limits {
   std::int64_t max_primitives = 2'000'000;      ///< entries of "primitives"
   int max_json_depth = 64;                      ///< nesting of arrays and objects
   std::int64_t max_buffer_bytes = 512ll << 20;  ///< all pixel storage of one render (colour, depth, samples)
-  std::int64_t max_model_faces = 5'000'000;       ///< faces of one model: OBJ faces (before triangulation);
+  std::int64_t max_model_faces = 5'000'000;     ///< faces of one model: OBJ faces (before triangulation);
                                                 ///< STL, PLY and glTF triangles
   /// Texels of all of a scene's textures together, checked from each image's header before it is decoded
   /// (a decoded texel is 4 bytes; the plan also counts the mipmaps made from them).
