@@ -1,6 +1,8 @@
 // A textured OBJ as people bring it (the african_head case: model + MTL + diffuse PNG), end to end through
 // each input the service has: multipart parts over HTTP, one JSON document with everything inline (base64),
 // and the CLI's --part. All three must give the same picture, and it must show the texture.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -13,6 +15,12 @@
 #include "test_server.h"
 
 namespace {
+
+// A file in the temporary folder that no other test process writes: the same test may run in two processes
+// at once (make test beside make test-asan, a repeat loop), and a fixed name let one remove the other's PNG.
+std::string own_temp(const std::string& name) {
+  return testing::TempDir() + "rasterd-" + std::to_string(::getpid()) + "-" + name;
+}
 
 const std::string kDir = RASTERD_TESTS_DIR "/data/textured/";
 
@@ -222,7 +230,7 @@ TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
                                               {"mtl", box.mtl, "box.mtl", "model/mtl"},
                                               {"texture", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(http);
-  const std::string out = testing::TempDir() + "cli-box.png";
+  const std::string out = own_temp("cli-box.png");
   const std::string command = std::string(RASTERD_BINARY) + " render " + kDir + "box.obj --part mtl=" + kDir +
                               "box.mtl --part texture=" + kDir +
                               "box_diffuse.png --width 64 --height 64 --eye 3,2.5,4 -o " + out;
@@ -231,7 +239,7 @@ TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
   std::remove(out.c_str());
 
   // A scene naming its parts by part name, as over HTTP.
-  const std::string scene_file = testing::TempDir() + "cli-box-scene.json";
+  const std::string scene_file = own_temp("cli-box-scene.json");
   {
     std::FILE* f = std::fopen(scene_file.c_str(), "wb");
     ASSERT_NE(f, nullptr);
@@ -259,14 +267,14 @@ TEST(TexturedModel, CliFindsTheFilesTheModelNamesBesideIt) {
                                               {"mtl", box.mtl, "box.mtl", "model/mtl"},
                                               {"texture", box.png, "box_diffuse.png", "image/png"}});
   ASSERT_TRUE(http);
-  const std::string out = testing::TempDir() + "cli-box-beside.png";
+  const std::string out = own_temp("cli-box-beside.png");
   const std::string args = " --width 64 --height 64 --eye 3,2.5,4 -o " + out + " 2>&1";
   ASSERT_EQ(std::system((std::string(RASTERD_BINARY) + " render " + kDir + "box.obj" + args).c_str()), 0);
   EXPECT_EQ(test::read_file(out), http->body);
   std::remove(out.c_str());
 
   // The model and its MTL alone in a folder: the texture the MTL names is missing, and said to be.
-  const std::string folder = testing::TempDir() + "cli-box-no-texture/";
+  const std::string folder = own_temp("cli-box-no-texture/");
   ASSERT_EQ(std::system(
                 ("mkdir -p " + folder + " && cp " + kDir + "box.obj " + kDir + "box.mtl " + folder).c_str()),
             0);
