@@ -80,7 +80,10 @@ TEST(Plan, EqualVertexColoursTakeTheFlatPathWithIdenticalPixels) {
   EXPECT_EQ(p.flat_count, 2);
   EXPECT_FALSE(p.draw_of(0)->mode.smooth);
   const auto flat = raster::render(s.scene, p);
-  for (auto& d : p.draws) d.mode.smooth = d.mode.varying_color = true;  // force the interpolating path
+  for (auto& d : p.draws) {  // force the interpolating path
+    d.mode.smooth = true;
+    d.mode.varyings.add(raster::Varying::color, raster::Interpolation::affine);
+  }
   EXPECT_EQ(flat.pixels, raster::render(s.scene, p).pixels);
 }
 

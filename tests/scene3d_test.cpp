@@ -461,9 +461,10 @@ TEST(Obj, FlatAndSmoothShadingOfTheBunny) {
   EXPECT_EQ(smooth_plan.memory.depth_bytes, 128 * 128 * 4);
   EXPECT_TRUE(smooth_plan.draw_of(0)->mode.lit);
   EXPECT_TRUE(smooth_plan.draw_of(0)->mode.compute_normals) << "the bunny has no vn";
-  EXPECT_TRUE(smooth_plan.draw_of(0)->mode.light_per_pixel);
+  EXPECT_TRUE(smooth_plan.draw_of(0)->mode.varyings.has(raster::Varying::normal));
   const auto flat_plan = raster::plan(raster::parse_scene(scene("flat").dump()));
-  EXPECT_FALSE(flat_plan.draw_of(0)->mode.light_per_pixel) << "flat: one Lambert term per face";
+  EXPECT_FALSE(flat_plan.draw_of(0)->mode.varyings.has(raster::Varying::normal))
+      << "flat: one Lambert term per face";
   EXPECT_FALSE(flat_plan.draw_of(0)->mode.compute_normals) << "face normals only; no vertex normals computed";
   EXPECT_EQ(smooth_plan.format, raster::PixelFormat::grey8) << "light grey, lit, stays grey";
   const auto smooth = render_json(scene("smooth")), flat = render_json(scene("flat")),

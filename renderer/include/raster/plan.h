@@ -14,25 +14,74 @@
 
 namespace raster {
 
+/// What a vertex carries to the pixels beside its position: one row each, in this order (the order of a
+/// vertex's floats). Adding one is a row here, its width in kVaryingWidth, the plan's decision to add it, and
+/// the code that writes and reads it; clipping, setup and the planes the shader reads follow this
+/// description.
+enum class Varying : std::uint8_t {
+  color,     ///< straight RGBA, 0..255 (3D flat lighting already applied)
+  normal,    ///< world-space unit normal (per-pixel lighting)
+  uv,        ///< texture coordinates (scene.h: Mesh::uvs)
+  position,  ///< world position (per-pixel lighting by a point light)
+  depth,     ///< z / w in [0, 1], 1 at the near plane (reversed); written by the viewport, not clipped
+  inv_w,     ///< 1 / w, for perspective-correct interpolation; written by the viewport, not clipped
+};
+inline constexpr int kVaryingCount = 6;
+/// Floats of each Varying, in enum order.
+inline constexpr std::uint8_t kVaryingWidth[kVaryingCount] = {4, 3, 2, 3, 1, 1};
+
+/// How a varying changes across a triangle.
+enum class Interpolation : std::uint8_t {
+  flat,         ///< one value for the whole primitive: its first vertex's (stored once per record)
+  affine,       ///< linear in screen space: 2D colours, and depth and 1 / w (affine after the divide)
+  perspective,  ///< linear in the world: v / w and 1 / w interpolated in screen space, then divided
+};
+
+/// The varyings of a primitive, decided by the plan: which rows exist and how each is interpolated, and from
+/// that the layout every stage uses (no stage writes an offset of its own).
+///  - a vertex (geometry's clip and screen vertices): every row present, in enum order, `floats` in all; the
+///    first `clipped_floats` (every row before depth) are what clipping interpolates;
+///  - a triangle record's attribute floats: the flat rows once (`flat_floats`), then per vertex k the
+///    interpolated rows (`stride` floats each, vertex k's at flat_floats + k stride).
+struct Varyings {
+  static constexpr int kMaxFloats = 14;  ///< every row: 4 + 3 + 2 + 3 + 1 + 1
+  Interpolation interpolation[kVaryingCount] = {};
+  std::int8_t vertex_offset[kVaryingCount] = {0, -1, -1, -1, -1, -1};  ///< in a vertex's floats; -1: absent
+  std::int8_t record_offset[kVaryingCount] = {0,  -1, -1, -1,
+                                              -1, -1};  ///< flat: in the record; else in a vertex's stride
+  std::uint8_t floats = 4, clipped_floats = 4, flat_floats = 4, stride = 0;
+
+  bool has(Varying v) const { return vertex_offset[static_cast<int>(v)] >= 0; }
+  Interpolation how(Varying v) const { return interpolation[static_cast<int>(v)]; }
+  /// Adds (or re-interpolates) a row and lays every row out again.
+  Varyings& add(Varying v, Interpolation how);
+  /// Where vertex k's value of `v` starts in a record's attribute floats (the same k for a flat row).
+  int record_at(Varying v, int k) const {
+    const int i = static_cast<int>(v);
+    return interpolation[i] == Interpolation::flat ? record_offset[i]
+                                                   : flat_floats + k * stride + record_offset[i];
+  }
+  int record_floats() const { return flat_floats + 3 * stride; }
+  friend bool operator==(const Varyings&, const Varyings&) = default;
+};
+
 /// How one primitive's triangles or lines are drawn.
 struct PrimitivePlan {
-  bool smooth =
-      false;  ///< interpolate per-vertex values (colours; normals when lit); false: one colour per face
-  bool varying_color = false;    ///< vertex colours differ: interpolated (else one colour per face, as given)
-  bool blend = false;            ///< some colour has alpha < 255: source-over blending; false: plain stores
-  bool depth = false;            ///< 3D: depth-tested and depth-written; 2D overlays are not
-  bool lit = false;              ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
-  bool compute_normals = false;  ///< smooth lighting on a mesh without normals: computed, angle-weighted
-  bool light_per_pixel =
-      false;              ///< smooth lighting: normals interpolated and lit at every pixel (else per face)
-  bool textured = false;  ///< 3D: texture coordinates interpolated and each draw call's texture sampled
-  bool position_per_pixel = false;  ///< per-pixel lighting with a point light: world position interpolated
+  bool smooth = false;  ///< colour per pixel (interpolated colours, textures, per-pixel light); false: one
+                        ///< colour per face
+  bool blend = false;   ///< some colour has alpha < 255: source-over blending; false: plain stores
+  bool depth = false;   ///< 3D: depth-tested and depth-written; 2D overlays are not
+  bool lit = false;     ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
+  bool compute_normals = false;  ///< per-pixel lighting of a mesh without normals: computed, angle-weighted
   bool line_rectangles =
       false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
   /// Area coverage: the primitive's triangles (a line's two, a polyline's segments) add up their coverage
   /// of each pixel, at most 1, and the primitive is composited once: no seam along a rectangle's diagonal,
   /// no darker joints where translucent segments overlap.
   bool union_coverage = false;
+  /// What its vertices carry (colour always; normals, texture coordinates, positions, depth as it needs).
+  /// Colours vary (2D: affine; 3D: perspective) or are flat; lit per pixel means a normal row.
+  Varyings varyings;
   friend bool operator==(const PrimitivePlan&, const PrimitivePlan&) = default;
 };
 

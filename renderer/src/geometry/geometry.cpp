@@ -6,18 +6,21 @@
 namespace raster::detail {
 namespace {
 
-SetupVertex vertex_2d(const Point2& p, Rgba8 c) {
+// A 2D vertex carries its colour only (the plan gives 2D modes no other varying).
+SetupVertex vertex_2d(const Varyings& varyings, const Point2& p, Rgba8 c) {
   SetupVertex v;
   v.x = snap(p.x), v.y = snap(p.y);
-  v.color[0] = c.r, v.color[1] = c.g, v.color[2] = c.b, v.color[3] = c.a;
+  float* color = v.at(varyings, Varying::color);
+  color[0] = c.r, color[1] = c.g, color[2] = c.b, color[3] = c.a;
   return v;
 }
 
 void add_triangle(const Scene& scene, const Primitive& prim, std::uint32_t call, Setup& setup) {
   const Point2* pts = &scene.points[prim.first_point];
-  const SetupVertex v[3] = {vertex_2d(pts[0], scene.vertex_color(prim, 0)),
-                            vertex_2d(pts[1], scene.vertex_color(prim, 1)),
-                            vertex_2d(pts[2], scene.vertex_color(prim, 2))};
+  const Varyings& with = setup.calls[call].mode.varyings;
+  const SetupVertex v[3] = {vertex_2d(with, pts[0], scene.vertex_color(prim, 0)),
+                            vertex_2d(with, pts[1], scene.vertex_color(prim, 1)),
+                            vertex_2d(with, pts[2], scene.vertex_color(prim, 2))};
   setup.add_triangle(call, v);
 }
 
@@ -44,9 +47,10 @@ void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint3
       {a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
   const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
   const Rgba8 c[4] = {ca, cb, cb, ca};
+  const Varyings& with = setup.calls[call].mode.varyings;
   for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
-    const SetupVertex v[3] = {vertex_2d(q[t[0]], c[t[0]]), vertex_2d(q[t[1]], c[t[1]]),
-                              vertex_2d(q[t[2]], c[t[2]])};
+    const SetupVertex v[3] = {vertex_2d(with, q[t[0]], c[t[0]]), vertex_2d(with, q[t[1]], c[t[1]]),
+                              vertex_2d(with, q[t[2]], c[t[2]])};
     setup.add_triangle(call, v);
   }
 }

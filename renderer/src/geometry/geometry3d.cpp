@@ -18,20 +18,21 @@
 namespace raster::detail {
 namespace {
 
-/// The one vertex record of the 3D path: clip-space position plus every attribute, so clipping
-/// interpolates them all with one routine.
+/// The one vertex record of the 3D path: clip-space position plus the values of its primitive's varyings,
+/// laid out as a SetupVertex's (raster/plan.h: Varyings), so clipping interpolates them all with one routine
+/// and a projected vertex takes them as they are.
 struct ClipVertex {
-  double x = 0, y = 0, z = 0, w = 0;  ///< clip space (see ViewPlan)
-  float attr[12] = {};  ///< r, g, b, a (0..255), normal x, y, z (world), u, v, position x, y, z (world)
+  double x = 0, y = 0, z = 0, w = 0;        ///< clip space (see ViewPlan)
+  float values[Varyings::kMaxFloats] = {};  ///< at Varyings::vertex_offset; depth and 1/w not yet written
 };
-constexpr int kAttributes = 12;
 
-ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
+/// a + (b - a) t, position and the first `floats` values (Varyings::clipped_floats).
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t, int floats) {
   ClipVertex r;
   r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t,
   r.w = a.w + (b.w - a.w) * t;
-  for (int k = 0; k < kAttributes; ++k)
-    r.attr[k] = static_cast<float>(a.attr[k] + (b.attr[k] - a.attr[k]) * t);
+  for (int k = 0; k < floats; ++k)
+    r.values[k] = static_cast<float>(a.values[k] + (b.values[k] - a.values[k]) * t);
   return r;
 }
 
@@ -61,16 +62,16 @@ constexpr double kGuardPx = 8192;
 
 // The crossing of segment a-b with a plane, computed from the endpoints in a canonical order so that two
 // triangles sharing the edge get bit-identical vertices and the edge stays watertight.
-ClipVertex intersect(const ClipVertex& a, const ClipVertex& b, int plane, const Planes& planes) {
+ClipVertex intersect(const ClipVertex& a, const ClipVertex& b, int plane, const Planes& planes, int floats) {
   const bool swap = std::tie(b.x, b.y, b.z, b.w) < std::tie(a.x, a.y, a.z, a.w);
   const ClipVertex& p = swap ? b : a;
   const ClipVertex& q = swap ? a : b;
   const double dp = planes.distance(p, plane), dq = planes.distance(q, plane);
-  return lerp(p, q, dp / (dp - dq));
+  return lerp(p, q, dp / (dp - dq), floats);
 }
 
 // Sutherland-Hodgman in homogeneous space; returns the vertex count of the clipped polygon (0 if gone).
-int clip_polygon(std::array<ClipVertex, 9>& poly, int n, const Planes& planes) {
+int clip_polygon(std::array<ClipVertex, 9>& poly, int n, const Planes& planes, int floats) {
   std::array<ClipVertex, 9> out;
   for (int plane = 0; plane < kPlaneCount && n >= 3; ++plane) {
     int m = 0;
@@ -79,7 +80,7 @@ int clip_polygon(std::array<ClipVertex, 9>& poly, int n, const Planes& planes) {
       const ClipVertex& b = poly[(i + 1) % n];
       const bool a_in = planes.distance(a, plane) >= 0, b_in = planes.distance(b, plane) >= 0;
       if (a_in) out[m++] = a;
-      if (a_in != b_in) out[m++] = intersect(a, b, plane, planes);
+      if (a_in != b_in) out[m++] = intersect(a, b, plane, planes, floats);
     }
     poly = out;
     n = m;
@@ -88,14 +89,14 @@ int clip_polygon(std::array<ClipVertex, 9>& poly, int n, const Planes& planes) {
 }
 
 // The same for a segment (parametric): false when nothing is left.
-bool clip_segment(ClipVertex& a, ClipVertex& b, const Planes& planes) {
+bool clip_segment(ClipVertex& a, ClipVertex& b, const Planes& planes, int floats) {
   for (int plane = 0; plane < kPlaneCount; ++plane) {
     const double da = planes.distance(a, plane), db = planes.distance(b, plane);
     if (da < 0 && db < 0) return false;
     if (da < 0)
-      a = intersect(a, b, plane, planes);
+      a = intersect(a, b, plane, planes, floats);
     else if (db < 0)
-      b = intersect(a, b, plane, planes);
+      b = intersect(a, b, plane, planes, floats);
   }
   return true;
 }
@@ -120,6 +121,16 @@ bool in_guard_band(double sx, double sy, double inv_w) {
 
 Rgba8 to_rgba8(const float* c) {
   return {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
+}
+
+void put_color(float* to, Rgba8 c) {
+  to[0] = c.r, to[1] = c.g, to[2] = c.b, to[3] = c.a;
+}
+
+/// Where the viewport puts a projected vertex's depth and 1 / w, for the rows `varyings` has.
+void put_projection(const Varyings& varyings, SetupVertex& v, double depth, double inv_w) {
+  if (varyings.has(Varying::depth)) *v.at(varyings, Varying::depth) = static_cast<float>(depth);
+  if (varyings.has(Varying::inv_w)) *v.at(varyings, Varying::inv_w) = static_cast<float>(inv_w);
 }
 
 /// A vertex inside every clip plane, projected: what its triangles' records are made of.
@@ -203,11 +214,12 @@ struct MeshView {
   Rgba8 color_at(std::size_t triangle, std::uint32_t vertex) const {
     return mesh.face_colors.empty() ? vertex_color(vertex) : mesh.face_colors[triangle];
   }
-  /// The vertex in clip space (computed again: only clipped primitives need it).
-  ClipVertex clip_vertex(std::uint32_t i, Rgba8 c) const {
+  /// The vertex in clip space (computed again: only clipped primitives need it), with colour `c` in the
+  /// place `varyings` gives it.
+  ClipVertex clip_vertex(std::uint32_t i, const Varyings& varyings, Rgba8 c) const {
     const Vec4 p = transform(model_to_clip, mesh.positions[i]);
     ClipVertex v{p.x, p.y, p.z, p.w, {}};
-    v.attr[0] = c.r, v.attr[1] = c.g, v.attr[2] = c.b, v.attr[3] = c.a;
+    put_color(v.values + varyings.vertex_offset[static_cast<int>(Varying::color)], c);
     return v;
   }
 };
@@ -215,19 +227,16 @@ struct MeshView {
 // A triangle that crosses a clip plane: clipped in homogeneous space, projected, fanned into records.
 void add_clipped(const MeshView& view, std::array<ClipVertex, 9>& poly, std::uint32_t call, bool back,
                  const Setup& setup, Records& part) {
+  const Varyings& varyings = setup.calls[call].mode.varyings;
   SetupVertex dv[9];
-  const int n = clip_polygon(poly, 3, view.planes);
+  const int n = clip_polygon(poly, 3, view.planes, varyings.clipped_floats);
   for (int k = 0; k < n; ++k) {
     double sx, sy, depth, inv_w;
     view.viewport.project(poly[k], sx, sy, depth, inv_w);
     if (!in_guard_band(sx, sy, inv_w)) return;
     dv[k].x = snap(sx), dv[k].y = snap(sy);
-    dv[k].depth = static_cast<float>(depth);
-    dv[k].inv_w = static_cast<float>(inv_w);
-    std::copy(poly[k].attr, poly[k].attr + 4, dv[k].color);
-    std::copy(poly[k].attr + 4, poly[k].attr + 7, dv[k].normal);
-    std::copy(poly[k].attr + 7, poly[k].attr + 9, dv[k].uv);
-    std::copy(poly[k].attr + 9, poly[k].attr + 12, dv[k].position);
+    std::copy_n(poly[k].values, varyings.clipped_floats, dv[k].values);
+    put_projection(varyings, dv[k], depth, inv_w);
   }
   for (int k = 1; k + 1 < n; ++k) setup.add_triangle(part, call, {dv[0], dv[k], dv[k + 1]}, back);
 }
@@ -255,8 +264,10 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
   const Mesh& mesh = view.mesh;
   const PodArray<Vec3>& world = view.world;
   const auto& tri = mesh.triangles[t];
+  const Varyings& with = mode.varyings;
   float shade[3] = {1, 1, 1};
-  if (mode.lit && !mode.light_per_pixel) {  // flat: once per face, lit from the side seen, at its centroid
+  if (mode.lit &&
+      !with.has(Varying::normal)) {  // flat: once per face, lit from the side seen, at its centroid
     const Vec3 n = normalize(back ? face * -1.0 : face);
     const Vec3 c = (world[tri[0]] + world[tri[1]] + world[tri[2]]) * (1.0 / 3);
     double lit[3];
@@ -264,28 +275,27 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
     for (int k = 0; k < 3; ++k) shade[k] = static_cast<float>(lit[k]);
   }
   std::uint32_t triangle_call = call;
-  if (mode.textured) {
+  if (with.has(Varying::uv)) {
     const std::int32_t texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
     if (texture >= 0) triangle_call = texture_calls[static_cast<std::size_t>(texture)];
     for (int k = 0; k < 3; ++k) {
       const auto& uv = mesh.uvs[mesh.uv_triangles[t][k]];
-      dv[k].uv[0] = uv[0], dv[k].uv[1] = uv[1];
+      float* to = dv[k].at(with, Varying::uv);
+      to[0] = uv[0], to[1] = uv[1];
     }
   }
   for (int k = 0; k < 3; ++k) {
     const Rgba8 c = view.color_at(t, tri[k]);
-    dv[k].color[0] = c.r * shade[0], dv[k].color[1] = c.g * shade[1], dv[k].color[2] = c.b * shade[2];
-    dv[k].color[3] = c.a;
-    if (mode.light_per_pixel) {
-      const Vec3 n = mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]];
-      dv[k].normal[0] = static_cast<float>(n.x), dv[k].normal[1] = static_cast<float>(n.y),
-      dv[k].normal[2] = static_cast<float>(n.z);
-    }
-    if (mode.position_per_pixel) {
-      const Vec3& p = world[tri[k]];
-      dv[k].position[0] = static_cast<float>(p.x), dv[k].position[1] = static_cast<float>(p.y),
-      dv[k].position[2] = static_cast<float>(p.z);
-    }
+    float* color = dv[k].at(with, Varying::color);
+    color[0] = c.r * shade[0], color[1] = c.g * shade[1], color[2] = c.b * shade[2], color[3] = c.a;
+    auto put = [&](Varying name, const Vec3& v) {
+      float* to = dv[k].at(with, name);
+      to[0] = static_cast<float>(v.x), to[1] = static_cast<float>(v.y), to[2] = static_cast<float>(v.z);
+    };
+    if (with.has(Varying::normal))
+      put(Varying::normal,
+          mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]]);
+    if (with.has(Varying::position)) put(Varying::position, world[tri[k]]);
   }
   return triangle_call;
 }
@@ -294,7 +304,8 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
   const PodArray<Vec3>& world = view.world;
-  const std::size_t floats = static_cast<std::size_t>(setup.calls[call].layout.size);
+  const Varyings& with = mode.varyings;
+  const std::size_t floats = static_cast<std::size_t>(with.record_floats());
   part.triangles.reserve_more(end - begin), part.order.reserve_more(end - begin);
   part.attributes.reserve_more((end - begin) * floats);
   for (std::size_t t = begin; t < end; ++t) {
@@ -328,17 +339,14 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
     const std::uint32_t triangle_call = vertices(t, face, back, dv);
     if (any_out == 0) {  // inside every plane: the vertices were projected once
       for (int k = 0; k < 3; ++k)
-        dv[k].depth = view.screen[tri[k]].depth, dv[k].inv_w = view.screen[tri[k]].inv_w;
+        put_projection(with, dv[k], view.screen[tri[k]].depth, view.screen[tri[k]].inv_w);
       setup.append(part, record, triangle_call, {&dv[order[0]], &dv[order[1]], &dv[order[2]]}, back);
       continue;
     }
     std::array<ClipVertex, 9> poly;
     for (int k = 0; k < 3; ++k) {
-      poly[k] = view.clip_vertex(tri[k], {});
-      std::copy(dv[k].color, dv[k].color + 4, poly[k].attr);
-      std::copy(dv[k].normal, dv[k].normal + 3, poly[k].attr + 4);
-      std::copy(dv[k].uv, dv[k].uv + 2, poly[k].attr + 7);
-      std::copy(dv[k].position, dv[k].position + 3, poly[k].attr + 9);
+      poly[k] = view.clip_vertex(tri[k], with, {});
+      std::copy_n(dv[k].values, with.clipped_floats, poly[k].values);
     }
     add_clipped(view, poly, triangle_call, back, setup, part);
   }
@@ -350,7 +358,7 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
   TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye)};
-  if (mode.light_per_pixel) {
+  if (mode.varyings.has(Varying::normal)) {
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
     if (mode.compute_normals)
       job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
@@ -364,7 +372,7 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   call.lights = camera.lights;
   job.call = setup.add_call(call);
   // Textured: one call per texture, the same mode; faces without a texture keep `job.call` (no texture).
-  if (mode.textured)
+  if (mode.varyings.has(Varying::uv))
     for (const Texture& texture : mesh.textures) {
       call.texture = &setup.textures.emplace_back(build_mips(texture, &meter));
       if (meter.stopped()) return;
@@ -399,6 +407,7 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
 void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, double ay, double ad, double aw,
                         double bx, double by, double bd, double bw, double width, std::uint32_t call,
                         Setup& setup) {
+  const Varyings& with = setup.calls[call].mode.varyings;
   const double dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
   if (!(len > 0)) return;
   const double nx = -dy / len * 0.5 * width, ny = dx / len * 0.5 * width;
@@ -407,8 +416,8 @@ void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, dou
   for (int k = 0; k < 4; ++k) {
     const bool at_a = k == 0 || k == 3;
     q[k].x = snap(px[k]), q[k].y = snap(py[k]);
-    std::copy((at_a ? a : b).attr, (at_a ? a : b).attr + 4, q[k].color);
-    q[k].depth = static_cast<float>(at_a ? ad : bd), q[k].inv_w = static_cast<float>(at_a ? aw : bw);
+    std::copy_n((at_a ? a : b).values, with.clipped_floats, q[k].values);
+    put_projection(with, q[k], at_a ? ad : bd, at_a ? aw : bw);
   }
   setup.add_triangle(call, {q[0], q[1], q[2]});
   setup.add_triangle(call, {q[0], q[2], q[3]});
@@ -418,7 +427,8 @@ void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, dou
 // rectangle `width` pixels wide around it.
 void add_segment(const MeshView& view, ClipVertex a, ClipVertex b, const PrimitivePlan& mode,
                  std::uint32_t call, double width, Setup& setup) {
-  if (!clip_segment(a, b, view.planes)) return;
+  const Varyings& with = setup.calls[call].mode.varyings;
+  if (!clip_segment(a, b, view.planes, with.clipped_floats)) return;
   double ax, ay, ad, aw, bx, by, bd, bw;
   view.viewport.project(a, ax, ay, ad, aw);
   view.viewport.project(b, bx, by, bd, bw);
@@ -429,7 +439,8 @@ void add_segment(const MeshView& view, ClipVertex a, ClipVertex b, const Primiti
   }
   LineRecord line;
   line.x0 = std::floor(ax), line.y0 = std::floor(ay), line.x1 = std::floor(bx), line.y1 = std::floor(by);
-  line.c0 = to_rgba8(a.attr), line.c1 = to_rgba8(b.attr);
+  const int color = with.vertex_offset[static_cast<int>(Varying::color)];
+  line.c0 = to_rgba8(a.values + color), line.c1 = to_rgba8(b.values + color);
   line.depth0 = static_cast<float>(ad), line.depth1 = static_cast<float>(bd);
   line.call = call;
   setup.add_line(line);
@@ -464,8 +475,9 @@ void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setu
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;
     if ((view.outside[segments[s][0]] | view.outside[segments[s][1]]) & 0x80) continue;
-    add_segment(view, view.clip_vertex(segments[s][0], segment_colors[s][0]),
-                view.clip_vertex(segments[s][1], segment_colors[s][1]), line_mode, line_call, 1, setup);
+    add_segment(view, view.clip_vertex(segments[s][0], line_mode.varyings, segment_colors[s][0]),
+                view.clip_vertex(segments[s][1], line_mode.varyings, segment_colors[s][1]), line_mode,
+                line_call, 1, setup);
   }
 }
 
@@ -526,8 +538,8 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
     double z = c.z;  // reversed depth: z = w at the near plane, larger z / w is nearer
     if (c.w > 0 && nearer.w > 0) z = std::max(z, std::min(nearer.z / nearer.w, 1.0) * c.w);
     ClipVertex v{c.x, c.y, z, c.w, {}};
-    const Rgba8 colour = mesh.edges.color;
-    v.attr[0] = colour.r, v.attr[1] = colour.g, v.attr[2] = colour.b, v.attr[3] = colour.a;
+    put_color(v.values + edge_mode.varyings.vertex_offset[static_cast<int>(Varying::color)],
+              mesh.edges.color);
     return v;
   };
   const std::uint32_t call = setup.add_call(make_call(edge_mode));

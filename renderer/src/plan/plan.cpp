@@ -12,6 +12,24 @@
 #include "shade/texture.h"
 
 namespace raster {
+
+Varyings& Varyings::add(Varying v, Interpolation how) {
+  const int added = static_cast<int>(v);
+  if (vertex_offset[added] < 0) vertex_offset[added] = 0;  // present; laid out below
+  interpolation[added] = how;
+  floats = clipped_floats = flat_floats = stride = 0;
+  for (int i = 0; i < kVaryingCount; ++i) {
+    if (vertex_offset[i] < 0) continue;
+    const std::uint8_t width = kVaryingWidth[i];
+    vertex_offset[i] = static_cast<std::int8_t>(floats);
+    floats += width;
+    if (i < static_cast<int>(Varying::depth)) clipped_floats = floats;
+    std::uint8_t& block = interpolation[i] == Interpolation::flat ? flat_floats : stride;
+    record_offset[i] = static_cast<std::int8_t>(block);
+    block += width;
+  }
+  return *this;
+}
 namespace {
 
 // Below this much estimated work (bounding-box pixels touched by visible primitives; clearing is not
@@ -105,9 +123,8 @@ bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, Rende
   tally.any_3d = true;
   pp.depth = true;
   pp.lit = draws_triangles && mesh.shading != Shading::unlit;
-  pp.light_per_pixel = pp.lit && mesh.shading == Shading::smooth;
-  pp.compute_normals = pp.light_per_pixel && mesh.normals.empty();
-  pp.position_per_pixel = pp.light_per_pixel && lights.point;
+  const bool light_per_pixel = pp.lit && mesh.shading == Shading::smooth;
+  pp.compute_normals = light_per_pixel && mesh.normals.empty();
   tally.grey &= lights.grey || !pp.lit;
   const auto& colors = mesh.face_colors.empty() ? mesh.colors : mesh.face_colors;
   bool varied = false;
@@ -118,19 +135,30 @@ bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, Rende
   }
   // Per-pixel work when colours vary per vertex or normals are interpolated; per-face colours and flat
   // lighting give one colour per triangle.
-  pp.varying_color = varied && mesh.face_colors.empty() && mesh.colors.size() > 1;
+  const bool varying_color = varied && mesh.face_colors.empty() && mesh.colors.size() > 1;
   // Textures: sampled per pixel at perspective-correct coordinates, so the mesh takes the smooth path.
-  pp.textured = draws_triangles && !mesh.textures.empty() && !mesh.uv_triangles.empty();
-  if (pp.textured) plan_textures(mesh, pp, out, tally);
-  pp.smooth = pp.varying_color || pp.textured || (pp.lit && mesh.shading == Shading::smooth);
+  const bool textured = draws_triangles && !mesh.textures.empty() && !mesh.uv_triangles.empty();
+  if (textured) plan_textures(mesh, pp, out, tally);
+  pp.smooth = varying_color || textured || light_per_pixel;
+  Varyings& v = pp.varyings;
+  if (varying_color) v.add(Varying::color, Interpolation::perspective);
+  if (light_per_pixel) v.add(Varying::normal, Interpolation::perspective);
+  if (textured) v.add(Varying::uv, Interpolation::perspective);
+  if (light_per_pixel && lights.point) v.add(Varying::position, Interpolation::perspective);
+  v.add(Varying::depth, Interpolation::affine);
+  if (pp.smooth) v.add(Varying::inv_w, Interpolation::affine);
   // Lines (segments, wireframe edges) are unlit; their endpoint colours differ when the colours vary.
   draw.line_mode.depth = true;
   draw.line_mode.blend = pp.blend;
-  draw.line_mode.smooth = draw.line_mode.varying_color = varied;
+  draw.line_mode.smooth = varied;
+  if (varied) draw.line_mode.varyings.add(Varying::color, Interpolation::perspective);
+  draw.line_mode.varyings.add(Varying::depth, Interpolation::affine);
+  if (varied) draw.line_mode.varyings.add(Varying::inv_w, Interpolation::affine);
   if (mesh.edges.enabled && draws_triangles) {
     draw.edge_mode.depth = true;
     draw.edge_mode.blend = !mesh.edges.color.is_opaque();
     draw.edge_mode.line_rectangles = mesh.edges.width != 1;  // (and when multisampled, see plan_coverage)
+    draw.edge_mode.varyings.add(Varying::depth, Interpolation::affine);
     tally.grey &= mesh.edges.color.is_grey();
   }
   (pp.smooth ? out.smooth_count : out.flat_count) += 1;
@@ -166,7 +194,7 @@ bool plan_shape(const Scene& scene, const Primitive& prim, DrawPlan& draw, Rende
     pp.blend |= !c.is_opaque();
     tally.grey &= c.is_grey();
   }
-  pp.varying_color = pp.smooth;
+  if (pp.smooth) pp.varyings.add(Varying::color, Interpolation::affine);
   (pp.smooth ? out.smooth_count : out.flat_count) += 1;
   out.blend_count += pp.blend ? 1 : 0;
   const double cw = std::min(b.x1, w) - std::max(b.x0, 0.0) + 1,

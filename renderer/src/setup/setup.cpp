@@ -76,22 +76,8 @@ bool may_touch(const EdgeFunctions<std::int64_t>& e, Rect tile) {
 
 }  // namespace
 
-AttributeLayout AttributeLayout::of(const PrimitivePlan& mode) {
-  AttributeLayout l;
-  l.size = mode.varying_color ? 12 : 4;
-  if (mode.depth) {
-    l.depth = l.size, l.size += 3;
-    if (mode.smooth) l.inv_w = l.size, l.size += 3;
-  }
-  if (mode.light_per_pixel) l.normal = l.size, l.size += 9;
-  if (mode.textured) l.uv = l.size, l.size += 6;
-  if (mode.position_per_pixel) l.position = l.size, l.size += 9;
-  return l;
-}
-
 std::uint32_t Setup::add_call(const DrawCall& call) {
   calls.push_back(call);
-  calls.back().layout = AttributeLayout::of(call.mode);
   return static_cast<std::uint32_t>(calls.size() - 1);
 }
 
@@ -168,18 +154,17 @@ void Setup::add_triangle(Records& part, std::uint32_t call, const SetupVertex (&
 
 void Setup::append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
                    bool back_facing) const {
-  // Attributes in the normalized vertex order, only those the call's layout has.
-  const PrimitivePlan& mode = calls[call].mode;
-  const AttributeLayout& layout = calls[call].layout;
+  // The flat rows from vertex 0, then each vertex's interpolated rows: one run of floats per vertex, since
+  // a vertex holds its rows in the same order (Varyings).
+  const Varyings& varyings = calls[call].mode.varyings;
   r.attributes = static_cast<std::uint32_t>(part.attributes.size());
-  float* out = part.attributes.grow(static_cast<std::size_t>(layout.size));
-  for (int k = 0; k < (mode.varying_color ? 3 : 1); ++k) std::copy(v[k]->color, v[k]->color + 4, out + 4 * k);
-  for (int k = 0; k < 3; ++k) {
-    if (layout.depth >= 0) out[layout.depth + k] = v[k]->depth;
-    if (layout.inv_w >= 0) out[layout.inv_w + k] = v[k]->inv_w;
-    if (layout.normal >= 0) std::copy(v[k]->normal, v[k]->normal + 3, out + layout.normal + 3 * k);
-    if (layout.uv >= 0) std::copy(v[k]->uv, v[k]->uv + 2, out + layout.uv + 2 * k);
-    if (layout.position >= 0) std::copy(v[k]->position, v[k]->position + 3, out + layout.position + 3 * k);
+  float* out = part.attributes.grow(static_cast<std::size_t>(varyings.record_floats()));
+  for (int i = 0; i < kVaryingCount; ++i) {
+    if (varyings.vertex_offset[i] < 0) continue;
+    const Varying name = static_cast<Varying>(i);
+    for (int k = 0; k < (varyings.how(name) == Interpolation::flat ? 1 : 3); ++k)
+      std::copy_n(v[k]->values + varyings.vertex_offset[i], kVaryingWidth[i],
+                  out + varyings.record_at(name, k));
   }
   r.call = call;
   r.back_facing = back_facing;

@@ -24,22 +24,9 @@ namespace raster::detail {
 /// Others take the exact wide records (wide.h).
 inline constexpr double kFastRangePx = 32768.0;
 
-/// Attribute floats of a record, in this order, only those its call needs:
-///   colour: 3 x RGBA (mode.varying_color), or 1 x RGBA
-///   depth: 3 x z/w                         (mode.depth)
-///   inv_w: 3 x 1/w                         (mode.depth && mode.smooth)
-///   normal: 3 x xyz                        (mode.light_per_pixel)
-///   uv: 3 x (u, v)                         (mode.textured)
-///   position: 3 x xyz                      (mode.position_per_pixel)
-struct AttributeLayout {
-  int color = 0, depth = -1, inv_w = -1, normal = -1, uv = -1, position = -1, size = 0;
-  static AttributeLayout of(const PrimitivePlan& mode);
-};
-
 /// What a record is drawn with: the plan's decisions for its primitive plus the constants shading needs.
 struct DrawCall {
-  PrimitivePlan mode;
-  AttributeLayout layout;  ///< what its records' attributes hold (set by Setup::add_call from the mode)
+  PrimitivePlan mode;  ///< mode.varyings: what its records' attribute floats hold, and where
   /// 3D lighting: the view's lights (ViewPlan::lights, which outlives the render).
   std::span<const LightPlan> lights;
   /// Textured modes: the texture its triangles sample (in Setup::textures), or nullptr for faces without one.
@@ -53,16 +40,12 @@ inline DrawCall make_call(const PrimitivePlan& mode) {
   return call;
 }
 
-/// The three vertices of a triangle, snapped, in either winding; colours (0..255 straight RGBA) per vertex.
-/// 3D triangles also carry what the shading interpolates.
+/// A vertex of a triangle, snapped, with the values its call's varyings (PrimitivePlan::varyings) give it.
 struct SetupVertex {
-  double x = 0, y = 0;     ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
-  float color[4] = {};     ///< straight RGBA, 0..255 (3D flat lighting already applied)
-  float depth = 0;         ///< 3D: z / w in [0, 1], 1 at the near plane (reversed)
-  float inv_w = 1;         ///< 3D: 1 / w, for perspective-correct interpolation
-  float normal[3] = {};    ///< 3D per-pixel lighting: world-space unit normal
-  float uv[2] = {};        ///< 3D textured: texture coordinates (scene.h: Mesh::uvs)
-  float position[3] = {};  ///< 3D lit by a point light per pixel: world position
+  double x = 0, y = 0;  ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
+  float values[Varyings::kMaxFloats] = {};  ///< at Varyings::vertex_offset, rows in Varying order
+
+  float* at(const Varyings& v, Varying name) { return values + v.vertex_offset[static_cast<int>(name)]; }
 };
 
 /// Edge functions of one triangle on the 1/256 px grid, in the triangle's own integer type T (int64 for the
@@ -86,7 +69,7 @@ struct TriangleRecord {
   EdgeFunctions<std::int64_t> edges;  ///< the edges, when in the fast range (kept here: one fetch per record)
   Rect box;                           ///< pixels whose sample point may be covered, clipped to the image
   std::uint32_t call = 0;             ///< index into Setup::calls
-  std::uint32_t attributes = 0;  ///< index into Setup::attributes of this record's first float (see below)
+  std::uint32_t attributes = 0;  ///< index into its part's attributes of this record's first float (Varyings)
   std::uint32_t wide = kFast;    ///< kFast, or the index of its edges in Setup::wide_edges
   bool back_facing = false;      ///< 3D: seen from behind (per-pixel lighting flips the normal)
 };
@@ -140,7 +123,7 @@ struct Setup {
   /// The part records are appended to (a new one when there is none).
   Records& last_part() { return parts.empty() ? parts.emplace_back() : parts.back(); }
   /// Sets up a triangle from three snapped vertices into `part`; degenerate ones and ones that miss the
-  /// image are not added. Colours only (2D) or every attribute of `call`'s layout (3D). Reads only the
+  /// image are not added. Its attributes are the vertices' values of `call`'s varyings. Reads only the
   /// setup's calls and image: threads may fill different parts at once.
   void add_triangle(Records& part, std::uint32_t call, const SetupVertex (&v)[3],
                     bool back_facing = false) const;
@@ -152,7 +135,7 @@ struct Setup {
   /// caller appends it with its attributes in that order (as add_triangle does).
   bool fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3]) const;
   /// Appends `r` (from fast_record, or with its edges and box set) to `part` with the attributes of `call`'s
-  /// layout taken from `v`, already in the record's vertex order.
+  /// varyings taken from `v`, already in the record's vertex order.
   void append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
               bool back_facing) const;
   /// Adds a 1-px line record (its box is computed here).

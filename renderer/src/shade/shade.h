@@ -37,22 +37,25 @@ class TriangleShader {
         flip_(record.back_facing ? -1.0 : 1.0),
         union_(call.mode.union_coverage && surface.coverage_mode == Coverage::area),
         msaa_(surface.coverage_mode == Coverage::samples) {
-    const AttributeLayout& layout = call.layout;
-    depth_at_ = layout.depth >= 0 ? attr_ + layout.depth : nullptr;
-    inv_w_at_ = layout.inv_w >= 0 ? attr_ + layout.inv_w : nullptr;
-    normal_at_ = layout.normal >= 0 ? attr_ + layout.normal : nullptr;
-    position_at_ = layout.position >= 0 ? attr_ + layout.position : nullptr;
-    if (layout.uv >= 0 && call.texture) {
-      uv_at_ = attr_ + layout.uv;
+    const Varyings& with = call.mode.varyings;
+    for (int i = 0; i < kVaryingCount; ++i)
+      if (with.vertex_offset[i] >= 0)
+        for (int k = 0; k < 3; ++k) at_[i][k] = attr_ + with.record_at(static_cast<Varying>(i), k);
+    if (!call.texture) at_[static_cast<int>(Varying::uv)][0] = nullptr;  // faces without a texture
+    if (at(Varying::uv))
       for (int k = 0; k < 3; ++k) dl_dx_[k] = step_x[k] / area, dl_dy_[k] = step_y[k] / area;
-    }
-    flat_ = {to_byte(attr_[0]), to_byte(attr_[1]), to_byte(attr_[2]), to_byte(attr_[3])};
-    kind_ = depth_at_ ? Kind::perspective : mode_.varying_color ? Kind::smooth : Kind::flat;
-    if (msaa_ && depth_at_) {
+    const float* c = at(Varying::color);
+    flat_ = {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
+    const float* depth = at(Varying::depth);
+    if (depth)
+      depth_[0] = depth[0], depth_[1] = at(Varying::depth, 1)[0], depth_[2] = at(Varying::depth, 2)[0];
+
+    kind_ = depth ? Kind::perspective : mode_.smooth ? Kind::smooth : Kind::flat;
+    if (msaa_ && depth) {
       // Depth is affine in screen space: each sample's z is the centre's plus a constant per sample.
       double dz_dx = 0, dz_dy = 0;
       for (int k = 0; k < 3; ++k)
-        dz_dx += step_x[k] * depth_at_[k] / area, dz_dy += step_y[k] * depth_at_[k] / area;
+        dz_dx += step_x[k] * depth_[k] / area, dz_dy += step_y[k] * depth_[k] / area;
       for (int s = 0; s < surface.sample_count; ++s)
         z_offset_[s] = static_cast<float>(dz_dx * (surface.pattern[s].x - 128) / 256.0 +
                                           dz_dy * (surface.pattern[s].y - 128) / 256.0);
@@ -194,7 +197,7 @@ class TriangleShader {
     const int n = surface_.sample_count;
     const unsigned all = (1u << n) - 1;
     const double inv_area = 1.0 / b.area;
-    const float* z = depth_at_;
+    const float* z = depth_;
     std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
     for (std::uint64_t m = b.mask; m; m &= m - 1) {
       const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
@@ -277,7 +280,7 @@ class TriangleShader {
   // colour and, when lit per pixel, the interpolated normal's Lambert term.
   void shade_depth(const Block& b) const {
     const double inv_area = 1.0 / b.area;
-    const float* z = depth_at_;
+    const float* z = depth_;
     for (int r = 0; r < kBlock; ++r) {
       unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
       if (!bits) continue;
@@ -305,25 +308,24 @@ class TriangleShader {
   Rgba8 smooth_color(const double (&l)[3]) const {
     // perspective-correct weights: interpolate attribute / w and 1 / w, then divide
     double q[3], sum = 0;
-    for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * inv_w_at_[k];
+    for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * *at(Varying::inv_w, k);
     for (double& qk : q) qk /= sum;
     double rgba[4];
-    if (mode_.varying_color)
-      for (int c = 0; c < 4; ++c) rgba[c] = q[0] * attr_[c] + q[1] * attr_[4 + c] + q[2] * attr_[8 + c];
+    const float* const(&color)[3] = at_[static_cast<int>(Varying::color)];
+    if (mode_.varyings.how(Varying::color) != Interpolation::flat)
+      for (int c = 0; c < 4; ++c) rgba[c] = q[0] * color[0][c] + q[1] * color[1][c] + q[2] * color[2][c];
     else
-      for (int c = 0; c < 4; ++c) rgba[c] = attr_[c];
-    if (uv_at_) texture(l, sum, rgba);
-    if (normal_at_) {
-      const float* n = normal_at_;
+      for (int c = 0; c < 4; ++c) rgba[c] = color[0][c];
+    if (at(Varying::uv)) texture(l, sum, rgba);
+    if (const float* const(&n)[3] = at_[static_cast<int>(Varying::normal)]; n[0]) {
       double nrm[3], p[3] = {0, 0, 0}, shade[3];
-      for (int c = 0; c < 3; ++c) nrm[c] = q[0] * n[c] + q[1] * n[3 + c] + q[2] * n[6 + c];
+      for (int c = 0; c < 3; ++c) nrm[c] = q[0] * n[0][c] + q[1] * n[1][c] + q[2] * n[2][c];
       const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
       // A degenerate interpolated normal (opposite vertex normals cancelling) gets the ambient light only.
       const double scale = len > 0 ? flip_ / len : 0;
       for (double& c : nrm) c *= scale;
-      if (position_at_)
-        for (int c = 0; c < 3; ++c)
-          p[c] = q[0] * position_at_[c] + q[1] * position_at_[3 + c] + q[2] * position_at_[6 + c];
+      if (const float* const(&at)[3] = at_[static_cast<int>(Varying::position)]; at[0])
+        for (int c = 0; c < 3; ++c) p[c] = q[0] * at[0][c] + q[1] * at[1][c] + q[2] * at[2][c];
       light_at(call_.lights, nrm, p, shade);
       for (int c = 0; c < 3; ++c) rgba[c] *= shade[c];
     }
@@ -333,10 +335,10 @@ class TriangleShader {
   // Multiplies `rgba` by the texture at the perspective-correct coordinates of barycentrics `l` (sum: their
   // 1/w-weighted sum). The level of detail comes from the exact screen derivatives of u / w over 1 / w.
   void texture(const double (&l)[3], double sum, double (&rgba)[4]) const {
-    const float* uv = uv_at_;
+    const float* const(&uv)[3] = at_[static_cast<int>(Varying::uv)];
     double u = 0, v = 0, su_x = 0, sv_x = 0, su_y = 0, sv_y = 0, s_x = 0, s_y = 0;
     for (int k = 0; k < 3; ++k) {
-      const double w = inv_w_at_[k], wu = w * uv[2 * k], wv = w * uv[2 * k + 1];
+      const double w = *at(Varying::inv_w, k), wu = w * uv[k][0], wv = w * uv[k][1];
       u += l[k] * wu, v += l[k] * wv;
       su_x += dl_dx_[k] * wu, sv_x += dl_dx_[k] * wv, s_x += dl_dx_[k] * w;
       su_y += dl_dy_[k] * wu, sv_y += dl_dy_[k] * wv, s_y += dl_dy_[k] * w;
@@ -360,11 +362,11 @@ class TriangleShader {
   const bool union_;   // area coverage of a multi-triangle primitive: accumulated, composited at its end
   const bool msaa_;    // multisampling: samples() and whole() keep the pixels' samples
   float z_offset_[16] = {};  // 3D multisampling: each sample's depth minus the pixel centre's
-  const float* depth_at_ = nullptr;
-  const float* inv_w_at_ = nullptr;
-  const float* normal_at_ = nullptr;
-  const float* position_at_ = nullptr;    // lit by a point light per pixel: 3 x world xyz
-  const float* uv_at_ = nullptr;          // textured calls with a texture: 3 x (u, v)
+  // Vertex k's value of each varying in the record (mode.varyings), or nullptr when it has none (uv: also
+  // for faces without a texture).
+  const float* at_[kVaryingCount][3] = {};
+  const float* at(Varying v, int k = 0) const { return at_[static_cast<int>(v)][k]; }
+  float depth_[3] = {};                   // 3D: each vertex's z / w
   double dl_dx_[3] = {}, dl_dy_[3] = {};  // textured: barycentric change per pixel right and down
   Rgba8 flat_;
   // flat: one colour; smooth: 2D per-vertex colours in screen space; perspective: the 3D path (depth-tested,
