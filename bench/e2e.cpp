@@ -248,8 +248,9 @@ int main(int argc, char** argv) {
         "A warm `rasterd serve` (render threads: every core) answering POST /render with the model "
         "as the raw body, medians of %d requests of its Server-Timing (after four not counted); "
         "*tinyobjloader* is its `ParseFromString` on the same text in this process (triangulating, "
-        "as rasterd asks it to); *llvmpipe* draws the same mesh at %d threads (depth test, one "
-        "light; the service's default scene lights a model with three). Targets: parse ≤ 1.3× "
+        "as rasterd asks it to); *llvmpipe* draws the same mesh at %d threads (depth test, the "
+        "service's default lights evaluated per pixel in a fragment shader, as rasterd does). Targets: parse "
+        "≤ 1.3× "
         "tinyobjloader, raster ≥ 1.5× llvmpipe (sphere) and ≥ 2× (bunny), the request ≤ 1× "
         "tinyobjloader + llvmpipe.\n\n",
         std::max(5, runs), cores);

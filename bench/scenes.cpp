@@ -188,9 +188,8 @@ raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path)
     throw std::invalid_argument("unknown mesh scene: " + kind);
   }
   mesh.shading = raster::Shading::smooth;
-  // One headlight plus ambient: what the llvmpipe peer draws with its one GL light (the default rig has
-  // three).
-  s.lights = raster::single_light(0.2, nullptr);
+  // No lights named: rasterd's default rig (ambient and two directional lights), lit per pixel, as a
+  // model sent to the service is; the llvmpipe peer takes the same lights from the plan.
   s.meshes.push_back(std::move(mesh));
   raster::Primitive p;
   p.kind = raster::PrimitiveKind::mesh;

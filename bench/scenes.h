@@ -38,7 +38,8 @@ namespace bench {
 /// 3D benchmark scenes: "sphere" (a UV sphere of 2 x 548 x 548 = 600,608 triangles built in code, smooth-lit
 /// with computed normals, 1024x1024) and "bunny" (the Stanford bunny from $RASTERD_BUNNY, else `bunny_path`,
 /// smooth-lit, 512x512).
-/// Camera and light are the defaults (auto-framed, headlight). Throws if the bunny file cannot be read.
+/// Camera and lights are the defaults (auto-framed; ambient, key and fill). Throws if the bunny file cannot
+/// be read.
 raster::Scene mesh_scene(const std::string& kind,
                          const std::string& bunny_path = "../shared/models/bunny.obj");
 
