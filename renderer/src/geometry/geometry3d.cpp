@@ -270,9 +270,9 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
       !with.has(Varying::normal)) {  // flat: once per face, lit from the side seen, at its centroid
     const Vec3 n = normalize(back ? face * -1.0 : face);
     const Vec3 c = (world[tri[0]] + world[tri[1]] + world[tri[2]]) * (1.0 / 3);
-    double lit[3];
-    light_at(view.plan.view.lights, {n.x, n.y, n.z}, {c.x, c.y, c.z}, lit);
-    for (int k = 0; k < 3; ++k) shade[k] = static_cast<float>(lit[k]);
+    const float normal[3] = {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
+    const float centre[3] = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+    light_lanes<3>(setup.calls[call].lights, normal, centre, shade);
   }
   std::uint32_t triangle_call = call;
   if (with.has(Varying::uv)) {
@@ -369,7 +369,7 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
     if (meter.stopped()) return;
   }
   DrawCall call = make_call(mode);
-  call.lights = camera.lights;
+  if (mode.lit) call.lights = LightRig::of(camera.lights);
   job.call = setup.add_call(call);
   // Textured: one call per texture, the same mode; faces without a texture keep `job.call` (no texture).
   if (mode.varyings.has(Varying::uv))

@@ -15,6 +15,7 @@
 #include "base/wide.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
+#include "shade/light.h"
 #include "shade/texture.h"
 
 namespace raster::detail {
@@ -27,8 +28,8 @@ inline constexpr double kFastRangePx = 32768.0;
 /// What a record is drawn with: the plan's decisions for its primitive plus the constants shading needs.
 struct DrawCall {
   PrimitivePlan mode;  ///< mode.varyings: what its records' attribute floats hold, and where
-  /// 3D lighting: the view's lights (ViewPlan::lights, which outlives the render).
-  std::span<const LightPlan> lights;
+  /// 3D lighting: the view's lights (ViewPlan::lights) as shading reads them.
+  LightRig lights;
   /// Textured modes: the texture its triangles sample (in Setup::textures), or nullptr for faces without one.
   const MipChain* texture = nullptr;
 };

@@ -16,7 +16,8 @@
 #include "raster/scene.h"
 #include "setup/setup.h"
 #include "shade/fill.h"
-#include "shade/light.h"
+#include "shade/lanes.h"
+#include "shade/perspective.h"
 #include "shade/pixel.h"
 
 namespace raster::detail {
@@ -30,28 +31,38 @@ class TriangleShader {
   /// `area` its doubled area, as doubles (exact for the fast range).
   TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
                  const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
-      : call_(call),
-        mode_(call.mode),
+      : mode_(call.mode),
         attr_(attributes),
         surface_(surface),
-        flip_(record.back_facing ? -1.0 : 1.0),
         union_(call.mode.union_coverage && surface.coverage_mode == Coverage::area),
         msaa_(surface.coverage_mode == Coverage::samples) {
+    // Vertex k's value of each varying in the record, or nullptr when it has none.
     const Varyings& with = call.mode.varyings;
+    const float* at[kVaryingCount][3] = {};
     for (int i = 0; i < kVaryingCount; ++i)
       if (with.vertex_offset[i] >= 0)
-        for (int k = 0; k < 3; ++k) at_[i][k] = attr_ + with.record_at(static_cast<Varying>(i), k);
-    if (!call.texture) at_[static_cast<int>(Varying::uv)][0] = nullptr;  // faces without a texture
-    if (at(Varying::uv))
-      for (int k = 0; k < 3; ++k) dl_dx_[k] = step_x[k] / area, dl_dy_[k] = step_y[k] / area;
-    const float* c = at(Varying::color);
+        for (int k = 0; k < 3; ++k) at[i][k] = attr_ + with.record_at(static_cast<Varying>(i), k);
+    const float* c = at[static_cast<int>(Varying::color)][0];
     flat_ = {to_byte(c[0]), to_byte(c[1]), to_byte(c[2]), to_byte(c[3])};
-    const float* depth = at(Varying::depth);
-    if (depth)
-      depth_[0] = depth[0], depth_[1] = at(Varying::depth, 1)[0], depth_[2] = at(Varying::depth, 2)[0];
+    const float* const* depth = at[static_cast<int>(Varying::depth)];
+    if (depth[0]) depth_[0] = *depth[0], depth_[1] = *depth[1], depth_[2] = *depth[2];
+    if (depth[0]) {
+      // The planes' steps per pixel right and down: depth (doubles), the barycentrics (floats), and the
+      // first a block row's eight columns.
+      double dl_dx[3], dl_dy[3], dz_dx = 0;
+      for (int k = 0; k < 3; ++k) {
+        dl_dx[k] = step_x[k] / area, dl_dy[k] = step_y[k] / area;
+        dz_dx += dl_dx[k] * depth_[k], dz_dy_ += dl_dy[k] * depth_[k];
+        dl_dy_[k] = static_cast<float>(dl_dy[k]);
+        for (int i = 0; i < kLanes; ++i)
+          l_columns_[k][i] = static_cast<float>(i) * static_cast<float>(dl_dx[k]);
+      }
+      for (int i = 0; i < kLanes; ++i) z_columns_[i / 4][i % 4] = i * dz_dx;
+      if (mode_.smooth) color_ = PerspectiveColor(call, at, record.back_facing ? -1.0f : 1.0f, dl_dx, dl_dy);
+    }
 
-    kind_ = depth ? Kind::perspective : mode_.smooth ? Kind::smooth : Kind::flat;
-    if (msaa_ && depth) {
+    kind_ = depth[0] ? Kind::perspective : mode_.smooth ? Kind::smooth : Kind::flat;
+    if (msaa_ && depth[0]) {
       // Depth is affine in screen space: each sample's z is the centre's plus a constant per sample.
       double dz_dx = 0, dz_dy = 0;
       for (int k = 0; k < 3; ++k)
@@ -276,98 +287,98 @@ class TriangleShader {
     }
   }
 
-  // 3D: depth test (reversed: larger is nearer; ties keep what was drawn first), then perspective-correct
-  // colour and, when lit per pixel, the interpolated normal's Lambert term.
+  // 3D: depth test (reversed: larger is nearer; ties keep what was drawn first), then the colour of the
+  // pixels that pass, eight at a time (a block row): on the plan's instruction set, the same bytes on each.
   void shade_depth(const Block& b) const {
+#if defined(__x86_64__)
+    if (surface_.simd == Simd::avx2) return shade_depth_avx2(b);
+#endif
+    shade_depth_lanes(b);
+  }
+#if defined(__x86_64__)
+  __attribute__((target("avx2"))) void shade_depth_avx2(const Block& b) const {
+    shade_depth_lanes(b);
+  }
+#endif
+
+  [[gnu::always_inline]] inline void shade_depth_lanes(const Block& b) const {
+    // The values at the block's first pixel, from its exact edge values, then steps across the block: depth
+    // in doubles (rounded once, to the float the depth buffer holds), the barycentrics in floats. A pixel's
+    // values depend on its block only, never on the tile or on whether the walker or rect() reached it.
     const double inv_area = 1.0 / b.area;
-    const float* z = depth_;
+    double z0 = 0;
+    float l0[3];
+    for (int k = 0; k < 3; ++k) {
+      const double l = b.e[k] * inv_area;
+      z0 += l * depth_[k];
+      l0[k] = static_cast<float>(l);
+    }
     for (int r = 0; r < kBlock; ++r) {
-      unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
       if (!bits) continue;
-      const std::size_t row = surface_.index(b.x0, b.y0 + r);
-      for (; bits; bits &= bits - 1) {
-        const int i = std::countr_zero(bits);
-        // screen-space barycentrics; depth (z / w) is affine in screen space
-        const double l[3] = {(b.e[0] + i * b.dx[0] + r * b.dy[0]) * inv_area,
-                             (b.e[1] + i * b.dx[1] + r * b.dy[1]) * inv_area,
-                             (b.e[2] + i * b.dx[2] + r * b.dy[2]) * inv_area};
-        const float depth = static_cast<float>(l[0] * z[0] + l[1] * z[1] + l[2] * z[2]);
-        float& stored = surface_.depth[row + i];
-        if (!(depth > stored)) continue;
-        stored = depth;
-        std::uint8_t* p = surface_.color + (row + i) * C;
-        if (!mode_.smooth) {
-          put<C>(p, flat_, mode_.blend);
-          continue;
-        }
-        put<C>(p, smooth_color(l), mode_.blend);
+      const double z_row = z0 + r * dz_dy_;
+      const FloatHalf left = __builtin_convertvector(z_row + z_columns_[0], FloatHalf);
+      const FloatHalf right = __builtin_convertvector(z_row + z_columns_[1], FloatHalf);
+      const FloatLanes depth = __builtin_shufflevector(left, right, 0, 1, 2, 3, 4, 5, 6, 7);
+      const std::size_t at = surface_.index(b.x0, b.y0 + r);
+      float* stored = surface_.depth + at;
+      FloatLanes old;
+      std::memcpy(&old, stored, sizeof old);
+      const IntLanes nearer = (depth > old) & ((kLaneBit & static_cast<std::int32_t>(bits)) != 0);
+      const unsigned pass = lane_bits(nearer);
+      if (!pass) continue;
+      const FloatLanes kept = nearer ? depth : old;
+      std::memcpy(stored, &kept, sizeof kept);
+      std::uint8_t* p = surface_.color + at * C;
+      if (!mode_.smooth) {
+        for (unsigned m = pass; m; m &= m - 1) put<C>(p + std::countr_zero(m) * C, flat_, mode_.blend);
+        continue;
+      }
+      FloatLanes l[3], rgba[4] = {};
+      for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
+      color_.shade<kColours>(l, pass, rgba);
+      for (FloatLanes& v : rgba) byte_lanes(v);
+      for (unsigned m = pass; m; m &= m - 1) {
+        const int i = std::countr_zero(m);
+        put<C>(p + i * C, pixel_color(rgba, i), mode_.blend);
       }
     }
   }
 
+  // The colour at barycentrics `l` (one pixel: the multisampled path), by the code the lanes run.
   Rgba8 smooth_color(const double (&l)[3]) const {
-    // perspective-correct weights: interpolate attribute / w and 1 / w, then divide
-    double q[3], sum = 0;
-    for (int k = 0; k < 3; ++k) sum += q[k] = l[k] * *at(Varying::inv_w, k);
-    for (double& qk : q) qk /= sum;
-    double rgba[4];
-    const float* const(&color)[3] = at_[static_cast<int>(Varying::color)];
-    if (mode_.varyings.how(Varying::color) != Interpolation::flat)
-      for (int c = 0; c < 4; ++c) rgba[c] = q[0] * color[0][c] + q[1] * color[1][c] + q[2] * color[2][c];
+    const float lf[3] = {static_cast<float>(l[0]), static_cast<float>(l[1]), static_cast<float>(l[2])};
+    float rgba[4] = {};
+    color_.shade<kColours>(lf, 1, rgba);
+    for (float& v : rgba) byte_lanes(v);
+    return pixel_color(rgba, 0);
+  }
+
+  // Lane i of byte_lanes's channels as a colour; grey images compute one channel (their lights are grey).
+  template <class F>
+  static Rgba8 pixel_color(const F (&rgba)[4], int i) {
+    const std::uint8_t r = lane_byte(rgba[0], i), a = lane_byte(rgba[3], i);
+    if constexpr (kColours == 1)
+      return {r, r, r, a};
     else
-      for (int c = 0; c < 4; ++c) rgba[c] = color[0][c];
-    if (at(Varying::uv)) texture(l, sum, rgba);
-    if (const float* const(&n)[3] = at_[static_cast<int>(Varying::normal)]; n[0]) {
-      double nrm[3], p[3] = {0, 0, 0}, shade[3];
-      for (int c = 0; c < 3; ++c) nrm[c] = q[0] * n[0][c] + q[1] * n[1][c] + q[2] * n[2][c];
-      const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-      // A degenerate interpolated normal (opposite vertex normals cancelling) gets the ambient light only.
-      const double scale = len > 0 ? flip_ / len : 0;
-      for (double& c : nrm) c *= scale;
-      if (const float* const(&at)[3] = at_[static_cast<int>(Varying::position)]; at[0])
-        for (int c = 0; c < 3; ++c) p[c] = q[0] * at[0][c] + q[1] * at[1][c] + q[2] * at[2][c];
-      light_at(call_.lights, nrm, p, shade);
-      for (int c = 0; c < 3; ++c) rgba[c] *= shade[c];
-    }
-    return {to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]), to_byte(rgba[3])};
+      return {r, lane_byte(rgba[1], i), lane_byte(rgba[2], i), a};
   }
+  static constexpr int kColours = C >= 3 ? 3 : 1;
 
-  // Multiplies `rgba` by the texture at the perspective-correct coordinates of barycentrics `l` (sum: their
-  // 1/w-weighted sum). The level of detail comes from the exact screen derivatives of u / w over 1 / w.
-  void texture(const double (&l)[3], double sum, double (&rgba)[4]) const {
-    const float* const(&uv)[3] = at_[static_cast<int>(Varying::uv)];
-    double u = 0, v = 0, su_x = 0, sv_x = 0, su_y = 0, sv_y = 0, s_x = 0, s_y = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double w = *at(Varying::inv_w, k), wu = w * uv[k][0], wv = w * uv[k][1];
-      u += l[k] * wu, v += l[k] * wv;
-      su_x += dl_dx_[k] * wu, sv_x += dl_dx_[k] * wv, s_x += dl_dx_[k] * w;
-      su_y += dl_dy_[k] * wu, sv_y += dl_dy_[k] * wv, s_y += dl_dy_[k] * w;
-    }
-    u /= sum, v /= sum;
-    const MipChain& tex = *call_.texture;
-    const double sx = tex.texture->scale[0], sy = tex.texture->scale[1];
-    const double lod =
-        mip_lod((su_x - u * s_x) / sum * sx, (sv_x - v * s_x) / sum * sy, (su_y - u * s_y) / sum * sx,
-                (sv_y - v * s_y) / sum * sy, tex.levels[0].width, tex.levels[0].height);
-    float texel[4];
-    tex.sample(u, v, lod, texel);
-    for (int c = 0; c < 4; ++c) rgba[c] *= texel[c];
-  }
-
-  const DrawCall& call_;
   const PrimitivePlan mode_;
   const float* attr_;
   const Surface& surface_;
-  const double flip_;  // two-sided lighting: a back face is lit from the side seen
-  const bool union_;   // area coverage of a multi-triangle primitive: accumulated, composited at its end
-  const bool msaa_;    // multisampling: samples() and whole() keep the pixels' samples
+  const bool union_;  // area coverage of a multi-triangle primitive: accumulated, composited at its end
+  const bool msaa_;   // multisampling: samples() and whole() keep the pixels' samples
   float z_offset_[16] = {};  // 3D multisampling: each sample's depth minus the pixel centre's
-  // Vertex k's value of each varying in the record (mode.varyings), or nullptr when it has none (uv: also
-  // for faces without a texture).
-  const float* at_[kVaryingCount][3] = {};
-  const float* at(Varying v, int k = 0) const { return at_[static_cast<int>(v)][k]; }
-  float depth_[3] = {};                   // 3D: each vertex's z / w
-  double dl_dx_[3] = {}, dl_dy_[3] = {};  // textured: barycentric change per pixel right and down
+  float depth_[3] = {};      // 3D: each vertex's z / w
+  // 3D aliased blocks: depth's change per pixel down and at each column of a block row (in two halves of
+  // four), and the barycentrics' change per pixel down and at each column.
+  double dz_dy_ = 0;
+  DoubleHalf z_columns_[2] = {};
+  float dl_dy_[3] = {};
+  FloatLanes l_columns_[3] = {};
+  PerspectiveColor color_;  // 3D smooth: what the pixels' colours are computed from
   Rgba8 flat_;
   // flat: one colour; smooth: 2D per-vertex colours in screen space; perspective: the 3D path (depth-tested,
   // attributes interpolated perspective-correct, lit, textured)
