@@ -361,8 +361,9 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   if (mode.varyings.has(Varying::normal)) {
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
     if (mode.compute_normals)
-      job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
-                                   mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1, meter);
+      job.normals =
+          vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
+                         mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1, view.plan.simd, meter);
     else
       for (const Vec3& n : mesh.normals)
         job.normals.push_back(normalize(transform_point(to_world_normal, n)));

@@ -2,31 +2,145 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "base/parallel.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace raster::detail {
 namespace {
+
+// Four triangles at a time, in doubles: the same operations, in the same order, as one triangle at a time
+// would take (vecmath.h's dot, cross, length, normalize), so every lane width gives the same bits.
+constexpr int kTriangles = 4;
+using Lanes = double __attribute__((vector_size(8 * kTriangles)));
+
+// sqrt in each lane, exactly rounded (two SSE2 square roots; AVX2 code splits one of four lanes anyway).
+// In place: a function compiled without AVX cannot return 32 bytes of lanes the way AVX code would.
+[[gnu::always_inline]] inline void square_root(Lanes& x) {
+#if defined(__SSE2__)
+  using Pair = double __attribute__((vector_size(16)));
+  const Pair lo = _mm_sqrt_pd(__builtin_shufflevector(x, x, 0, 1));
+  const Pair hi = _mm_sqrt_pd(__builtin_shufflevector(x, x, 2, 3));
+  x = __builtin_shufflevector(lo, hi, 0, 1, 2, 3);
+#else
+  for (int i = 0; i < kTriangles; ++i) x[i] = std::sqrt(x[i]);
+#endif
+}
 
 // acos to within 2e-8 rad (Abramowitz & Stegun 4.4.46), a square root and a polynomial: three per triangle
 // were the costliest part of computing a model's normals (libm's acos), and an error this small is below
 // what the float normals the records carry can hold (6e-8 relative).
-double arc_cosine(double x) {
-  const double a = std::fabs(x);
-  const double p =
+[[gnu::always_inline]] inline void arc_cosine(Lanes& x) {
+  const Lanes a = x < 0 ? -x : x;
+  const Lanes p =
       1.5707963050 +
       a * (-0.2145988016 +
            a * (0.0889789874 +
                 a * (-0.0501743046 +
                      a * (0.0308918810 + a * (-0.0170881256 + a * (0.0066700901 + a * -0.0012624911))))));
-  const double r = std::sqrt(1 - a) * p;
-  return x < 0 ? std::numbers::pi - r : r;
+  Lanes r = 1 - a;
+  square_root(r);
+  r *= p;
+  x = x < 0 ? std::numbers::pi - r : r;
 }
+
+// vecmath.h's "n > 0 && isfinite(n)" in lanes is 0 < n < infinity (NaN is neither).
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Per triangle of a batch: its unit face normal and the angle at each corner.
+struct Corners {
+  Lanes face[3];   // x, y, z
+  Lanes angle[3];  // at vertex k
+};
+
+// Triangles `t[0..kTriangles)` (positions p[corner][axis][lane]) -> their face normals and corner angles.
+[[gnu::always_inline]] inline void measure(const Lanes (&p)[3][3], Corners& out) {
+  // Edge k runs from vertex k to the next.
+  Lanes edge[3][3];
+  for (int k = 0; k < 3; ++k)
+    for (int d = 0; d < 3; ++d) edge[k][d] = p[(k + 1) % 3][d] - p[k][d];
+  const Lanes* u = edge[0];  // p1 - p0
+  Lanes v[3];                // p2 - p0
+  for (int d = 0; d < 3; ++d) v[d] = p[2][d] - p[0][d];
+  const Lanes face[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  Lanes n = face[0] * face[0] + face[1] * face[1] + face[2] * face[2];
+  square_root(n);
+  const Lanes scale = 1.0 / n;
+  for (int d = 0; d < 3; ++d) out.face[d] = ((n > 0) & (n < kInfinity)) ? face[d] * scale : Lanes{};
+  // Each length taken once (a zero-length edge: angle pi/2, as for a zero vector's direction).
+  Lanes len[3];
+  for (int k = 0; k < 3; ++k) {
+    len[k] = edge[k][0] * edge[k][0] + edge[k][1] * edge[k][1] + edge[k][2] * edge[k][2];
+    square_root(len[k]);
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int prev = (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
+    const Lanes norms = len[k] * len[prev];
+    const Lanes d = edge[k][0] * edge[prev][0] + edge[k][1] * edge[prev][1] + edge[k][2] * edge[prev][2];
+    Lanes cosine = ((norms > 0) & (norms < kInfinity)) ? -d / norms : Lanes{};
+    cosine = cosine < -1.0 ? Lanes{} - 1.0 : cosine;  // std::clamp's order: below, then above
+    cosine = 1.0 < cosine ? Lanes{} + 1.0 : cosine;
+    arc_cosine(cosine);
+    out.angle[k] = cosine;
+  }
+}
+
+// The normals of vertices [v0, v1): every triangle with a corner there adds its face normal times that
+// corner's angle, in triangle order; batches of kTriangles measure their triangles together.
+[[gnu::always_inline]] inline void accumulate(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v0,
+                                              std::uint32_t v1, PodArray<Vec3>& normals, StopMeter& own) {
+  auto mine = [&](std::uint32_t v) { return v >= v0 && v < v1; };
+  const std::size_t count = mesh.triangles.size();
+  std::size_t batch[kTriangles];
+  for (std::size_t t = 0; t < count;) {
+    if (own.add(StopMeter::kRowWork)) return;  // the caller sees meter.stopped() and draws nothing
+    int n = 0;
+    for (; t < count && n < kTriangles; ++t) {
+      const auto& tri = mesh.triangles[t];
+      if (mine(tri[0]) || mine(tri[1]) || mine(tri[2])) batch[n++] = t;
+    }
+    if (n == 0) continue;
+    Lanes p[3][3] = {};
+    for (int i = 0; i < n; ++i) {
+      const auto& tri = mesh.triangles[batch[i]];
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& q = world[tri[k]];
+        p[k][0][i] = q.x, p[k][1][i] = q.y, p[k][2][i] = q.z;
+      }
+    }
+    Corners c;
+    measure(p, c);
+    for (int i = 0; i < n; ++i) {
+      const auto& tri = mesh.triangles[batch[i]];
+      const Vec3 face{c.face[0][i], c.face[1][i], c.face[2][i]};
+      for (int k = 0; k < 3; ++k)
+        if (mine(tri[k])) normals[tri[k]] = normals[tri[k]] + face * c.angle[k][i];
+    }
+  }
+  for (std::uint32_t v = v0; v < v1; ++v) normals[v] = normalize(normals[v]);
+}
+
+void accumulate_sse2(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v0, std::uint32_t v1,
+                     PodArray<Vec3>& normals, StopMeter& own) {
+  accumulate(mesh, world, v0, v1, normals, own);
+}
+#if defined(__x86_64__)
+__attribute__((target("avx2"))) void accumulate_avx2(const Mesh& mesh, std::span<const Vec3> world,
+                                                     std::uint32_t v0, std::uint32_t v1,
+                                                     PodArray<Vec3>& normals, StopMeter& own) {
+  accumulate(mesh, world, v0, v1, normals, own);
+}
+#endif
 
 }  // namespace
 
-PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, StopMeter& meter) {
+PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, Simd simd,
+                              StopMeter& meter) {
   const std::size_t nv = world.size();
   PodArray<Vec3> normals;
   normals.resize_uninitialized(nv);
@@ -35,28 +149,11 @@ PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int
     const std::uint32_t v0 = static_cast<std::uint32_t>(nv * piece / pieces),
                         v1 = static_cast<std::uint32_t>(nv * (piece + 1) / pieces);
     std::fill(normals.data() + v0, normals.data() + v1, Vec3{});
-    auto mine = [&](std::uint32_t v) { return v >= v0 && v < v1; };
-    for (const auto& t : mesh.triangles) {
-      if (own.add(StopMeter::kRowWork)) return;  // the caller sees meter.stopped() and draws nothing
-      const bool corner[3] = {mine(t[0]), mine(t[1]), mine(t[2])};
-      if (!(corner[0] || corner[1] || corner[2])) continue;
-      const Vec3 p[3] = {world[t[0]], world[t[1]], world[t[2]]};
-      const Vec3 face = normalize(cross(p[1] - p[0], p[2] - p[0]));
-      // Edge k runs from vertex k to the next; each length is taken once (a zero-length edge: angle pi/2,
-      // as for a zero vector's direction).
-      const Vec3 edge[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};
-      const double len[3] = {length(edge[0]), length(edge[1]), length(edge[2])};
-      for (int k = 0; k < 3; ++k) {
-        if (!corner[k]) continue;
-        const int prev =
-            (k + 2) % 3;  // the corner at vertex k is between edge k and the reversed edge before it
-        const double norms = len[k] * len[prev];
-        const double cosine = norms > 0 && std::isfinite(norms) ? -dot(edge[k], edge[prev]) / norms : 0.0;
-        const double angle = arc_cosine(std::clamp(cosine, -1.0, 1.0));
-        normals[t[k]] = normals[t[k]] + face * angle;
-      }
-    }
-    for (std::uint32_t v = v0; v < v1; ++v) normals[v] = normalize(normals[v]);
+#if defined(__x86_64__)
+    if (simd == Simd::avx2) return accumulate_avx2(mesh, world, v0, v1, normals, own);
+#endif
+    (void)simd;
+    accumulate_sse2(mesh, world, v0, v1, normals, own);
   });
   meter.check();
   return normals;

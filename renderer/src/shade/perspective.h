@@ -28,25 +28,25 @@ class PerspectiveColor {
   PerspectiveColor(const DrawCall& call, const float* const (&at)[kVaryingCount][3], float flip,
                    const double (&dl_dx)[3], const double (&dl_dy)[3])
       : rig_(&call.lights), flip_(flip) {
+    // Pointers into the record, not copies: a dense mesh's record covers a pixel or two, so what is set up
+    // per record must cost less than a pixel's shading; the lanes broadcast from the record as cheaply.
     auto row = [&](Varying v) { return at[static_cast<int>(v)]; };
     for (int k = 0; k < 3; ++k) {
-      inv_w_[k] = row(Varying::inv_w)[k][0];
-      std::copy_n(row(Varying::color)[k], 4, color_[k]);
+      inv_w_[k] = row(Varying::inv_w)[k];
+      color_[k] = row(Varying::color)[k];
+      normal_at_[k] = row(Varying::normal)[k];
+      position_at_[k] = rig_->any_point ? row(Varying::position)[k] : nullptr;
     }
     flat_color_ = call.mode.varyings.how(Varying::color) == Interpolation::flat;
-    if ((normal_ = row(Varying::normal)[0] != nullptr))
-      for (int k = 0; k < 3; ++k) std::copy_n(row(Varying::normal)[k], 3, normal_at_[k]);
-    if ((position_ = normal_ && rig_->any_point && row(Varying::position)[0]))
-      for (int k = 0; k < 3; ++k) std::copy_n(row(Varying::position)[k], 3, position_at_[k]);
     if (const float* const* uv = row(Varying::uv); uv[0] && call.texture) {
       texture_ = call.texture;
       // Screen derivatives of u / w, v / w and 1 / w: constants of the record (exact inputs, in doubles).
       double d[6] = {};
       for (int k = 0; k < 3; ++k) {
-        const double w = inv_w_[k];
+        const double w = *inv_w_[k];
         d[0] += dl_dx[k] * w * uv[k][0], d[1] += dl_dx[k] * w * uv[k][1], d[2] += dl_dx[k] * w;
         d[3] += dl_dy[k] * w * uv[k][0], d[4] += dl_dy[k] * w * uv[k][1], d[5] += dl_dy[k] * w;
-        uv_[k][0] = uv[k][0], uv_[k][1] = uv[k][1];
+        uv_[k] = uv[k];
       }
       for (int i = 0; i < 6; ++i) uv_slopes_[i] = static_cast<float>(d[i]);
     }
@@ -58,7 +58,7 @@ class PerspectiveColor {
   template <int colours, class F>
   [[gnu::always_inline]] inline void shade(const F (&l)[3], unsigned lanes, F (&rgba)[4]) const {
     F q[3];
-    for (int k = 0; k < 3; ++k) q[k] = l[k] * inv_w_[k];
+    for (int k = 0; k < 3; ++k) q[k] = l[k] * *inv_w_[k];
     const F sum = q[0] + q[1] + q[2], inv_sum = 1.0f / sum;
     for (F& qk : q) qk *= inv_sum;
     for (int c : {0, 1, 2, 3}) {
@@ -67,7 +67,7 @@ class PerspectiveColor {
           flat_color_ ? F{} + color_[0][c] : q[0] * color_[0][c] + q[1] * color_[1][c] + q[2] * color_[2][c];
     }
     if (texture_) sample(q, inv_sum, lanes, rgba);
-    if (!normal_) return;
+    if (!normal_at_[0]) return;
     F n[3], p[3] = {}, shade[3];
     for (int c = 0; c < 3; ++c)
       n[c] = q[0] * normal_at_[0][c] + q[1] * normal_at_[1][c] + q[2] * normal_at_[2][c];
@@ -76,7 +76,7 @@ class PerspectiveColor {
     // A degenerate interpolated normal (opposite vertex normals cancelling) gets the ambient light only.
     const F scale = len > 0.0f ? flip_ / len : F{};
     for (F& c : n) c *= scale;
-    if (position_)
+    if (position_at_[0])
       for (int c = 0; c < 3; ++c)
         p[c] = q[0] * position_at_[0][c] + q[1] * position_at_[1][c] + q[2] * position_at_[2][c];
     light_lanes<colours>(*rig_, n, p, shade);
@@ -114,13 +114,14 @@ class PerspectiveColor {
 
   const LightRig* rig_ = nullptr;
   float flip_ = 1;  // two-sided lighting: a back face is lit from the side seen
-  float inv_w_[3] = {};
-  float color_[3][4] = {};  // per vertex (flat: vertex 0's is the face's)
+  // Vertex k's values in the record (flat colour: the face's for every k); nullptr where there are none.
+  const float* inv_w_[3] = {};
+  const float* color_[3] = {};
   bool flat_color_ = true;
-  bool normal_ = false, position_ = false;  // lit per pixel; by a point light too
-  float normal_at_[3][3] = {}, position_at_[3][3] = {};
+  const float* normal_at_[3] = {};     // lit per pixel
+  const float* position_at_[3] = {};   // lit per pixel by a point light
   const MipChain* texture_ = nullptr;  // textured faces with a texture
-  float uv_[3][2] = {};
+  const float* uv_[3] = {};
   float uv_slopes_[6] = {};  // d(u/w)/dx, d(v/w)/dx, d(1/w)/dx, then the same per pixel down
 };
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 
 #include "coverage/coverage.h"
 #include "raster/image.h"
@@ -48,17 +49,17 @@ class TriangleShader {
     if (depth[0]) depth_[0] = *depth[0], depth_[1] = *depth[1], depth_[2] = *depth[2];
     if (depth[0]) {
       // The planes' steps per pixel right and down: depth (doubles), the barycentrics (floats), and the
-      // first a block row's eight columns.
+      // first at a block row's eight columns.
       double dl_dx[3], dl_dy[3], dz_dx = 0;
       for (int k = 0; k < 3; ++k) {
         dl_dx[k] = step_x[k] / area, dl_dy[k] = step_y[k] / area;
         dz_dx += dl_dx[k] * depth_[k], dz_dy_ += dl_dy[k] * depth_[k];
         dl_dy_[k] = static_cast<float>(dl_dy[k]);
-        for (int i = 0; i < kLanes; ++i)
-          l_columns_[k][i] = static_cast<float>(i) * static_cast<float>(dl_dx[k]);
+        l_columns_[k] = kColumns * static_cast<float>(dl_dx[k]);
       }
-      for (int i = 0; i < kLanes; ++i) z_columns_[i / 4][i % 4] = i * dz_dx;
-      if (mode_.smooth) color_ = PerspectiveColor(call, at, record.back_facing ? -1.0f : 1.0f, dl_dx, dl_dy);
+      z_columns_[0] = kLeftColumns * dz_dx, z_columns_[1] = kRightColumns * dz_dx;
+      if (mode_.smooth)
+        std::construct_at(&kernel_.color, call, at, record.back_facing ? -1.0f : 1.0f, dl_dx, dl_dy);
     }
 
     kind_ = depth[0] ? Kind::perspective : mode_.smooth ? Kind::smooth : Kind::flat;
@@ -71,8 +72,9 @@ class TriangleShader {
         z_offset_[s] = static_cast<float>(dz_dx * (surface.pattern[s].x - 128) / 256.0 +
                                           dz_dy * (surface.pattern[s].y - 128) / 256.0);
     }
-    if (kind_ == Kind::flat) fill_ = FlatFill<C>(surface, flat_, mode_.blend);
-    if (kind_ == Kind::smooth) planes_ = ColorPlanes<C>(surface, attr_, step_x, step_y, area, mode_.blend);
+    if (kind_ == Kind::flat) std::construct_at(&kernel_.fill, surface, flat_, mode_.blend);
+    if (kind_ == Kind::smooth)
+      std::construct_at(&kernel_.planes, surface, attr_, step_x, step_y, area, mode_.blend);
   }
 
   /// Every pixel of `clip` is covered; `first` is the block at the clip's block-grid origin (its mask is
@@ -80,7 +82,8 @@ class TriangleShader {
   /// block by block with exactly the values the blocks would have had.
   void rect(Rect clip, const Block& first) {
     if (kind_ == Kind::flat && !mode_.blend && !union_) {
-      for (int y = clip.y0; y < clip.y1; ++y) fill_.run(surface_.pixel<C>(clip.x0, y), clip.x1 - clip.x0);
+      for (int y = clip.y0; y < clip.y1; ++y)
+        kernel_.fill.run(surface_.pixel<C>(clip.x0, y), clip.x1 - clip.x0);
       if (msaa_) {  // every sample of these pixels now holds the colour: one value each again
         for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock)
           for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock)
@@ -91,7 +94,7 @@ class TriangleShader {
       }
       return;
     }
-    if (kind_ == Kind::smooth && !union_ && !msaa_) return planes_.rect(clip, first);
+    if (kind_ == Kind::smooth && !union_ && !msaa_) return kernel_.planes.rect(clip, first);
     Block b = first;
     for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
       const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
@@ -144,9 +147,9 @@ class TriangleShader {
   void shade_aliased(const Block& b) {
     switch (kind_) {
       case Kind::flat:
-        return fill_.block(b);
+        return kernel_.fill.block(b);
       case Kind::smooth:
-        return planes_.block(b);
+        return kernel_.planes.block(b);
       case Kind::perspective:
         return shade_depth(b);
     }
@@ -271,7 +274,7 @@ class TriangleShader {
     double l[3];
     for (int k = 0; k < 3; ++k) l[k] = (b.e[k] + i * b.dx[k] + r * b.dy[k]) / b.area;
     if (covered) shading_point(b, i, r, covered, l);
-    return planes_.at(l);
+    return kernel_.planes.at(l);
   }
 
   // Union coverage: adds share (1 for whole pixels, `shares` for cut ones) and share x colour per pixel.
@@ -336,7 +339,7 @@ class TriangleShader {
       }
       FloatLanes l[3], rgba[4] = {};
       for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
-      color_.shade<kColours>(l, pass, rgba);
+      kernel_.color.template shade<kColours>(l, pass, rgba);
       for (FloatLanes& v : rgba) byte_lanes(v);
       for (unsigned m = pass; m; m &= m - 1) {
         const int i = std::countr_zero(m);
@@ -349,7 +352,7 @@ class TriangleShader {
   Rgba8 smooth_color(const double (&l)[3]) const {
     const float lf[3] = {static_cast<float>(l[0]), static_cast<float>(l[1]), static_cast<float>(l[2])};
     float rgba[4] = {};
-    color_.shade<kColours>(lf, 1, rgba);
+    kernel_.color.template shade<kColours>(lf, 1, rgba);
     for (float& v : rgba) byte_lanes(v);
     return pixel_color(rgba, 0);
   }
@@ -364,27 +367,35 @@ class TriangleShader {
       return {r, lane_byte(rgba[1], i), lane_byte(rgba[2], i), a};
   }
   static constexpr int kColours = C >= 3 ? 3 : 1;
+  static constexpr FloatLanes kColumns = {0, 1, 2, 3, 4, 5, 6, 7};
+  static constexpr DoubleHalf kLeftColumns = {0, 1, 2, 3}, kRightColumns = {4, 5, 6, 7};
 
   const PrimitivePlan mode_;
   const float* attr_;
   const Surface& surface_;
-  const bool union_;  // area coverage of a multi-triangle primitive: accumulated, composited at its end
-  const bool msaa_;   // multisampling: samples() and whole() keep the pixels' samples
-  float z_offset_[16] = {};  // 3D multisampling: each sample's depth minus the pixel centre's
-  float depth_[3] = {};      // 3D: each vertex's z / w
+  const bool union_;     // area coverage of a multi-triangle primitive: accumulated, composited at its end
+  const bool msaa_;      // multisampling: samples() and whole() keep the pixels' samples
+  float z_offset_[16];   // 3D multisampling: each sample's depth minus the pixel centre's
+  float depth_[3] = {};  // 3D: each vertex's z / w
   // 3D aliased blocks: depth's change per pixel down and at each column of a block row (in two halves of
   // four), and the barycentrics' change per pixel down and at each column.
+  // (Set by the constructor where used, not initialised: a dense mesh's record covers a pixel or two, and a
+  // shader is made per record per tile.)
   double dz_dy_ = 0;
-  DoubleHalf z_columns_[2] = {};
-  float dl_dy_[3] = {};
-  FloatLanes l_columns_[3] = {};
-  PerspectiveColor color_;  // 3D smooth: what the pixels' colours are computed from
+  DoubleHalf z_columns_[2];
+  float dl_dy_[3];
+  FloatLanes l_columns_[3];
   Rgba8 flat_;
   // flat: one colour; smooth: 2D per-vertex colours in screen space; perspective: the 3D path (depth-tested,
   // attributes interpolated perspective-correct, lit, textured)
   enum class Kind : std::uint8_t { flat, smooth, perspective } kind_ = Kind::flat;
-  FlatFill<C> fill_;       // Kind::flat
-  ColorPlanes<C> planes_;  // Kind::smooth
+  // The kind's kernel, the one member of this made by the constructor (each is trivially destructible).
+  union Kernel {
+    Kernel() {}
+    FlatFill<C> fill;        // Kind::flat
+    ColorPlanes<C> planes;   // Kind::smooth
+    PerspectiveColor color;  // Kind::perspective, smooth
+  } kernel_;
 };
 
 }  // namespace raster::detail
