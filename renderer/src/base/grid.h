@@ -4,6 +4,7 @@
 // as integral 1/256 px units.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace raster::detail {
@@ -28,6 +29,10 @@ struct SamplePoint {
 
 /// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
 /// whole pixels translates the result exactly.
-double snap(double px);
+inline double snap(double px) {
+  const double units = px * static_cast<double>(kSubpixelScale);  // exact: a power-of-two scale
+  // From 2^52 up every double is already an integer; adding 0.5 there would round to even instead.
+  return std::fabs(units) >= 0x1p52 ? units : std::floor(units + 0.5);
+}
 
 }  // namespace raster::detail

@@ -3,6 +3,7 @@
 // stage recomputes an edge, a bounding box or an attribute's weights.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <span>
@@ -144,6 +145,85 @@ struct Setup {
   /// Records of every part.
   std::size_t record_count() const;
 };
+
+// Inline, with its helpers: geometry makes a record per triangle of a dense mesh, and a call into another
+// file made the triangle's coordinates go through memory, stored as words and loaded as pairs (a stalled
+// store-to-load forward per triangle).
+namespace setup_detail {
+
+// y down, interior on the side E > 0: a "left" edge runs upward (dy < 0); a "top" edge is horizontal and
+// runs right (dy == 0, dx > 0), with the interior below it.
+template <typename T>
+inline bool is_top_left(const T& dx, const T& dy) {
+  return dy < T(0) || (dy == T(0) && dx > T(0));
+}
+
+// Edges of a triangle with positive area; edge k runs between the other two vertices, so E_k is vertex
+// k's weight times the area.
+template <typename T>
+inline EdgeFunctions<T> make_edges(const T (&x)[3], const T (&y)[3], const T& area) {
+  EdgeFunctions<T> e;
+  e.area = area;
+  using Coefficient = typename EdgeFunctions<T>::Coefficient;
+  for (int k = 0; k < 3; ++k) {
+    const int from = (k + 1) % 3, to = (k + 2) % 3;
+    const T a = y[from] - y[to], b = x[to] - x[from];
+    e.a[k] = static_cast<Coefficient>(a), e.b[k] = static_cast<Coefficient>(b);
+    const T bias = is_top_left(b, -a) ? T(0) : T(1);  // centres on an edge count for top/left only
+    e.c[k] = -(a * x[from]) - b * y[from] - bias;
+  }
+  return e;
+}
+
+// True when a pixel centre of `box` is covered by `e` (the box holds at most kProbePixels pixels).
+constexpr int kProbePixels = 16;
+inline bool covers_a_centre(const EdgeFunctions<std::int64_t>& e, Rect box) {
+  for (int y = box.y0; y < box.y1; ++y)
+    for (int x = box.x0; x < box.x1; ++x) {
+      const std::int64_t X = std::int64_t{x} * kSubpixelScale + kSubpixelScale / 2,
+                         Y = std::int64_t{y} * kSubpixelScale + kSubpixelScale / 2;
+      if (e.a[0] * X + e.b[0] * Y + e.c[0] >= 0 && e.a[1] * X + e.b[1] * Y + e.c[1] >= 0 &&
+          e.a[2] * X + e.b[2] * Y + e.c[2] >= 0)
+        return true;
+    }
+  return false;
+}
+
+}  // namespace setup_detail
+
+[[gnu::always_inline]] inline bool Setup::fast_record(const FastTriangle& t, TriangleRecord& r,
+                                                      int (&order)[3]) const {
+  std::int64_t x[3] = {t.x[0], t.x[1], t.x[2]}, y[3] = {t.y[0], t.y[1], t.y[2]};
+  // The box in integers (the same pixels as pixel_span / centre_span give for these values): the pixels
+  // whose square, or with centre coverage whose centre, holds a point of the vertices' range.
+  const std::int64_t lo[2] = {std::min({x[0], x[1], x[2]}), std::min({y[0], y[1], y[2]})};
+  const std::int64_t hi[2] = {std::max({x[0], x[1], x[2]}), std::max({y[0], y[1], y[2]})};
+  const std::int64_t size[2] = {width, height};
+  int first[2], end[2];
+  for (int d = 0; d < 2; ++d) {
+    const std::int64_t f =
+        centre_samples ? (lo[d] + kSubpixelScale / 2 - 1) >> kSubpixelBits : lo[d] >> kSubpixelBits;
+    const std::int64_t l =
+        centre_samples ? (hi[d] - kSubpixelScale / 2) >> kSubpixelBits : hi[d] >> kSubpixelBits;
+    first[d] = static_cast<int>(std::clamp<std::int64_t>(f, 0, size[d]));
+    end[d] = static_cast<int>(std::clamp<std::int64_t>(l + 1, 0, size[d]));
+  }
+  r.box = {first[0], first[1], end[0], end[1]};
+  if (r.box.empty()) return false;
+  std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+  if (area == 0) return false;  // degenerate: covers nothing
+  order[0] = 0, order[1] = 1, order[2] = 2;
+  if (area < 0) {  // both windings are drawn: normalize to positive area
+    std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(order[1], order[2]);
+    area = -area;
+  }
+  r.edges = setup_detail::make_edges(x, y, area);
+  r.wide = TriangleRecord::kFast;
+  // A small triangle that holds no pixel centre draws nothing: it gets no record (most of a dense model's
+  // triangles are smaller than a pixel).
+  return !(centre_samples && (r.box.x1 - r.box.x0) * (r.box.y1 - r.box.y0) <= setup_detail::kProbePixels &&
+           !setup_detail::covers_a_centre(r.edges, r.box));
+}
 
 /// Per tile, the records that may touch it, in scene order: for each part of the setup a flat array of
 /// record references and, for tile t, the range [offsets[t], offsets[t + 1]) of it.

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -72,6 +73,15 @@ inline constexpr IntLanes kLaneBit = {1, 2, 4, 8, 16, 32, 64, 128};
 }
 [[gnu::always_inline]] inline std::uint8_t lane_byte(const FloatLanes& v, int i) {
   return static_cast<std::uint8_t>(static_cast<int>(v[i]));
+}
+
+/// byte_lanes's eight values as bytes of a word, lane i in byte i (truncated, as lane_byte does).
+[[gnu::always_inline]] inline std::uint64_t lane_bytes(const FloatLanes& v) {
+  using ByteLanes = std::uint8_t __attribute__((vector_size(kLanes)));
+  const ByteLanes b = __builtin_convertvector(__builtin_convertvector(v, IntLanes), ByteLanes);
+  std::uint64_t word;
+  std::memcpy(&word, &b, sizeof word);
+  return word;
 }
 
 /// Lane i of a value (the value itself for one lane).

@@ -341,10 +341,33 @@ class TriangleShader {
       for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
       kernel_.color.template shade<kColours>(l, pass, rgba);
       for (FloatLanes& v : rgba) byte_lanes(v);
-      for (unsigned m = pass; m; m &= m - 1) {
-        const int i = std::countr_zero(m);
-        put<C>(p + i * C, pixel_color(rgba, i), mode_.blend);
+      write(p, pass, rgba);
+    }
+  }
+
+  // Writes the lanes' colours (byte_lanes values) to the pixels of `pass` of the block row at `p`: opaque
+  // grey as one masked word, others a pixel at a time from the packed bytes.
+  [[gnu::always_inline]] inline void write(std::uint8_t* p, unsigned pass,
+                                           const FloatLanes (&rgba)[4]) const {
+    const std::uint64_t r = lane_bytes(rgba[0]);
+    if constexpr (C == 1) {
+      if (!mode_.blend) {
+        std::uint64_t row, keep;
+        std::memcpy(&row, p, sizeof row);
+        std::memcpy(&keep, kByteMasks<1>[pass], sizeof keep);
+        row = (row & ~keep) | (r & keep);
+        std::memcpy(p, &row, sizeof row);
+        return;
       }
+    }
+    const std::uint64_t g = kColours == 3 ? lane_bytes(rgba[1]) : r,
+                        b = kColours == 3 ? lane_bytes(rgba[2]) : r;
+    const std::uint64_t a = lane_bytes(rgba[3]);
+    for (unsigned m = pass; m; m &= m - 1) {
+      const int i = std::countr_zero(m), shift = 8 * i;
+      const Rgba8 c{static_cast<std::uint8_t>(r >> shift), static_cast<std::uint8_t>(g >> shift),
+                    static_cast<std::uint8_t>(b >> shift), static_cast<std::uint8_t>(a >> shift)};
+      put<C>(p + i * C, c, mode_.blend);
     }
   }
 
