@@ -206,46 +206,134 @@ class TriangleShader {
     }
   }
 
-  // 3D multisampling: depth tested per sample (the plane at each position), shaded once per pixel.
+  // 3D multisampling: depth tested per sample (the plane at each position), shaded once per pixel; a block
+  // row at a time in lanes, on the plan's instruction set.
   void depth_samples(const Block& b, const std::uint64_t* masks) {
+#if defined(__x86_64__)
+    if (surface_.simd == Simd::avx2) return depth_samples_avx2(b, masks);
+#endif
+    depth_samples_lanes(b, masks);
+  }
+#if defined(__x86_64__)
+  __attribute__((target("avx2"))) void depth_samples_avx2(const Block& b, const std::uint64_t* masks) {
+    depth_samples_lanes(b, masks);
+  }
+#endif
+
+  [[gnu::always_inline]] inline void depth_samples_lanes(const Block& b, const std::uint64_t* masks) {
     const int n = surface_.sample_count;
     const unsigned all = (1u << n) - 1;
-    const double inv_area = 1.0 / b.area;
-    const float* z = depth_;
+    double z0;
+    float l0[3];
+    block_start(b, z0, l0);
     std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
-    for (std::uint64_t m = b.mask; m; m &= m - 1) {
-      const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
-      const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
-      double l[3];
-      for (int k = 0; k < 3; ++k) l[k] = (b.e[k] + i * b.dx[k] + r * b.dy[k]) * inv_area;
-      const float centre = static_cast<float>(l[0] * z[0] + l[1] * z[1] + l[2] * z[2]);
-      unsigned pass = 0;
+    for (int r = 0; r < kBlock; ++r) {
+      const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
+      if (!bits) continue;
+      FloatLanes centre;
+      row_depth(z0, r, centre);
+      const std::size_t at = surface_.index(b.x0, b.y0 + r);
+      // Per sample, the depth test of the row's pixels whose sample s is covered.
+      unsigned pass[16], any = 0;
       for (int s = 0; s < n; ++s) {
-        if (!((masks[s] >> bit) & 1)) continue;
-        const float depth = centre + z_offset_[s];
-        float& stored = surface_.depth[static_cast<std::size_t>(s) * surface_.plane + index];
-        if (depth > stored) stored = depth, pass |= 1u << s;
+        const unsigned covered = static_cast<unsigned>(masks[s] >> (8 * r)) & 0xff;
+        pass[s] = covered ? depth_test(surface_.depth + static_cast<std::size_t>(s) * surface_.plane + at,
+                                       centre + z_offset_[s], covered)
+                          : 0;
+        any |= pass[s];
       }
-      if (!pass) continue;
-      ++*surface_.shaded;
-      unsigned covered = 0;
-      for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
-      shading_point(b, i, r, covered, l);
-      const Rgba8 c = mode_.smooth ? smooth_color(l) : flat_;
-      if (pass == all && !mode_.blend) {
-        store<C>(surface_.color + index * C, c);
-        expanded &= ~(std::uint64_t{1} << bit);
-        continue;
+      if (!any) continue;
+      *surface_.shaded += std::popcount(any);
+      // Pixels whose every sample passed: one colour again, written as an aliased row writes it.
+      unsigned whole = mode_.blend ? 0u : any;
+      for (int s = 0; s < n; ++s) whole &= pass[s];
+      expanded &= ~(std::uint64_t{whole} << (8 * r));
+      std::uint8_t* p = surface_.color + at * C;
+      std::uint64_t r8 = 0, g8 = 0, b8 = 0, a8 = 0;  // the pixels' colours, byte i for lane i
+      if (mode_.smooth) {
+        FloatLanes l[3], rgba[4] = {};
+        for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
+        for (unsigned m = any & ~whole; m; m &= m - 1) centroid(b, std::countr_zero(m), r, masks, l);
+        kernel_.color.template shade<kColours>(l, any, rgba);
+        for (FloatLanes& v : rgba) byte_lanes(v);
+        if (whole) write(p, whole, rgba);
+        r8 = lane_bytes(rgba[0]), a8 = lane_bytes(rgba[3]);
+        g8 = kColours == 3 ? lane_bytes(rgba[1]) : r8, b8 = kColours == 3 ? lane_bytes(rgba[2]) : r8;
+      } else {
+        for (unsigned m = whole; m; m &= m - 1) store<C>(p + std::countr_zero(m) * C, flat_);
       }
-      if (!((expanded >> bit) & 1)) {
-        if (pass == all) {  // blending over a pixel whose samples agree: still one colour
-          blend<C>(surface_.color + index * C, c);
+      for (unsigned m = any & ~whole; m; m &= m - 1) {
+        const int i = std::countr_zero(m), bit = 8 * r + i, shift = 8 * i;
+        const std::size_t index = at + static_cast<std::size_t>(i);
+        unsigned passed = 0;
+        for (int s = 0; s < n; ++s) passed |= ((pass[s] >> i) & 1u) << s;
+        const Rgba8 c =
+            mode_.smooth
+                ? Rgba8{static_cast<std::uint8_t>(r8 >> shift), static_cast<std::uint8_t>(g8 >> shift),
+                        static_cast<std::uint8_t>(b8 >> shift), static_cast<std::uint8_t>(a8 >> shift)}
+                : flat_;
+        if (passed == all && !mode_.blend) {
+          store<C>(surface_.color + index * C, c);
+          expanded &= ~(std::uint64_t{1} << bit);
           continue;
         }
-        expand(index), expanded |= std::uint64_t{1} << bit;
+        if (!((expanded >> bit) & 1)) {
+          if (passed == all) {  // blending over a pixel whose samples agree: still one colour
+            blend<C>(surface_.color + index * C, c);
+            continue;
+          }
+          expand(index), expanded |= std::uint64_t{1} << bit;
+        }
+        for (unsigned k = passed; k; k &= k - 1)
+          put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
       }
-      for (unsigned k = pass; k; k &= k - 1) put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
     }
+  }
+
+  // The depth test of the lanes of `covered` against the stored row at `stored`: nearer values are kept;
+  // returns the lanes that passed.
+  [[gnu::always_inline]] inline static unsigned depth_test(float* stored, const FloatLanes& depth,
+                                                           unsigned covered) {
+    FloatLanes old;
+    std::memcpy(&old, stored, sizeof old);
+    const IntLanes nearer = (depth > old) & ((kLaneBit & static_cast<std::int32_t>(covered)) != 0);
+    const unsigned pass = lane_bits(nearer);
+    if (pass) {
+      const FloatLanes kept = nearer ? depth : old;
+      std::memcpy(stored, &kept, sizeof kept);
+    }
+    return pass;
+  }
+
+  // A block's values at its first pixel, from its exact edge values: depth in doubles, the barycentrics in
+  // floats. The lanes step from them (row_depth, l_columns_), so a pixel's values depend on its block only,
+  // never on the tile or on whether the walker or rect() reached it.
+  void block_start(const Block& b, double& z0, float (&l0)[3]) const {
+    const double inv_area = 1.0 / b.area;
+    z0 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double l = b.e[k] * inv_area;
+      z0 += l * depth_[k];
+      l0[k] = static_cast<float>(l);
+    }
+  }
+  // Depth at the pixel centres of row r, rounded once to the float the depth buffer holds.
+  [[gnu::always_inline]] inline void row_depth(double z0, int r, FloatLanes& depth) const {
+    const double z_row = z0 + r * dz_dy_;
+    const FloatHalf left = __builtin_convertvector(z_row + z_columns_[0], FloatHalf);
+    const FloatHalf right = __builtin_convertvector(z_row + z_columns_[1], FloatHalf);
+    depth = __builtin_shufflevector(left, right, 0, 1, 2, 3, 4, 5, 6, 7);
+  }
+
+  // Multisampling moves lane i's shading point from the pixel centre to the centroid of its covered
+  // samples when the triangle does not cover the centre (see shading_point).
+  void centroid(const Block& b, int i, int r, const std::uint64_t* masks, FloatLanes (&l)[3]) const {
+    const int n = surface_.sample_count, bit = 8 * r + i;
+    unsigned covered = 0;
+    for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
+    double moved[3] = {0, 0, 0};
+    shading_point(b, i, r, covered, moved);
+    for (int k = 0; k < 3; ++k) l[k][i] += static_cast<float>(moved[k]);
   }
 
   // Barycentric weights where a pixel is shaded: its centre when the triangle covers the centre (or every
@@ -305,33 +393,17 @@ class TriangleShader {
 #endif
 
   [[gnu::always_inline]] inline void shade_depth_lanes(const Block& b) const {
-    // The values at the block's first pixel, from its exact edge values, then steps across the block: depth
-    // in doubles (rounded once, to the float the depth buffer holds), the barycentrics in floats. A pixel's
-    // values depend on its block only, never on the tile or on whether the walker or rect() reached it.
-    const double inv_area = 1.0 / b.area;
-    double z0 = 0;
+    double z0;
     float l0[3];
-    for (int k = 0; k < 3; ++k) {
-      const double l = b.e[k] * inv_area;
-      z0 += l * depth_[k];
-      l0[k] = static_cast<float>(l);
-    }
+    block_start(b, z0, l0);
     for (int r = 0; r < kBlock; ++r) {
       const unsigned bits = static_cast<unsigned>(b.mask >> (8 * r)) & 0xff;
       if (!bits) continue;
-      const double z_row = z0 + r * dz_dy_;
-      const FloatHalf left = __builtin_convertvector(z_row + z_columns_[0], FloatHalf);
-      const FloatHalf right = __builtin_convertvector(z_row + z_columns_[1], FloatHalf);
-      const FloatLanes depth = __builtin_shufflevector(left, right, 0, 1, 2, 3, 4, 5, 6, 7);
       const std::size_t at = surface_.index(b.x0, b.y0 + r);
-      float* stored = surface_.depth + at;
-      FloatLanes old;
-      std::memcpy(&old, stored, sizeof old);
-      const IntLanes nearer = (depth > old) & ((kLaneBit & static_cast<std::int32_t>(bits)) != 0);
-      const unsigned pass = lane_bits(nearer);
+      FloatLanes depth;
+      row_depth(z0, r, depth);
+      const unsigned pass = depth_test(surface_.depth + at, depth, bits);
       if (!pass) continue;
-      const FloatLanes kept = nearer ? depth : old;
-      std::memcpy(stored, &kept, sizeof kept);
       std::uint8_t* p = surface_.color + at * C;
       if (!mode_.smooth) {
         for (unsigned m = pass; m; m &= m - 1) put<C>(p + std::countr_zero(m) * C, flat_, mode_.blend);
@@ -371,24 +443,7 @@ class TriangleShader {
     }
   }
 
-  // The colour at barycentrics `l` (one pixel: the multisampled path), by the code the lanes run.
-  Rgba8 smooth_color(const double (&l)[3]) const {
-    const float lf[3] = {static_cast<float>(l[0]), static_cast<float>(l[1]), static_cast<float>(l[2])};
-    float rgba[4] = {};
-    kernel_.color.template shade<kColours>(lf, 1, rgba);
-    for (float& v : rgba) byte_lanes(v);
-    return pixel_color(rgba, 0);
-  }
-
-  // Lane i of byte_lanes's channels as a colour; grey images compute one channel (their lights are grey).
-  template <class F>
-  static Rgba8 pixel_color(const F (&rgba)[4], int i) {
-    const std::uint8_t r = lane_byte(rgba[0], i), a = lane_byte(rgba[3], i);
-    if constexpr (kColours == 1)
-      return {r, r, r, a};
-    else
-      return {r, lane_byte(rgba[1], i), lane_byte(rgba[2], i), a};
-  }
+  // Grey images compute one colour channel (their lights are grey).
   static constexpr int kColours = C >= 3 ? 3 : 1;
   static constexpr FloatLanes kColumns = {0, 1, 2, 3, 4, 5, 6, 7};
   static constexpr DoubleHalf kLeftColumns = {0, 1, 2, 3}, kRightColumns = {4, 5, 6, 7};
