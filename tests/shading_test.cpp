@@ -1,6 +1,7 @@
 // 3D shading against references written here in doubles from the definitions (issue 41): the float lanes'
-// lighting and perspective-correct interpolation within one level of a literal double-precision shader, a
-// texture coordinate that reaches the pixels perspective-correct, and the varyings the plan describes.
+// lighting, texturing and perspective-correct interpolation within one level of a literal double-precision
+// shader (also where the near plane cuts a triangle), and a texture coordinate that reaches the pixels
+// perspective-correct. (The varyings layout itself: plan_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,7 +19,6 @@ namespace {
 using raster::Interpolation;
 using raster::Rgba8;
 using raster::Varying;
-using raster::Varyings;
 using raster::Vec3;
 using raster::detail::cross;
 using raster::detail::dot;
@@ -81,19 +81,53 @@ void light_at(std::span<const raster::LightPlan> lights, const double (&n)[3], c
   }
 }
 
-// One triangle's per-vertex inputs, in world space (normals unit), and its texture's one colour (0..1).
+// The texture's colour at (u, v) as the sampler makes it when magnified (shade/texture.cpp): bilinear on
+// level 0 in linear light, repeating, encoded back to sRGB; 0..255 before rounding to the byte it returns.
+void bilinear(const raster::Texture& t, double u, double v, double (&out)[3]) {
+  auto decode = [](double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); };
+  auto encode = [](double l) { return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055; };
+  const double x = u * t.width - 0.5, y = (1 - v) * t.height - 0.5, fx = std::floor(x), fy = std::floor(y);
+  auto wrap = [](double i, int n) { return static_cast<int>(i - std::floor(i / n) * n); };
+  double linear[3] = {};
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const double w = (i ? x - fx : 1 - (x - fx)) * (j ? y - fy : 1 - (y - fy));
+      const std::uint8_t* p = &t.rgba[(wrap(fy + j, t.height) * t.width + wrap(fx + i, t.width)) * 4];
+      for (int c = 0; c < 3; ++c) linear[c] += w * decode(p[c] / 255.0);
+    }
+  for (int c = 0; c < 3; ++c) out[c] = std::clamp(encode(linear[c]), 0.0, 1.0) * 255;
+}
+
+// One triangle's per-vertex inputs, in world space (normals unit), and its texture with the vertices' uvs.
 struct RefTriangle {
   Vec3 position[3], normal[3];
   double color[3][4] = {};
-  double texel[3] = {1, 1, 1};
+  const raster::Texture* texture = nullptr;
+  double uv[3][2] = {};
   bool back = false;  // seen from behind: lit from the side seen
+
+  // u and v at the vertices' weights q (perspective-correct weights give perspective-correct uv).
+  std::pair<double, double> uv_at(const double (&q)[3]) const {
+    return {q[0] * uv[0][0] + q[1] * uv[1][0] + q[2] * uv[2][0],
+            q[0] * uv[0][1] + q[1] * uv[1][1] + q[2] * uv[2][1]};
+  }
 };
 
 // The old smooth_color in doubles from the perspective-correct weights `q` of the vertices (normalised):
-// colour and normal interpolated, the normal renormalised and flipped to the side seen, lit at the
-// interpolated position.
-void reference_rgb(const RefTriangle& t, std::span<const raster::LightPlan> lights, const double (&q)[3],
+// colour and normal interpolated, times the texel, the normal renormalised and flipped to the side seen, lit
+// at the interpolated position. False when a texel byte is too close to call (its value within 0.05 of a
+// rounding boundary, where float coordinates may round it the other way).
+bool reference_rgb(const RefTriangle& t, std::span<const raster::LightPlan> lights, const double (&q)[3],
                    double (&rgb)[3]) {
+  double texel[3] = {255, 255, 255};
+  if (t.texture) {
+    const auto [u, v] = t.uv_at(q);
+    bilinear(*t.texture, u, v, texel);
+    for (double& c : texel) {
+      if (std::fabs(c - std::floor(c) - 0.5) < 0.05) return false;
+      c = std::floor(c + 0.5);
+    }
+  }
   double n[3] = {}, p[3] = {}, shade[3];
   for (int k = 0; k < 3; ++k) {
     const double nk[3] = {t.normal[k].x, t.normal[k].y, t.normal[k].z},
@@ -104,7 +138,8 @@ void reference_rgb(const RefTriangle& t, std::span<const raster::LightPlan> ligh
   for (double& c : n) c *= (t.back ? -1 : 1) / len;
   light_at(lights, n, p, shade);
   for (int c = 0; c < 3; ++c)
-    rgb[c] = (q[0] * t.color[0][c] + q[1] * t.color[1][c] + q[2] * t.color[2][c]) * t.texel[c] * shade[c];
+    rgb[c] = (q[0] * t.color[0][c] + q[1] * t.color[1][c] + q[2] * t.color[2][c]) * texel[c] / 255 * shade[c];
+  return true;
 }
 
 // Perspective-correct weights from screen-space barycentrics: l_k / w_k, normalised.
@@ -139,8 +174,9 @@ raster::Light random_light(std::mt19937& rng, raster::LightKind kind) {
 
 // One randomly placed and oriented triangle (about half of them seen from behind) with random opaque vertex
 // colours and given normals of random lengths near its face's, under ambient + directional +
-// point lights; `textured`: a one-colour texture multiplies it. A fixed perspective camera.
-// `cut`: its first vertex is placed behind the near plane (z = 4.5), some of the time behind the eye too.
+// point lights; `textured`: a random 4 x 4 texture multiplies it, most of it magnified. A fixed perspective
+// camera. `cut`: its first vertex is placed behind the near plane (z = 4.5), some of the time behind the eye
+// too.
 raster::Scene random_triangle_scene(std::mt19937& rng, bool textured, bool cut = false) {
   std::uniform_real_distribution<double> at(-1.6, 1.6), unit(0, 1);
   raster::Scene s;
@@ -161,14 +197,11 @@ raster::Scene random_triangle_scene(std::mt19937& rng, bool textured, bool cut =
   m.normal_triangles = m.triangles;
   if (textured) {
     raster::Texture t;
-    t.width = t.height = 2;
-    const Rgba8 c{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
-                  static_cast<std::uint8_t>(rng()), 255};
-    for (int i = 0; i < 4; ++i)
-      for (std::uint8_t v : {c.r, c.g, c.b, c.a}) t.rgba.push_back(v);
+    t.width = t.height = 4;
+    for (int i = 0; i < 16 * 4; ++i) t.rgba.push_back(i % 4 == 3 ? 255 : static_cast<std::uint8_t>(rng()));
     m.textures.push_back(t);
     for (int k = 0; k < 3; ++k)
-      m.uvs.push_back({static_cast<float>(3 * unit(rng)), static_cast<float>(3 * unit(rng))});
+      m.uvs.push_back({static_cast<float>(1.5 * unit(rng)), static_cast<float>(1.5 * unit(rng))});
     m.uv_triangles = m.triangles;
   }
   s.meshes.push_back(std::move(m));
@@ -189,11 +222,41 @@ RefTriangle reference_of(const raster::Scene& s) {
     const Rgba8 c = m.colors[k];
     t.color[k][0] = c.r, t.color[k][1] = c.g, t.color[k][2] = c.b, t.color[k][3] = c.a;
   }
-  if (!m.textures.empty())
-    for (int c = 0; c < 3; ++c) t.texel[c] = m.textures[0].rgba[c] / 255.0;
+  if (!m.textures.empty()) {
+    t.texture = &m.textures[0];
+    for (int k = 0; k < 3; ++k) t.uv[k][0] = m.uvs[k][0], t.uv[k][1] = m.uvs[k][1];
+  }
   const Vec3 face = cross(t.position[1] - t.position[0], t.position[2] - t.position[0]);
   t.back = dot(face, s.camera.eye - t.position[0]) < 0;
   return t;
+}
+
+// Compares pixel (x, y) with the reference at its centre; `weights_at(px, py, q)` gives the perspective-
+// correct weights at any screen point. Textured, only where the texture is magnified (less than 0.9 texels
+// a pixel, so the sampler reads level 0) and each texel byte is clear. Returns whether it compared.
+template <class WeightsAt>
+bool check_pixel(const RefTriangle& t, const raster::RenderPlan& plan, const raster::Image& image, int x,
+                 int y, WeightsAt weights_at, const std::string& what) {
+  double q[3], rgb[3];
+  weights_at(x + 0.5, y + 0.5, q);
+  if (t.texture) {
+    double a[3], b[3], rho = 0;
+    for (auto [dx, dy] : {std::pair{0.5, 0.0}, {0.0, 0.5}}) {
+      weights_at(x + 0.5 - dx, y + 0.5 - dy, a), weights_at(x + 0.5 + dx, y + 0.5 + dy, b);
+      const auto [u0, v0] = t.uv_at(a);
+      const auto [u1, v1] = t.uv_at(b);
+      rho = std::max(rho, std::hypot((u1 - u0) * t.texture->width, (v1 - v0) * t.texture->height));
+    }
+    if (!(rho < 0.9)) return false;
+  }
+  if (!reference_rgb(t, plan.view.lights, q, rgb)) return false;
+  const Rgba8 got = test::pixel(image, x, y);
+  const int channel[3] = {got.r, got.g, got.b};
+  for (int c = 0; c < 3; ++c)
+    EXPECT_LE(std::abs(channel[c] - reference_byte(rgb[c])), 1)
+        << what << ", pixel " << x << ", " << y << ", channel " << c << ": reference " << rgb[c]
+        << (t.back ? " (back face)" : "") << (t.texture ? " (textured)" : "");
+  return true;
 }
 
 // Every pixel whose centre lies inside the triangle, 0.01 px or more from its edges (multisampled: every
@@ -210,18 +273,11 @@ int compare_with_reference(const raster::Scene& scene, const std::string& what) 
   int compared = 0;
   for (int y = 0; y < plan.height; ++y)
     for (int x = 0; x < plan.width; ++x) {
-      const Barycentric b = barycentric(s, x + 0.5, y + 0.5);
-      if (!(b.inside > margin)) continue;
-      double q[3], rgb[3];
-      perspective_weights(s, b.l, q);
-      reference_rgb(t, plan.view.lights, q, rgb);
-      const Rgba8 got = test::pixel(image, x, y);
-      const int channel[3] = {got.r, got.g, got.b};
-      for (int c = 0; c < 3; ++c)
-        EXPECT_LE(std::abs(channel[c] - reference_byte(rgb[c])), 1)
-            << what << ", pixel " << x << ", " << y << ", channel " << c << ": reference " << rgb[c]
-            << (t.back ? " (back face)" : "");
-      ++compared;
+      if (!(barycentric(s, x + 0.5, y + 0.5).inside > margin)) continue;
+      auto weights_at = [&](double px, double py, double(&q)[3]) {
+        perspective_weights(s, barycentric(s, px, py).l, q);
+      };
+      compared += check_pixel(t, plan, image, x, y, weights_at, what);
       if (::testing::Test::HasFailure()) return compared;
     }
   return compared;
@@ -230,7 +286,8 @@ int compare_with_reference(const raster::Scene& scene, const std::string& what) 
 // Issue 41: per-pixel lighting in float lanes gives, at every interior pixel, the byte of the double-
 // precision shader it replaced or one next to it: random triangles, normals, vertex colours and lights
 // (two-sided, point lights at the interpolated world position), aliased (eight pixels a step) and at 4
-// samples (whole pixels are shaded at their centre by the one-lane form), with and without a texture.
+// samples (whole pixels are shaded at their centre by the one-lane form), with and without a magnified
+// random texture.
 TEST(Shading, FloatLanesAreWithinOneLevelOfTheDoubleReference) {
   int compared = 0, back = 0, front = 0;
   for (unsigned seed = 1; seed <= 60; ++seed) {
@@ -295,14 +352,10 @@ int compare_along_rays(const raster::Scene& scene, const std::string& what) {
       }
       const auto [cx, cy] = ndc(x, y);
       if (!inside || !seen_at(plan, t, cx, cy, q)) continue;
-      double rgb[3];
-      reference_rgb(t, plan.view.lights, q, rgb);
-      const Rgba8 got = test::pixel(image, x, y);
-      const int channel[3] = {got.r, got.g, got.b};
-      for (int c = 0; c < 3; ++c)
-        EXPECT_LE(std::abs(channel[c] - reference_byte(rgb[c])), 1)
-            << what << ", pixel " << x << ", " << y << ", channel " << c << ": reference " << rgb[c];
-      ++compared;
+      auto weights_at = [&](double px, double py, double(&w)[3]) {
+        seen_at(plan, t, px * 2 / plan.width - 1, 1 - py * 2 / plan.height, w);
+      };
+      compared += check_pixel(t, plan, image, x, y, weights_at, what);
       if (::testing::Test::HasFailure()) return compared;
     }
   return compared;
@@ -458,124 +511,6 @@ TEST(Shading, TextureCoordinatesArePerspectiveCorrectOnAGrazingPlane) {
   EXPECT_GT(cells[0], 1000);
   EXPECT_GT(cells[1], 1000);
   EXPECT_GT(affine_wrong, checked / 3) << "the view must tell perspective-correct from affine";
-}
-
-// ---- the varyings description ----
-
-// Varyings::add lays rows out in enum order whatever the order they are added in: a vertex holds every row
-// (clipping interpolates those before depth), a record the flat rows once and the others per vertex.
-TEST(Shading, VaryingsLayOutRowsInEnumOrder) {
-  Varyings v;  // colour alone, flat: the default
-  EXPECT_EQ(v.floats, 4);
-  EXPECT_EQ(v.flat_floats, 4);
-  EXPECT_EQ(v.stride, 0);
-  EXPECT_EQ(v.record_floats(), 4);
-  v.add(Varying::inv_w, Interpolation::affine)
-      .add(Varying::normal, Interpolation::perspective)
-      .add(Varying::depth, Interpolation::affine);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::color)], 0);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::normal)], 4);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::uv)], -1);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::position)], -1);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::depth)], 7);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::inv_w)], 8);
-  EXPECT_EQ(v.floats, 9);
-  EXPECT_EQ(v.clipped_floats, 7) << "depth and 1 / w are written by the viewport, not clipped";
-  EXPECT_EQ(v.flat_floats, 4);
-  EXPECT_EQ(v.stride, 5);
-  EXPECT_EQ(v.record_floats(), 19) << "a flat colour once + 3 x (normal, depth, 1 / w)";
-  EXPECT_EQ(v.record_at(Varying::color, 2), 0) << "flat: every vertex reads the one colour";
-  EXPECT_EQ(v.record_at(Varying::normal, 0), 4);
-  EXPECT_EQ(v.record_at(Varying::normal, 1), 9);
-  EXPECT_EQ(v.record_at(Varying::depth, 2), 4 + 2 * 5 + 3);
-  EXPECT_EQ(v.record_at(Varying::inv_w, 2), 18);
-
-  Varyings in_order;
-  in_order.add(Varying::normal, Interpolation::perspective)
-      .add(Varying::depth, Interpolation::affine)
-      .add(Varying::inv_w, Interpolation::affine);
-  EXPECT_EQ(v, in_order) << "the order of add() does not change the layout";
-
-  // Every row, colour re-interpolated: nothing flat, 14 floats a vertex, 12 of them clipped.
-  v.add(Varying::uv, Interpolation::perspective)
-      .add(Varying::position, Interpolation::perspective)
-      .add(Varying::color, Interpolation::perspective);
-  EXPECT_EQ(v.floats, Varyings::kMaxFloats);
-  EXPECT_EQ(v.clipped_floats, 12);
-  EXPECT_EQ(v.flat_floats, 0);
-  EXPECT_EQ(v.stride, 14);
-  EXPECT_EQ(v.record_floats(), 42);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::uv)], 7);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::position)], 9);
-  EXPECT_EQ(v.record_at(Varying::color, 1), 14);
-  EXPECT_EQ(v.record_at(Varying::position, 2), 28 + 9);
-}
-
-raster::Scene one_mesh_scene(raster::Mesh mesh) {
-  raster::Scene s;
-  s.width = s.height = 32;
-  s.meshes.push_back(std::move(mesh));
-  raster::Primitive p;
-  p.kind = raster::PrimitiveKind::mesh;
-  s.primitives.push_back(p);
-  return s;
-}
-
-// The plan gives each mesh the rows its shading reads: a normal for per-pixel light (not for flat or unlit
-// shading), uv when textured, the world position when a point light lights it per pixel, colour per vertex
-// only when the colours vary, and 1 / w whenever something is interpolated.
-TEST(Shading, ThePlanDescribesWhatEachMeshCarries) {
-  raster::Mesh quad;
-  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  quad.triangles = {{0, 1, 2}, {0, 2, 3}};
-  quad.colors = {test::kRed};
-  auto rows = [](const raster::Scene& s) { return raster::plan(s).draws.at(0).mode.varyings; };
-  auto has = [](const Varyings& v, std::initializer_list<Varying> want) {
-    std::string got;
-    for (int i = 0; i < raster::kVaryingCount; ++i) {
-      const bool wanted = std::find(want.begin(), want.end(), static_cast<Varying>(i)) != want.end();
-      if (v.has(static_cast<Varying>(i)) != wanted) got += " row " + std::to_string(i);
-    }
-    return got;
-  };
-  using enum Varying;
-  const Varyings smooth = rows(one_mesh_scene(quad));
-  EXPECT_EQ(has(smooth, {color, normal, depth, inv_w}), "");
-  EXPECT_EQ(smooth.how(normal), Interpolation::perspective);
-  EXPECT_EQ(smooth.how(color), Interpolation::flat) << "one colour: stored once";
-  EXPECT_EQ(smooth.how(depth), Interpolation::affine);
-
-  raster::Mesh flat = quad;
-  flat.shading = raster::Shading::flat;
-  EXPECT_EQ(has(rows(one_mesh_scene(flat)), {color, depth}), "") << "flat: lit per face, no normal";
-  raster::Mesh unlit = quad;
-  unlit.shading = raster::Shading::unlit;
-  EXPECT_EQ(has(rows(one_mesh_scene(unlit)), {color, depth}), "");
-
-  raster::Mesh textured = unlit;
-  textured.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  textured.uv_triangles = textured.triangles;
-  raster::Texture t;
-  t.width = t.height = 1, t.rgba = {9, 9, 9, 255};
-  textured.textures.push_back(t);
-  const Varyings uv_rows = rows(one_mesh_scene(textured));
-  EXPECT_EQ(has(uv_rows, {color, uv, depth, inv_w}), "");
-  EXPECT_EQ(uv_rows.how(uv), Interpolation::perspective);
-
-  raster::Scene point = one_mesh_scene(quad);
-  raster::Light lamp;
-  lamp.kind = raster::LightKind::point, lamp.position = {0, 0, 3};
-  point.lights = {lamp};
-  EXPECT_EQ(has(rows(point), {color, normal, position, depth, inv_w}), "");
-  point.meshes[0].shading = raster::Shading::flat;
-  EXPECT_EQ(has(rows(point), {color, depth}), "") << "flat: the face's light is worked out in geometry";
-
-  raster::Mesh varied = unlit;
-  varied.colors = {test::kRed, test::kGreen, test::kBlue, test::kWhite};
-  const Varyings varied_rows = rows(one_mesh_scene(varied));
-  EXPECT_EQ(has(varied_rows, {color, depth, inv_w}), "");
-  EXPECT_EQ(varied_rows.how(color), Interpolation::perspective);
-  EXPECT_EQ(varied_rows.record_floats(), 3 * 6);
 }
 
 }  // namespace
