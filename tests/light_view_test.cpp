@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -189,6 +190,56 @@ TEST(Lights, DefaultRigLightsAFaceSeenHeadOn) {
   EXPECT_NEAR(test::pixel(render(doc), 4, 4).r, 204 * sum, 1.0);
   const std::string explained = raster::explain_json(raster::plan(raster::parse_scene(doc.dump())));
   EXPECT_EQ(nlohmann::json::parse(explained).at("lights").size(), 3u) << explained;
+}
+
+// A grey image (grey colours under grey lights) computes one channel per pixel where an RGB image computes
+// three (issue 41's shader lanes): the same mesh gives the same bytes either way. A seeded bumpy grid lit per
+// pixel by grey ambient, directional and point lights, drawn alone (grey8) and beside a small red triangle in
+// a corner that makes the image RGB, aliased and at 4 samples.
+TEST(Lights, GreyImagesAreLitAsEachChannelOfAnRgbImage) {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> bump(-0.25, 0.25), unit(0, 1);
+  raster::Mesh grid;
+  for (int j = 0; j <= 6; ++j)
+    for (int i = 0; i <= 6; ++i) {
+      grid.positions.push_back({i / 3.0 - 1, j / 3.0 - 1, bump(rng)});
+      const auto v = static_cast<std::uint8_t>(rng());
+      grid.colors.push_back({v, v, v, 255});
+    }
+  for (std::uint32_t j = 0; j < 6; ++j)
+    for (std::uint32_t i = 0; i < 6; ++i) {
+      const std::uint32_t a = j * 7 + i;
+      grid.triangles.push_back({a, a + 1, a + 8});
+      grid.triangles.push_back({a, a + 8, a + 7});
+    }
+  test::SceneBuilder grey(64, 64);
+  grey.scene.meshes.push_back(grid);
+  raster::Primitive mesh;
+  mesh.kind = raster::PrimitiveKind::mesh;
+  grey.scene.primitives.push_back(mesh);
+  grey.scene.camera.has_eye = true, grey.scene.camera.eye = {0.4, -0.8, 2.5};
+  for (raster::LightKind kind :
+       {raster::LightKind::ambient, raster::LightKind::directional, raster::LightKind::point}) {
+    raster::Light l;
+    l.kind = kind, l.intensity = 0.2 + 0.5 * unit(rng);
+    l.color = {0.9, 0.9, 0.9};
+    l.direction = {bump(rng), bump(rng), -1}, l.position = {bump(rng), bump(rng), 0.8};
+    grey.scene.lights.push_back(l);
+  }
+  test::SceneBuilder rgb = grey;
+  rgb.triangle({0, 0}, {3, 0}, {0, 3}, test::kRed);
+  for (raster::Antialias aa : {raster::Antialias::none, raster::Antialias::msaa4}) {
+    grey.scene.antialias = rgb.scene.antialias = aa;
+    ASSERT_EQ(raster::plan(grey.scene).format, raster::PixelFormat::grey8);
+    ASSERT_EQ(raster::plan(rgb.scene).format, raster::PixelFormat::rgb8);
+    const raster::Image a = test::render(grey.scene), b = test::render(rgb.scene);
+    ASSERT_GT(test::count_not(a, test::kBlack), 1500);
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x)
+        if (x + y > 6) {  // away from the red corner
+          ASSERT_EQ(test::pixel(a, x, y), test::pixel(b, x, y)) << x << ", " << y;
+        }
+  }
 }
 
 TEST(Lights, BadLightsAreInvalidWithTheirPointer) {

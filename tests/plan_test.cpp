@@ -2,10 +2,17 @@
 // actually allocated for pixels equal what the plan says.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <initializer_list>
+#include <string>
+
 #include "support.h"
 
 namespace {
 
+using raster::Interpolation;
+using raster::Varying;
+using raster::Varyings;
 using test::SceneBuilder;
 
 raster::RenderPlan plan_of(const raster::Scene& s, int threads = 0) {
@@ -173,6 +180,122 @@ TEST(Plan, RejectsScenesBuiltInCodeThatReferToMissingData) {
   s.scene.primitives[0].point_count = 3;
   s.scene.colors.clear();
   EXPECT_THROW(raster::plan(s.scene), raster::SceneError);
+}
+
+// Varyings::add lays rows out in enum order whatever the order they are added in: a vertex holds every row
+// (clipping interpolates those before depth), a record the flat rows once and the others per vertex.
+TEST(Plan, VaryingsLayOutRowsInEnumOrder) {
+  Varyings v;  // colour alone, flat: the default
+  EXPECT_EQ(v.floats, 4);
+  EXPECT_EQ(v.flat_floats, 4);
+  EXPECT_EQ(v.stride, 0);
+  EXPECT_EQ(v.record_floats(), 4);
+  v.add(Varying::inv_w, Interpolation::affine)
+      .add(Varying::normal, Interpolation::perspective)
+      .add(Varying::depth, Interpolation::affine);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::color)], 0);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::normal)], 4);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::uv)], -1);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::position)], -1);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::depth)], 7);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::inv_w)], 8);
+  EXPECT_EQ(v.floats, 9);
+  EXPECT_EQ(v.clipped_floats, 7) << "depth and 1 / w are written by the viewport, not clipped";
+  EXPECT_EQ(v.flat_floats, 4);
+  EXPECT_EQ(v.stride, 5);
+  EXPECT_EQ(v.record_floats(), 19) << "a flat colour once + 3 x (normal, depth, 1 / w)";
+  EXPECT_EQ(v.record_at(Varying::color, 2), 0) << "flat: every vertex reads the one colour";
+  EXPECT_EQ(v.record_at(Varying::normal, 0), 4);
+  EXPECT_EQ(v.record_at(Varying::normal, 1), 9);
+  EXPECT_EQ(v.record_at(Varying::depth, 2), 4 + 2 * 5 + 3);
+  EXPECT_EQ(v.record_at(Varying::inv_w, 2), 18);
+
+  Varyings in_order;
+  in_order.add(Varying::normal, Interpolation::perspective)
+      .add(Varying::depth, Interpolation::affine)
+      .add(Varying::inv_w, Interpolation::affine);
+  EXPECT_EQ(v, in_order) << "the order of add() does not change the layout";
+
+  // Every row, colour re-interpolated: nothing flat, 14 floats a vertex, 12 of them clipped.
+  v.add(Varying::uv, Interpolation::perspective)
+      .add(Varying::position, Interpolation::perspective)
+      .add(Varying::color, Interpolation::perspective);
+  EXPECT_EQ(v.floats, Varyings::kMaxFloats);
+  EXPECT_EQ(v.clipped_floats, 12);
+  EXPECT_EQ(v.flat_floats, 0);
+  EXPECT_EQ(v.stride, 14);
+  EXPECT_EQ(v.record_floats(), 42);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::uv)], 7);
+  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::position)], 9);
+  EXPECT_EQ(v.record_at(Varying::color, 1), 14);
+  EXPECT_EQ(v.record_at(Varying::position, 2), 28 + 9);
+}
+
+raster::Scene one_mesh_scene(raster::Mesh mesh) {
+  raster::Scene s;
+  s.width = s.height = 32;
+  s.meshes.push_back(std::move(mesh));
+  raster::Primitive p;
+  p.kind = raster::PrimitiveKind::mesh;
+  s.primitives.push_back(p);
+  return s;
+}
+
+// The plan gives each mesh the rows its shading reads: a normal for per-pixel light (not for flat or unlit
+// shading), uv when textured, the world position when a point light lights it per pixel, colour per vertex
+// only when the colours vary, and 1 / w whenever something is interpolated.
+TEST(Plan, EachMeshGetsTheVaryingsItsShadingReads) {
+  raster::Mesh quad;
+  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+  quad.colors = {test::kRed};
+  auto rows = [](const raster::Scene& s) { return raster::plan(s).draws.at(0).mode.varyings; };
+  auto has = [](const Varyings& v, std::initializer_list<Varying> want) {
+    std::string got;
+    for (int i = 0; i < raster::kVaryingCount; ++i) {
+      const bool wanted = std::find(want.begin(), want.end(), static_cast<Varying>(i)) != want.end();
+      if (v.has(static_cast<Varying>(i)) != wanted) got += " row " + std::to_string(i);
+    }
+    return got;
+  };
+  using enum Varying;
+  const Varyings smooth = rows(one_mesh_scene(quad));
+  EXPECT_EQ(has(smooth, {color, normal, depth, inv_w}), "");
+  EXPECT_EQ(smooth.how(normal), Interpolation::perspective);
+  EXPECT_EQ(smooth.how(color), Interpolation::flat) << "one colour: stored once";
+  EXPECT_EQ(smooth.how(depth), Interpolation::affine);
+
+  raster::Mesh flat = quad;
+  flat.shading = raster::Shading::flat;
+  EXPECT_EQ(has(rows(one_mesh_scene(flat)), {color, depth}), "") << "flat: lit per face, no normal";
+  raster::Mesh unlit = quad;
+  unlit.shading = raster::Shading::unlit;
+  EXPECT_EQ(has(rows(one_mesh_scene(unlit)), {color, depth}), "");
+
+  raster::Mesh textured = unlit;
+  textured.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  textured.uv_triangles = textured.triangles;
+  raster::Texture t;
+  t.width = t.height = 1, t.rgba = {9, 9, 9, 255};
+  textured.textures.push_back(t);
+  const Varyings uv_rows = rows(one_mesh_scene(textured));
+  EXPECT_EQ(has(uv_rows, {color, uv, depth, inv_w}), "");
+  EXPECT_EQ(uv_rows.how(uv), Interpolation::perspective);
+
+  raster::Scene point = one_mesh_scene(quad);
+  raster::Light lamp;
+  lamp.kind = raster::LightKind::point, lamp.position = {0, 0, 3};
+  point.lights = {lamp};
+  EXPECT_EQ(has(rows(point), {color, normal, position, depth, inv_w}), "");
+  point.meshes[0].shading = raster::Shading::flat;
+  EXPECT_EQ(has(rows(point), {color, depth}), "") << "flat: the face's light is worked out in geometry";
+
+  raster::Mesh varied = unlit;
+  varied.colors = {test::kRed, test::kGreen, test::kBlue, test::kWhite};
+  const Varyings varied_rows = rows(one_mesh_scene(varied));
+  EXPECT_EQ(has(varied_rows, {color, depth, inv_w}), "");
+  EXPECT_EQ(varied_rows.how(color), Interpolation::perspective);
+  EXPECT_EQ(varied_rows.record_floats(), 3 * 6);
 }
 
 }  // namespace
