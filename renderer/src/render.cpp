@@ -48,9 +48,10 @@ void cover(const detail::EdgeFunctions<T>& e, Rect clip, Coverage coverage, cons
 // Inlined into the tile loop, where `clip` lives in registers: as a call, the Rect arrived in two registers,
 // was stored as two words and loaded as one 16-byte vector, a stalled store-to-load forward per record.
 template <int C>
-[[gnu::always_inline]] inline void draw_triangle(const detail::Setup& setup, const detail::Records& part, const detail::TriangleRecord& t,
-                   const detail::Surface& surface, Rect clip, Coverage coverage, detail::Lanes lanes,
-                   detail::StopMeter& meter) {
+[[gnu::always_inline]] inline void draw_triangle(const detail::Setup& setup, const detail::Records& part,
+                                                 const detail::TriangleRecord& t,
+                                                 const detail::Surface& surface, Rect clip, Coverage coverage,
+                                                 detail::Lanes lanes, detail::StopMeter& meter) {
   const float* attributes = part.attributes.data() + t.attributes;
   if (t.wide != detail::TriangleRecord::kFast) {
     const detail::EdgeFunctions<detail::Wide>& e = part.wide_edges[t.wide];
