@@ -77,6 +77,7 @@ class PodArray {
     return first;
   }
   void push_back(const T& v) { *grow(1) = v; }
+  void pop_back() { --size_; }
   /// Exactly `n` elements, the new ones not initialised.
   void resize_uninitialized(std::size_t n) {
     reserve(n);

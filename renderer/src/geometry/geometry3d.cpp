@@ -326,12 +326,14 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
 
     // Inside every plane, the record first: most of a dense mesh's triangles cover no pixel centre and are
     // dropped before any attribute is looked at.
-    TriangleRecord record;
     int order[3] = {0, 1, 2};
-    if (any_out == 0) {
+    if (any_out == 0) {  // the record is made where it will stay
       FastTriangle fast;
       for (int k = 0; k < 3; ++k) fast.x[k] = view.screen[tri[k]].x, fast.y[k] = view.screen[tri[k]].y;
-      if (!setup.fast_record(fast, record, order)) continue;
+      if (!setup.fast_record(fast, part.grow_triangle(), order)) {
+        part.drop_triangle();
+        continue;
+      }
     }
 
     // The vertices' colours (lit per face) and normals, onto the projected vertices or the clip polygon.
@@ -340,7 +342,7 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
     if (any_out == 0) {  // inside every plane: the vertices were projected once
       for (int k = 0; k < 3; ++k)
         put_projection(with, dv[k], view.screen[tri[k]].depth, view.screen[tri[k]].inv_w);
-      setup.append(part, record, triangle_call, {&dv[order[0]], &dv[order[1]], &dv[order[2]]}, back);
+      setup.finish(part, triangle_call, {&dv[order[0]], &dv[order[1]], &dv[order[2]]}, back);
       continue;
     }
     std::array<ClipVertex, 9> poly;

@@ -82,7 +82,8 @@ struct LightFacts {
 
 LightFacts light_facts(const Scene& scene) {
   LightFacts f;
-  for (const Light& l : scene.lights) {
+  // The lights the view will place (plan/light.cpp): the scene's, or the default rig when it has none.
+  for (const Light& l : scene.lights.empty() ? default_lights() : scene.lights) {
     f.grey &= l.color.x == l.color.y && l.color.y == l.color.z;
     f.point |= l.kind == LightKind::point;
   }

@@ -81,8 +81,15 @@ void Setup::add_triangle(Records& part, std::uint32_t call, const SetupVertex (&
   append(part, r, call, v, back_facing);
 }
 
-void Setup::append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
+void Setup::append(Records& part, const TriangleRecord& r, std::uint32_t call,
+                   const SetupVertex* const (&v)[3], bool back_facing) const {
+  part.triangles.push_back(r);
+  finish(part, call, v, back_facing);
+}
+
+void Setup::finish(Records& part, std::uint32_t call, const SetupVertex* const (&v)[3],
                    bool back_facing) const {
+  TriangleRecord& r = part.triangles.back();
   // The flat rows from vertex 0, then each vertex's interpolated rows: one run of floats per vertex, since
   // a vertex holds its rows in the same order (Varyings).
   const Varyings& varyings = calls[call].mode.varyings;
@@ -97,8 +104,7 @@ void Setup::append(Records& part, TriangleRecord r, std::uint32_t call, const Se
   }
   r.call = call;
   r.back_facing = back_facing;
-  part.order.push_back({static_cast<std::uint32_t>(part.triangles.size())});
-  part.triangles.push_back(r);
+  part.order.push_back({static_cast<std::uint32_t>(part.triangles.size() - 1)});
 }
 
 std::size_t Setup::record_count() const {

@@ -45,7 +45,9 @@ inline DrawCall make_call(const PrimitivePlan& mode) {
 /// A vertex of a triangle, snapped, with the values its call's varyings (PrimitivePlan::varyings) give it.
 struct SetupVertex {
   double x = 0, y = 0;  ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
-  float values[Varyings::kMaxFloats] = {};  ///< at Varyings::vertex_offset, rows in Varying order
+  /// At Varyings::vertex_offset, rows in Varying order. Not initialised: whoever makes a vertex writes every
+  /// row its call has (a dense mesh makes three a triangle, and zeroing them cost more than filling them).
+  float values[Varyings::kMaxFloats];
 
   float* at(const Varyings& v, Varying name) { return values + v.vertex_offset[static_cast<int>(name)]; }
 };
@@ -68,8 +70,9 @@ struct EdgeFunctions {  // not scene.h's Edges (feature edges drawn over a mesh)
 /// from the exact edge values, so a pixel's value does not depend on which tile or block computes it.
 struct TriangleRecord {
   static constexpr std::uint32_t kFast = ~0u;
+  Rect box;  ///< pixels whose sample point may be covered, clipped to the image (first: binning reads it
+             ///< alone)
   EdgeFunctions<std::int64_t> edges;  ///< the edges, when in the fast range (kept here: one fetch per record)
-  Rect box;                           ///< pixels whose sample point may be covered, clipped to the image
   std::uint32_t call = 0;             ///< index into Setup::calls
   std::uint32_t attributes = 0;  ///< index into its part's attributes of this record's first float (Varyings)
   std::uint32_t wide = kFast;    ///< kFast, or the index of its edges in Setup::wide_edges
@@ -103,6 +106,10 @@ struct Records {
   PodArray<float> attributes;                   ///< TriangleRecord::attributes indexes these
   std::vector<LineRecord> lines;
   PodArray<RecordRef> order;  ///< every record of the part once, in the order the scene draws them
+
+  /// Room for one more triangle record, made in place; drop_triangle() takes it back if it is not kept.
+  TriangleRecord& grow_triangle() { return *triangles.grow(1); }
+  void drop_triangle() { triangles.pop_back(); }
 };
 
 /// A triangle in the fast range, snapped (1/256 px, either winding), before its record exists.
@@ -138,8 +145,11 @@ struct Setup {
   bool fast_record(const FastTriangle& t, TriangleRecord& r, int (&order)[3]) const;
   /// Appends `r` (from fast_record, or with its edges and box set) to `part` with the attributes of `call`'s
   /// varyings taken from `v`, already in the record's vertex order.
-  void append(Records& part, TriangleRecord r, std::uint32_t call, const SetupVertex* const (&v)[3],
+  void append(Records& part, const TriangleRecord& r, std::uint32_t call, const SetupVertex* const (&v)[3],
               bool back_facing) const;
+  /// The same for a record already made in place as the last of `part.triangles` (by fast_record into
+  /// Records::grow_triangle): copying a record just written field by field stalls on its loads.
+  void finish(Records& part, std::uint32_t call, const SetupVertex* const (&v)[3], bool back_facing) const;
   /// Adds a 1-px line record (its box is computed here).
   void add_line(LineRecord line);
   /// Records of every part.

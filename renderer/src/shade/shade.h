@@ -51,8 +51,9 @@ class TriangleShader {
       // The planes' steps per pixel right and down: depth (doubles), the barycentrics (floats), and the
       // first at a block row's eight columns.
       double dl_dx[3], dl_dy[3], dz_dx = 0;
+      const double inv_area = 1.0 / area;  // one division a record, not six
       for (int k = 0; k < 3; ++k) {
-        dl_dx[k] = step_x[k] / area, dl_dy[k] = step_y[k] / area;
+        dl_dx[k] = step_x[k] * inv_area, dl_dy[k] = step_y[k] * inv_area;
         dz_dx += dl_dx[k] * depth_[k], dz_dy_ += dl_dy[k] * depth_[k];
         dl_dy_[k] = static_cast<float>(dl_dy[k]);
         l_columns_[k] = kColumns * static_cast<float>(dl_dx[k]);
