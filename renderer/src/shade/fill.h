@@ -187,19 +187,19 @@ template <int C>
 class ColorPlanes {
  public:
   ColorPlanes() = default;
-  /// `step_x` and `step_y` are the record's edge-value steps per pixel right and down and `area` its doubled
-  /// area, as doubles (exact for the fast range).
-  ColorPlanes(const Surface& surface, const float* attributes, const double (&step_x)[3],
+  /// `color[k]`: vertex k's RGBA in the record; `step_x` and `step_y` are the record's edge-value steps per
+  /// pixel right and down and `area` its doubled area, as doubles (exact for the fast range).
+  ColorPlanes(const Surface& surface, const float* const (&color)[3], const double (&step_x)[3],
               const double (&step_y)[3], double area, bool blend)
-      : surface_(&surface), attr_(attributes), blend_(blend) {
+      : surface_(&surface), color_{color[0], color[1], color[2]}, blend_(blend) {
     for (int ch = 0; ch < 4; ++ch) {
-      lo_[ch] = std::min({attr_[ch], attr_[4 + ch], attr_[8 + ch]});
-      hi_[ch] = std::max({attr_[ch], attr_[4 + ch], attr_[8 + ch]});
+      lo_[ch] = std::min({color_[0][ch], color_[1][ch], color_[2][ch]});
+      hi_[ch] = std::max({color_[0][ch], color_[1][ch], color_[2][ch]});
     }
     // 16.16 change per pixel right and down, from the exact edge steps; steep ones take the exact path.
     const double scale = 65536.0 / area;
     for (int ch = 0; ch < 4; ++ch) {
-      const double v[3] = {attr_[ch], attr_[4 + ch], attr_[8 + ch]};
+      const double v[3] = {color_[0][ch], color_[1][ch], color_[2][ch]};
       const double sx = (step_x[0] * v[0] + step_x[1] * v[1] + step_x[2] * v[2]) * scale;
       const double sy = (step_y[0] * v[0] + step_y[1] * v[1] + step_y[2] * v[2]) * scale;
       steep_ = steep_ || !(std::fabs(sx) < 0x1p40 && std::fabs(sy) < 0x1p40);
@@ -209,7 +209,7 @@ class ColorPlanes {
 #if defined(__x86_64__)
     wide_ = surface.simd == Simd::avx2 && (C == 3 || C == 4) && !blend && !steep_;
     for (int k = 0; k < 3; ++k)
-      for (int ch = 0; ch < 4; ++ch) vertex_[k][ch] = attr_[4 * k + ch];
+      for (int ch = 0; ch < 4; ++ch) vertex_[k][ch] = color_[k][ch];
     for (int ch = 0; ch < 4; ++ch)
       reach_[ch] = static_cast<double>(8 * (std::abs(slope_x_[ch]) + std::abs(slope_y_[ch])));
 #endif
@@ -220,7 +220,7 @@ class ColorPlanes {
   Rgba8 at(const double (&l)[3]) const {
     std::uint8_t out[4];
     for (int ch = 0; ch < 4; ++ch) {
-      const double v = l[0] * attr_[ch] + l[1] * attr_[4 + ch] + l[2] * attr_[8 + ch];
+      const double v = l[0] * color_[0][ch] + l[1] * color_[1][ch] + l[2] * color_[2][ch];
       out[ch] = to_byte(std::clamp(v, lo_[ch], hi_[ch]));
     }
     return {out[0], out[1], out[2], out[3]};
@@ -263,7 +263,7 @@ class ColorPlanes {
     const double scale = 65536.0 / b.area;
     std::int64_t start[4];
     for (int ch = 0; ch < 4; ++ch) {
-      const double n0 = b.e[0] * attr_[ch] + b.e[1] * attr_[4 + ch] + b.e[2] * attr_[8 + ch];
+      const double n0 = b.e[0] * color_[0][ch] + b.e[1] * color_[1][ch] + b.e[2] * color_[2][ch];
       start[ch] = floor_to_int(n0 * scale + 0.5) + 0x8000;
     }
 #if defined(__SSE2__)
@@ -486,7 +486,7 @@ class ColorPlanes {
       std::uint8_t out[4][8] = {};
       for (int ch = 0; ch < 4; ++ch) {
         if (!stores(ch)) continue;
-        const double v0 = attr_[ch], v1 = attr_[4 + ch], v2 = attr_[8 + ch];
+        const double v0 = color_[0][ch], v1 = color_[1][ch], v2 = color_[2][ch];
         const double n0 = e[0] * v0 + e[1] * v1 + e[2] * v2;
         const double dn = b.dx[0] * v0 + b.dx[1] * v1 + b.dx[2] * v2;
         D8 value = (n0 + lane * dn) * inv_area + 0.5;
@@ -511,7 +511,7 @@ class ColorPlanes {
   }
 
   const Surface* surface_ = nullptr;
-  const float* attr_ = nullptr;
+  const float* color_[3] = {};  // vertex k's RGBA in the record (Varyings::record_at)
   bool blend_ = false;
   double lo_[4] = {}, hi_[4] = {};                  // each channel's range over the vertices
   std::int64_t slope_x_[4] = {}, slope_y_[4] = {};  // 16.16 per pixel right and down

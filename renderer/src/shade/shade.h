@@ -75,7 +75,8 @@ class TriangleShader {
     }
     if (kind_ == Kind::flat) std::construct_at(&kernel_.fill, surface, flat_, mode_.blend);
     if (kind_ == Kind::smooth)
-      std::construct_at(&kernel_.planes, surface, attr_, step_x, step_y, area, mode_.blend);
+      std::construct_at(&kernel_.planes, surface, at[static_cast<int>(Varying::color)], step_x, step_y, area,
+                        mode_.blend);
   }
 
   /// Every pixel of `clip` is covered; `first` is the block at the clip's block-grid origin (its mask is
