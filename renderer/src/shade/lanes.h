@@ -77,11 +77,21 @@ inline constexpr IntLanes kLaneBit = {1, 2, 4, 8, 16, 32, 64, 128};
 
 /// byte_lanes's eight values as bytes of a word, lane i in byte i (truncated, as lane_byte does).
 [[gnu::always_inline]] inline std::uint64_t lane_bytes(const FloatLanes& v) {
+  const IntLanes whole = __builtin_convertvector(v, IntLanes);
+#if defined(__SSE2__)
+  // Packed by saturating halves (GCC's generic narrowing extracts lane by lane); values are 0..255.
+  using Int4 = std::int32_t __attribute__((vector_size(16)));
+  const __m128i lo = reinterpret_cast<__m128i>(Int4(__builtin_shufflevector(whole, whole, 0, 1, 2, 3)));
+  const __m128i hi = reinterpret_cast<__m128i>(Int4(__builtin_shufflevector(whole, whole, 4, 5, 6, 7)));
+  const __m128i words = _mm_packs_epi32(lo, hi);
+  return static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_packus_epi16(words, words)));
+#else
   using ByteLanes = std::uint8_t __attribute__((vector_size(kLanes)));
-  const ByteLanes b = __builtin_convertvector(__builtin_convertvector(v, IntLanes), ByteLanes);
+  const ByteLanes b = __builtin_convertvector(whole, ByteLanes);
   std::uint64_t word;
   std::memcpy(&word, &b, sizeof word);
   return word;
+#endif
 }
 
 /// Lane i of a value (the value itself for one lane).
