@@ -12,6 +12,7 @@ namespace {
 
 using raster::Interpolation;
 using raster::Varying;
+using raster::VaryingLayout;
 using raster::Varyings;
 using test::SceneBuilder;
 
@@ -182,53 +183,59 @@ TEST(Plan, RejectsScenesBuiltInCodeThatReferToMissingData) {
   EXPECT_THROW(raster::plan(s.scene), raster::SceneError);
 }
 
-// Varyings::add lays rows out in enum order whatever the order they are added in: a vertex holds every row
-// (clipping interpolates those before depth), a record the flat rows once and the others per vertex.
+// VaryingLayout lays rows out in enum order whatever the order they were added in: a vertex holds every
+// row (clipping interpolates those before depth), a record the flat rows once and the others per vertex.
 TEST(Plan, VaryingsLayOutRowsInEnumOrder) {
   Varyings v;  // colour alone, flat: the default
-  EXPECT_EQ(v.floats, 4);
-  EXPECT_EQ(v.flat_floats, 4);
-  EXPECT_EQ(v.stride, 0);
-  EXPECT_EQ(v.record_floats(), 4);
+  VaryingLayout l = VaryingLayout::of(v);
+  EXPECT_EQ(l.floats, 4);
+  EXPECT_EQ(l.flat_floats, 4);
+  EXPECT_EQ(l.stride, 0);
+  EXPECT_EQ(l.record_floats(), 4);
   v.add(Varying::inv_w, Interpolation::affine)
       .add(Varying::normal, Interpolation::perspective)
       .add(Varying::depth, Interpolation::affine);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::color)], 0);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::normal)], 4);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::uv)], -1);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::position)], -1);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::depth)], 7);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::inv_w)], 8);
-  EXPECT_EQ(v.floats, 9);
-  EXPECT_EQ(v.clipped_floats, 7) << "depth and 1 / w are written by the viewport, not clipped";
-  EXPECT_EQ(v.flat_floats, 4);
-  EXPECT_EQ(v.stride, 5);
-  EXPECT_EQ(v.record_floats(), 19) << "a flat colour once + 3 x (normal, depth, 1 / w)";
-  EXPECT_EQ(v.record_at(Varying::color, 2), 0) << "flat: every vertex reads the one colour";
-  EXPECT_EQ(v.record_at(Varying::normal, 0), 4);
-  EXPECT_EQ(v.record_at(Varying::normal, 1), 9);
-  EXPECT_EQ(v.record_at(Varying::depth, 2), 4 + 2 * 5 + 3);
-  EXPECT_EQ(v.record_at(Varying::inv_w, 2), 18);
+  l = VaryingLayout::of(v);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::color)], 0);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::normal)], 4);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::uv)], -1);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::position)], -1);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::depth)], 7);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::inv_w)], 8);
+  EXPECT_EQ(l.floats, 9);
+  EXPECT_EQ(l.clipped_floats, 7) << "depth and 1 / w are written by the viewport, not clipped";
+  EXPECT_EQ(l.flat_floats, 4);
+  EXPECT_EQ(l.stride, 5);
+  EXPECT_EQ(l.record_floats(), 19) << "a flat colour once + 3 x (normal, depth, 1 / w)";
+  EXPECT_EQ(l.record_at(Varying::color, 2), 0) << "flat: every vertex reads the one colour";
+  EXPECT_EQ(l.record_at(Varying::normal, 0), 4);
+  EXPECT_EQ(l.record_at(Varying::normal, 1), 9);
+  EXPECT_EQ(l.record_at(Varying::depth, 2), 4 + 2 * 5 + 3);
+  EXPECT_EQ(l.record_at(Varying::inv_w, 2), 18);
 
   Varyings in_order;
   in_order.add(Varying::normal, Interpolation::perspective)
       .add(Varying::depth, Interpolation::affine)
       .add(Varying::inv_w, Interpolation::affine);
-  EXPECT_EQ(v, in_order) << "the order of add() does not change the layout";
+  EXPECT_EQ(v, in_order) << "the order of add() does not change the description";
 
   // Every row, colour re-interpolated: nothing flat, 14 floats a vertex, 12 of them clipped.
   v.add(Varying::uv, Interpolation::perspective)
       .add(Varying::position, Interpolation::perspective)
       .add(Varying::color, Interpolation::perspective);
-  EXPECT_EQ(v.floats, Varyings::kMaxFloats);
-  EXPECT_EQ(v.clipped_floats, 12);
-  EXPECT_EQ(v.flat_floats, 0);
-  EXPECT_EQ(v.stride, 14);
-  EXPECT_EQ(v.record_floats(), 42);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::uv)], 7);
-  EXPECT_EQ(v.vertex_offset[static_cast<int>(Varying::position)], 9);
-  EXPECT_EQ(v.record_at(Varying::color, 1), 14);
-  EXPECT_EQ(v.record_at(Varying::position, 2), 28 + 9);
+  l = VaryingLayout::of(v);
+  EXPECT_EQ(l.floats, VaryingLayout::kMaxFloats);
+  EXPECT_EQ(l.clipped_floats, 12);
+  EXPECT_EQ(l.flat_floats, 0);
+  EXPECT_EQ(l.stride, 14);
+  EXPECT_EQ(l.record_floats(), 42);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::uv)], 7);
+  EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::position)], 9);
+  EXPECT_EQ(l.record_at(Varying::color, 1), 14);
+  EXPECT_EQ(l.record_at(Varying::position, 2), 28 + 9);
+  // The description is two bits a row: the three modes of every DrawPlan stay as small as the booleans
+  // they replaced (a 2D scene has a DrawPlan per primitive).
+  EXPECT_LE(sizeof(Varyings), 2u);
 }
 
 raster::Scene one_mesh_scene(raster::Mesh mesh) {
@@ -295,7 +302,7 @@ TEST(Plan, EachMeshGetsTheVaryingsItsShadingReads) {
   const Varyings varied_rows = rows(one_mesh_scene(varied));
   EXPECT_EQ(has(varied_rows, {color, depth, inv_w}), "");
   EXPECT_EQ(varied_rows.how(color), Interpolation::perspective);
-  EXPECT_EQ(varied_rows.record_floats(), 3 * 6);
+  EXPECT_EQ(VaryingLayout::of(varied_rows).record_floats(), 3 * 6);
 }
 
 }  // namespace

@@ -37,13 +37,31 @@ enum class Interpolation : std::uint8_t {
   perspective,  ///< linear in the world: v / w and 1 / w interpolated in screen space, then divided
 };
 
-/// The varyings of a primitive, decided by the plan: which rows exist and how each is interpolated, and from
-/// that the layout every stage uses (no stage writes an offset of its own).
+/// The varyings of a primitive, decided by the plan: which rows exist and how each is interpolated, two bits
+/// a row (0: absent, else 1 + Interpolation), so that the three modes of every DrawPlan stay small (a scene
+/// of 100,000 triangles has 100,000 of them). Setup lays it out once per draw call (VaryingLayout).
+struct Varyings {
+  std::uint16_t rows = 1;  ///< bits 2i..2i+1: row i; the default is a flat colour alone
+
+  bool has(Varying v) const { return (rows >> (2 * static_cast<int>(v)) & 3) != 0; }
+  Interpolation how(Varying v) const {
+    return static_cast<Interpolation>((rows >> (2 * static_cast<int>(v)) & 3) - 1);
+  }
+  /// Adds (or re-interpolates) a row.
+  Varyings& add(Varying v, Interpolation how) {
+    const int shift = 2 * static_cast<int>(v);
+    rows = static_cast<std::uint16_t>((rows & ~(3 << shift)) | (static_cast<int>(how) + 1) << shift);
+    return *this;
+  }
+  friend bool operator==(const Varyings&, const Varyings&) = default;
+};
+
+/// Where a Varyings' rows live, the layout every stage uses (no stage writes an offset of its own):
 ///  - a vertex (geometry's clip and screen vertices): every row present, in enum order, `floats` in all; the
 ///    first `clipped_floats` (every row before depth) are what clipping interpolates;
 ///  - a triangle record's attribute floats: the flat rows once (`flat_floats`), then per vertex k the
 ///    interpolated rows (`stride` floats each, vertex k's at flat_floats + k stride).
-struct Varyings {
+struct VaryingLayout {
   static constexpr int kMaxFloats = 14;  ///< every row: 4 + 3 + 2 + 3 + 1 + 1
   Interpolation interpolation[kVaryingCount] = {};
   std::int8_t vertex_offset[kVaryingCount] = {0, -1, -1, -1, -1, -1};  ///< in a vertex's floats; -1: absent
@@ -51,10 +69,9 @@ struct Varyings {
                                               -1, -1};  ///< flat: in the record; else in a vertex's stride
   std::uint8_t floats = 4, clipped_floats = 4, flat_floats = 4, stride = 0;
 
+  static VaryingLayout of(Varyings varyings);
   bool has(Varying v) const { return vertex_offset[static_cast<int>(v)] >= 0; }
   Interpolation how(Varying v) const { return interpolation[static_cast<int>(v)]; }
-  /// Adds (or re-interpolates) a row and lays every row out again.
-  Varyings& add(Varying v, Interpolation how);
   /// Where vertex k's value of `v` starts in a record's attribute floats (the same k for a flat row).
   int record_at(Varying v, int k) const {
     const int i = static_cast<int>(v);
@@ -62,7 +79,6 @@ struct Varyings {
                                                    : flat_floats + k * stride + record_offset[i];
   }
   int record_floats() const { return flat_floats + 3 * stride; }
-  friend bool operator==(const Varyings&, const Varyings&) = default;
 };
 
 /// How one primitive's triangles or lines are drawn.

@@ -7,7 +7,7 @@ namespace raster::detail {
 namespace {
 
 // A 2D vertex carries its colour only (the plan gives 2D modes no other varying).
-SetupVertex vertex_2d(const Varyings& varyings, const Point2& p, Rgba8 c) {
+SetupVertex vertex_2d(const VaryingLayout& varyings, const Point2& p, Rgba8 c) {
   SetupVertex v;
   v.x = snap(p.x), v.y = snap(p.y);
   float* color = v.at(varyings, Varying::color);
@@ -17,7 +17,7 @@ SetupVertex vertex_2d(const Varyings& varyings, const Point2& p, Rgba8 c) {
 
 void add_triangle(const Scene& scene, const Primitive& prim, std::uint32_t call, Setup& setup) {
   const Point2* pts = &scene.points[prim.first_point];
-  const Varyings& with = setup.calls[call].mode.varyings;
+  const VaryingLayout& with = setup.calls[call].layout;
   const SetupVertex v[3] = {vertex_2d(with, pts[0], scene.vertex_color(prim, 0)),
                             vertex_2d(with, pts[1], scene.vertex_color(prim, 1)),
                             vertex_2d(with, pts[2], scene.vertex_color(prim, 2))};
@@ -47,7 +47,7 @@ void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint3
       {a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
   const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
   const Rgba8 c[4] = {ca, cb, cb, ca};
-  const Varyings& with = setup.calls[call].mode.varyings;
+  const VaryingLayout& with = setup.calls[call].layout;
   for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
     const SetupVertex v[3] = {vertex_2d(with, q[t[0]], c[t[0]]), vertex_2d(with, q[t[1]], c[t[1]]),
                               vertex_2d(with, q[t[2]], c[t[2]])};

@@ -19,14 +19,15 @@ namespace raster::detail {
 namespace {
 
 /// The one vertex record of the 3D path: clip-space position plus the values of its primitive's varyings,
-/// laid out as a SetupVertex's (raster/plan.h: Varyings), so clipping interpolates them all with one routine
-/// and a projected vertex takes them as they are.
+/// laid out as a SetupVertex's (raster/plan.h: VaryingLayout), so clipping interpolates them all with one
+/// routine and a projected vertex takes them as they are.
 struct ClipVertex {
-  double x = 0, y = 0, z = 0, w = 0;        ///< clip space (see ViewPlan)
-  float values[Varyings::kMaxFloats] = {};  ///< at Varyings::vertex_offset; depth and 1/w not yet written
+  double x = 0, y = 0, z = 0, w = 0;  ///< clip space (see ViewPlan)
+  float values[VaryingLayout::kMaxFloats] =
+      {};  ///< at Varyings::vertex_offset; depth and 1/w not yet written
 };
 
-/// a + (b - a) t, position and the first `floats` values (Varyings::clipped_floats).
+/// a + (b - a) t, position and the first `floats` values (VaryingLayout::clipped_floats).
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t, int floats) {
   ClipVertex r;
   r.x = a.x + (b.x - a.x) * t, r.y = a.y + (b.y - a.y) * t, r.z = a.z + (b.z - a.z) * t,
@@ -128,7 +129,7 @@ void put_color(float* to, Rgba8 c) {
 }
 
 /// Where the viewport puts a projected vertex's depth and 1 / w, for the rows `varyings` has.
-void put_projection(const Varyings& varyings, SetupVertex& v, double depth, double inv_w) {
+void put_projection(const VaryingLayout& varyings, SetupVertex& v, double depth, double inv_w) {
   if (varyings.has(Varying::depth)) *v.at(varyings, Varying::depth) = static_cast<float>(depth);
   if (varyings.has(Varying::inv_w)) *v.at(varyings, Varying::inv_w) = static_cast<float>(inv_w);
 }
@@ -218,7 +219,7 @@ struct MeshView {
   }
   /// The vertex in clip space (computed again: only clipped primitives need it), with colour `c` in the
   /// place `varyings` gives it.
-  ClipVertex clip_vertex(std::uint32_t i, const Varyings& varyings, Rgba8 c) const {
+  ClipVertex clip_vertex(std::uint32_t i, const VaryingLayout& varyings, Rgba8 c) const {
     const Vec4 p = transform(model_to_clip, mesh.positions[i]);
     ClipVertex v{p.x, p.y, p.z, p.w, {}};
     put_color(v.values + varyings.vertex_offset[static_cast<int>(Varying::color)], c);
@@ -229,7 +230,7 @@ struct MeshView {
 // A triangle that crosses a clip plane: clipped in homogeneous space, projected, fanned into records.
 void add_clipped(const MeshView& view, std::array<ClipVertex, 9>& poly, std::uint32_t call, bool back,
                  const Setup& setup, Records& part) {
-  const Varyings& varyings = setup.calls[call].mode.varyings;
+  const VaryingLayout& varyings = setup.calls[call].layout;
   SetupVertex dv[9];
   const int n = clip_polygon(poly, 3, view.planes, varyings.clipped_floats);
   for (int k = 0; k < n; ++k) {
@@ -266,7 +267,7 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
   const Mesh& mesh = view.mesh;
   const PodArray<Vec3>& world = view.world;
   const auto& tri = mesh.triangles[t];
-  const Varyings& with = mode.varyings;
+  const VaryingLayout& with = setup.calls[call].layout;
   float shade[3] = {1, 1, 1};
   if (mode.lit &&
       !with.has(Varying::normal)) {  // flat: once per face, lit from the side seen, at its centroid
@@ -306,7 +307,7 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
   const PodArray<Vec3>& world = view.world;
-  const Varyings& with = mode.varyings;
+  const VaryingLayout& with = setup.calls[call].layout;
   const std::size_t floats = static_cast<std::size_t>(with.record_floats());
   part.triangles.reserve_more(end - begin), part.order.reserve_more(end - begin);
   part.attributes.reserve_more((end - begin) * floats);
@@ -412,7 +413,7 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
 void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, double ay, double ad, double aw,
                         double bx, double by, double bd, double bw, double width, std::uint32_t call,
                         Setup& setup) {
-  const Varyings& with = setup.calls[call].mode.varyings;
+  const VaryingLayout& with = setup.calls[call].layout;
   const double dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
   if (!(len > 0)) return;
   const double nx = -dy / len * 0.5 * width, ny = dx / len * 0.5 * width;
@@ -432,7 +433,7 @@ void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, dou
 // rectangle `width` pixels wide around it.
 void add_segment(const MeshView& view, ClipVertex a, ClipVertex b, const PrimitivePlan& mode,
                  std::uint32_t call, double width, Setup& setup) {
-  const Varyings& with = setup.calls[call].mode.varyings;
+  const VaryingLayout& with = setup.calls[call].layout;
   if (!clip_segment(a, b, view.planes, with.clipped_floats)) return;
   double ax, ay, ad, aw, bx, by, bd, bw;
   view.viewport.project(a, ax, ay, ad, aw);
@@ -480,9 +481,9 @@ void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setu
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (meter.add(StopMeter::kPrimitiveWork)) break;
     if ((view.outside[segments[s][0]] | view.outside[segments[s][1]]) & 0x80) continue;
-    add_segment(view, view.clip_vertex(segments[s][0], line_mode.varyings, segment_colors[s][0]),
-                view.clip_vertex(segments[s][1], line_mode.varyings, segment_colors[s][1]), line_mode,
-                line_call, 1, setup);
+    const VaryingLayout& with = setup.calls[line_call].layout;
+    add_segment(view, view.clip_vertex(segments[s][0], with, segment_colors[s][0]),
+                view.clip_vertex(segments[s][1], with, segment_colors[s][1]), line_mode, line_call, 1, setup);
   }
 }
 
@@ -530,6 +531,7 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
   // ray to the eye leaves it where it is on screen and changes only z. The depth stops at the near plane: on
   // a small image two pixels are more than the 1% margin a fitted near plane leaves in front of the content,
   // and edges on its nearest face would be clipped away.
+  const VaryingLayout edge_layout = VaryingLayout::of(edge_mode.varyings);
   auto pulled = [&](std::uint32_t i) {
     const Vec3& p = world[i];
     Vec3 toward_eye = forward * -1.0;
@@ -543,8 +545,7 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
     double z = c.z;  // reversed depth: z = w at the near plane, larger z / w is nearer
     if (c.w > 0 && nearer.w > 0) z = std::max(z, std::min(nearer.z / nearer.w, 1.0) * c.w);
     ClipVertex v{c.x, c.y, z, c.w, {}};
-    put_color(v.values + edge_mode.varyings.vertex_offset[static_cast<int>(Varying::color)],
-              mesh.edges.color);
+    put_color(v.values + edge_layout.vertex_offset[static_cast<int>(Varying::color)], mesh.edges.color);
     return v;
   };
   const std::uint32_t call = setup.add_call(make_call(edge_mode));

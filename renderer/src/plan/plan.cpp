@@ -13,22 +13,25 @@
 
 namespace raster {
 
-Varyings& Varyings::add(Varying v, Interpolation how) {
-  const int added = static_cast<int>(v);
-  if (vertex_offset[added] < 0) vertex_offset[added] = 0;  // present; laid out below
-  interpolation[added] = how;
-  floats = clipped_floats = flat_floats = stride = 0;
+VaryingLayout VaryingLayout::of(Varyings varyings) {
+  VaryingLayout l;
+  l.floats = l.clipped_floats = l.flat_floats = l.stride = 0;
   for (int i = 0; i < kVaryingCount; ++i) {
-    if (vertex_offset[i] < 0) continue;
+    const Varying v = static_cast<Varying>(i);
+    if (!varyings.has(v)) {
+      l.vertex_offset[i] = l.record_offset[i] = -1;
+      continue;
+    }
     const std::uint8_t width = kVaryingWidth[i];
-    vertex_offset[i] = static_cast<std::int8_t>(floats);
-    floats += width;
-    if (i < static_cast<int>(Varying::depth)) clipped_floats = floats;
-    std::uint8_t& block = interpolation[i] == Interpolation::flat ? flat_floats : stride;
-    record_offset[i] = static_cast<std::int8_t>(block);
+    l.interpolation[i] = varyings.how(v);
+    l.vertex_offset[i] = static_cast<std::int8_t>(l.floats);
+    l.floats += width;
+    if (i < static_cast<int>(Varying::depth)) l.clipped_floats = l.floats;
+    std::uint8_t& block = l.interpolation[i] == Interpolation::flat ? l.flat_floats : l.stride;
+    l.record_offset[i] = static_cast<std::int8_t>(block);
     block += width;
   }
-  return *this;
+  return l;
 }
 namespace {
 

@@ -40,6 +40,7 @@ bool may_touch(const EdgeFunctions<std::int64_t>& e, Rect tile) {
 
 std::uint32_t Setup::add_call(const DrawCall& call) {
   calls.push_back(call);
+  calls.back().layout = VaryingLayout::of(call.mode.varyings);
   return static_cast<std::uint32_t>(calls.size() - 1);
 }
 
@@ -92,7 +93,7 @@ void Setup::finish(Records& part, std::uint32_t call, const SetupVertex* const (
   TriangleRecord& r = part.triangles.back();
   // The flat rows from vertex 0, then each vertex's interpolated rows: one run of floats per vertex, since
   // a vertex holds its rows in the same order (Varyings).
-  const Varyings& varyings = calls[call].mode.varyings;
+  const VaryingLayout& varyings = calls[call].layout;
   r.attributes = static_cast<std::uint32_t>(part.attributes.size());
   float* out = part.attributes.grow(static_cast<std::size_t>(varyings.record_floats()));
   for (int i = 0; i < kVaryingCount; ++i) {

@@ -28,7 +28,8 @@ inline constexpr double kFastRangePx = 32768.0;
 
 /// What a record is drawn with: the plan's decisions for its primitive plus the constants shading needs.
 struct DrawCall {
-  PrimitivePlan mode;  ///< mode.varyings: what its records' attribute floats hold, and where
+  PrimitivePlan mode;
+  VaryingLayout layout;  ///< mode.varyings laid out: what its records' attribute floats hold, and where
   /// 3D lighting: the view's lights (ViewPlan::lights) as shading reads them.
   LightRig lights;
   /// Textured modes: the texture its triangles sample (in Setup::textures), or nullptr for faces without one.
@@ -47,9 +48,9 @@ struct SetupVertex {
   double x = 0, y = 0;  ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
   /// At Varyings::vertex_offset, rows in Varying order. Not initialised: whoever makes a vertex writes every
   /// row its call has (a dense mesh makes three a triangle, and zeroing them cost more than filling them).
-  float values[Varyings::kMaxFloats];
+  float values[VaryingLayout::kMaxFloats];
 
-  float* at(const Varyings& v, Varying name) { return values + v.vertex_offset[static_cast<int>(name)]; }
+  float* at(const VaryingLayout& v, Varying name) { return values + v.vertex_offset[static_cast<int>(name)]; }
 };
 
 /// Edge functions of one triangle on the 1/256 px grid, in the triangle's own integer type T (int64 for the
@@ -127,7 +128,7 @@ struct Setup {
   /// pixels whose centre they contain, and a triangle that covers no centre gets no record.
   bool centre_samples = false;
 
-  /// Adds a draw call; returns its index.
+  /// Adds a draw call (its layout made from its mode's varyings); returns its index.
   std::uint32_t add_call(const DrawCall& call);
   /// The part records are appended to (a new one when there is none).
   Records& last_part() { return parts.empty() ? parts.emplace_back() : parts.back(); }

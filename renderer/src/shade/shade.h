@@ -38,7 +38,7 @@ class TriangleShader {
         union_(call.mode.union_coverage && surface.coverage_mode == Coverage::area),
         msaa_(surface.coverage_mode == Coverage::samples) {
     // Vertex k's value of each varying in the record, or nullptr when it has none.
-    const Varyings& with = call.mode.varyings;
+    const VaryingLayout& with = call.layout;
     const float* at[kVaryingCount][3] = {};
     for (int i = 0; i < kVaryingCount; ++i)
       if (with.vertex_offset[i] >= 0)
