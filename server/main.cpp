@@ -6,6 +6,7 @@
 #include <malloc.h>  // mallopt (glibc)
 #endif
 
+#include <algorithm>
 #include <cerrno>
 #include <condition_variable>
 #include <cstdio>
@@ -34,7 +35,7 @@ constexpr const char* kUsage = R"(usage:
   rasterd render SCENE.json [-o OUT.png] [--explain]   render a scene file ('-' = stdin / stdout)
   rasterd render MODEL [-o OUT.png] [--width N] [--height N] [--background C] [--view V]
                  [--projection P] [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z]
-                 [--part NAME=FILE]
+                 [--antialias 1|4|8|16|area] [--format F] [--scale S] [--part NAME=FILE]
                                                         a bare model (OBJ, STL, PLY, glTF) in the default
                                                         scene; the files it names (an OBJ's MTL and
                                                         textures, a glTF's buffers and images) are read
@@ -88,12 +89,28 @@ int write_all(const std::string& path, const char* data, std::size_t size) {
   return 0;
 }
 
+// The service's words for a query parameter are a flag's here: 'query parameter "width": ...' reads
+// '--width: ...', and an unknown one is answered with the list of flags.
+std::string as_flags(std::string message) {
+  const std::string prefix = "query parameter \"";
+  if (message.rfind(prefix, 0) == 0)
+    if (const std::size_t end = message.find('"', prefix.size()); end != std::string::npos)
+      message = "--" + message.substr(prefix.size(), end - prefix.size()) + message.substr(end + 1);
+  if (const std::size_t at = message.find(": unknown; known: "); at != std::string::npos) {
+    std::string flags;
+    for (std::string_view name : rasterd::model_param_names()) flags.append("--").append(name).append(", ");
+    message = message.substr(0, at) + ": not a flag of render; its flags: -o, --explain, --part, " + flags +
+              "--scale";
+  }
+  return message;
+}
+
 std::string describe(const raster::SceneError& e) {
   std::string where;
   if (!e.where().pointer.empty()) where = " at " + e.where().pointer;
   if (e.where().byte) where += " (byte " + std::to_string(e.where().byte) + ")";
   if (e.where().line) where += " (line " + std::to_string(e.where().line) + ")";
-  return e.what() + where;
+  return as_flags(e.what()) + where;
 }
 
 // A model read from a file finds the files it names beside it, as model viewers do: an OBJ's MTL its mtllib
@@ -319,14 +336,20 @@ int main(int argc, char** argv) {
   }
   const std::string command = args[0];
   args.erase(args.begin());
-  if (command == "render") return run_render(args);
-  if (command == "healthcheck") return rasterd::run_healthcheck(args);
-  if (command == "serve") {
-    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+  // --help or -h anywhere on a subcommand's line: its usage, and exit 0 (no flag takes them as a value).
+  if (std::find_if(args.begin(), args.end(),
+                   [](const std::string& a) { return a == "--help" || a == "-h"; }) != args.end()) {
+    if (command == "serve") {
       std::cout << rasterd::service_help();
       return 0;
     }
-    return run_serve(args);
+    if (command == "render" || command == "healthcheck") {
+      std::cout << kUsage;
+      return 0;
+    }
   }
+  if (command == "render") return run_render(args);
+  if (command == "healthcheck") return rasterd::run_healthcheck(args);
+  if (command == "serve") return run_serve(args);
   return usage_error("unknown command '" + command + "'");
 }

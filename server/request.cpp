@@ -39,8 +39,16 @@ bool looks_like_flattened_obj(std::string_view body) {
 }
 
 // The query parameters of a bare model's default scene ("explain" is the route's).
-constexpr std::string_view kModelParams[] = {"width", "height", "background", "view", "projection",
-                                             "fov",   "eye",    "target",     "up",   "format"};
+constexpr std::string_view kModelParams[] = {"width", "height", "background", "view",   "projection", "fov",
+                                             "eye",   "target", "up",         "format", "antialias"};
+
+}  // namespace
+
+std::span<const std::string_view> model_param_names() {
+  return kModelParams;
+}
+
+namespace {
 
 std::string known_params() {
   std::string list;
@@ -165,6 +173,8 @@ bool set_field(raster::Scene& scene, const std::string& name, const std::string&
     camera.target = vector_param(name, value), camera.has_target = true;
   } else if (name == "up") {
     camera.up = raster::checks::up(vector_param(name, value)), camera.has_up = true;
+  } else if (name == "antialias") {
+    scene.antialias = raster::checks::antialias(value);
   } else {
     return false;
   }

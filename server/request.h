@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +37,9 @@ class QueryError : public raster::SceneError {
 /// the picture (a new `v` is a new URL to every cache). It and the parameters that sharing tools append
 /// (`utm_*`, `fbclid`, `gclid`, `msclkid`) are ignored, never an error.
 bool ignored_param(std::string_view name);
+
+/// The query parameters of a bare model's default scene ("scale" and "explain" aside): the CLI's model flags.
+std::span<const std::string_view> model_param_names();
 
 /// `?scale=` (device pixel ratio, for `srcset`): multiplies the image's width and height (rounded), every 2D
 /// coordinate and every width in pixels; 3D content is framed by its camera and so just gets more pixels.

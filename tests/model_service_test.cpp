@@ -57,6 +57,39 @@ TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
   EXPECT_NE(flat, smooth);
 }
 
+// Issue 42: a bare model takes ?antialias= with the scene field's values and words: the picture is the one
+// the same model gets in a scene that says "antialias", and a bad value is a 400 naming the parameter.
+TEST(ModelService, AntialiasIsAQueryParameterOfABareModel) {
+  test::TestServer server;
+  const std::string obj = test::write_obj(test::make_mesh(5));
+  auto aliased = server.client().Post(kQuery, obj, "model/obj");
+  ASSERT_TRUE(aliased);
+  ASSERT_EQ(aliased->status, 200) << aliased->body;
+  for (const char* level : {"4", "area"}) {
+    SCOPED_TRACE(level);
+    auto smooth = server.client().Post(std::string(kQuery) + "&antialias=" + level, obj, "model/obj");
+    ASSERT_TRUE(smooth);
+    ASSERT_EQ(smooth->status, 200) << smooth->body;
+    EXPECT_NE(smooth->body, aliased->body);
+    const std::string value = level == std::string("area") ? "\"area\"" : level;
+    const std::string scene =
+        R"({"width": 64, "height": 64, "antialias": )" + value +
+        R"(, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "model"}]})";
+    auto in_scene = server.client().Post(
+        "/render", httplib::MultipartFormDataItems{{"scene", scene, "", ""}, {"model", obj, "m.obj", ""}});
+    ASSERT_TRUE(in_scene);
+    ASSERT_EQ(in_scene->status, 200) << in_scene->body;
+    EXPECT_EQ(smooth->body, in_scene->body) << "the parameter is the scene field";
+  }
+  auto bad = server.client().Post(std::string(kQuery) + "&antialias=3", obj, "model/obj");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  const std::string detail = problem_detail(bad);
+  EXPECT_NE(detail.find("query parameter \"antialias\": \"antialias\" is \"area\" or the samples per pixel"),
+            std::string::npos)
+      << detail;
+}
+
 // A glTF document is JSON, and model/gltf+json ends in "+json": it is still a model, not a scene.
 TEST(ModelService, AGltfDocumentIsAModelWhateverItsJsonContentType) {
   test::TestServer server;

@@ -199,6 +199,34 @@ TEST(Newcomer, TheCliRefusesWhatItWouldIgnore) {
   EXPECT_NE(out.find("--background needs a value"), std::string::npos) << out;
 }
 
+// Issue 42: --help on every subcommand prints its usage and exits 0, wherever it stands; a bad or unknown
+// model flag is named as a flag (--antialias, --widht), not as a query parameter, and an unknown one is
+// answered with render's flags.
+TEST(Newcomer, EverySubcommandHelpsAndNamesItsFlags) {
+  const std::pair<const char*, const char*> helps[] = {{" render --help", "rasterd render MODEL"},
+                                                       {" render model.obj -h", "rasterd render MODEL"},
+                                                       {" healthcheck --help", "rasterd healthcheck"},
+                                                       {" serve --help", "rasterd serve [--flag value ...]"}};
+  for (const auto& [line, says] : helps) {
+    const auto [status, out] = run(RASTERD_BINARY + std::string(line));
+    EXPECT_EQ(status, 0) << line << ": " << out;
+    EXPECT_NE(out.find(says), std::string::npos) << line << ": " << out;
+  }
+  const std::string model = ::testing::TempDir() + "/newcomer-flags.obj";
+  { std::ofstream(model) << kObj; }
+  auto [status, out] = run(RASTERD_BINARY " render " + model + " --antialias 3 -o /dev/null");
+  EXPECT_EQ(status, 1) << out;
+  EXPECT_NE(out.find("--antialias: \"antialias\" is \"area\" or the samples per pixel"), std::string::npos)
+      << out;
+  EXPECT_EQ(out.find("query parameter"), std::string::npos) << out;
+  std::tie(status, out) = run(RASTERD_BINARY " render " + model + " --widht 3 -o /dev/null");
+  EXPECT_EQ(status, 1) << out;
+  EXPECT_NE(out.find("--widht: not a flag of render"), std::string::npos) << out;
+  EXPECT_NE(out.find("--antialias"), std::string::npos) << "the flags are listed: " << out;
+  std::tie(status, out) = run(RASTERD_BINARY " render " + model + " --antialias area -o /dev/null");
+  EXPECT_EQ(status, 0) << out;
+}
+
 // 8. A colour whose '#' the URL cut off: the error says how to send it, and hex without '#' works.
 TEST(Newcomer, ABackgroundCutAtTheHashSaysHowToSendIt) {
   TestServer server;

@@ -47,6 +47,9 @@ void camera(const Camera& camera, const std::string& at, std::size_t byte);
 /// A model primitive's "format": a name of model_formats(), as written (case matters, as in a scene).
 ModelFormat model_format(std::string_view name);
 
+/// "area" or the samples per pixel as digits (1, 4, 8, 16): the scene's "antialias" field, as text.
+Antialias antialias(std::string_view text);
+
 /// The mesh of a model primitive, read as the scene reader reads one: parse_model(bytes, hint, ...) within
 /// the texels `limits` leave, grey when the model has no colours of its own. A reader's error is rethrown
 /// with its line or its byte in the model's words, located at `pointer` and `byte` (0 when the model came in

@@ -2,6 +2,7 @@
 // come from elsewhere too. The reader calls them, so a query parameter and a scene's field are refused alike.
 #include "raster/scene_checks.h"
 
+#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -40,6 +41,16 @@ void image_size(int width, int height, const Limits& limits) {
     throw SceneError(ErrorKind::limit, std::to_string(width) + "x" + std::to_string(height) + " is " +
                                            std::to_string(pixels) + " pixels, over the limit of " +
                                            std::to_string(limits.max_pixels));
+}
+
+Antialias antialias(std::string_view text) {
+  if (text == "area") return Antialias::area;
+  int samples = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), samples);
+  Antialias a = Antialias::none;
+  if (ec != std::errc() || end != text.data() + text.size() || !antialias_of_samples(samples, a))
+    invalid(std::string(format::kAntialiasRule) + "\"" + std::string(text) + "\"");
+  return a;
 }
 
 Projection projection(std::string_view name) {

@@ -367,7 +367,7 @@ constexpr Field<Keys> kRootFields[] = {
      [](Reader& r, Keys&, const Path& at) { r.scene.background = r.color(at); }},
     {"antialias", format::kString | format::kNumber, "\"area\" or a number",
      [](Reader& r, Keys&, const Path& at) {
-       const std::string rule = "\"antialias\" is \"area\" or the samples per pixel: 1, 4, 8 or 16; got ";
+       const std::string rule(format::kAntialiasRule);
        if (r.in.peek() == Kind::string) {
          const std::string_view s = r.in.string();
          if (s != "area") r.invalid(at, rule + "\"" + std::string(s) + "\"");
