@@ -24,7 +24,7 @@ namespace {
 struct ClipVertex {
   double x = 0, y = 0, z = 0, w = 0;  ///< clip space (see ViewPlan)
   float values[VaryingLayout::kMaxFloats] =
-      {};  ///< at Varyings::vertex_offset; depth and 1/w not yet written
+      {};  ///< at VaryingLayout::vertex_offset; depth and 1/w not yet written
 };
 
 /// a + (b - a) t, position and the first `floats` values (VaryingLayout::clipped_floats).

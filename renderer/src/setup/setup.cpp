@@ -92,7 +92,7 @@ void Setup::finish(Records& part, std::uint32_t call, const SetupVertex* const (
                    bool back_facing) const {
   TriangleRecord& r = part.triangles.back();
   // The flat rows from vertex 0, then each vertex's interpolated rows: one run of floats per vertex, since
-  // a vertex holds its rows in the same order (Varyings).
+  // a vertex holds its rows in the same order (VaryingLayout).
   const VaryingLayout& varyings = calls[call].layout;
   r.attributes = static_cast<std::uint32_t>(part.attributes.size());
   float* out = part.attributes.grow(static_cast<std::size_t>(varyings.record_floats()));

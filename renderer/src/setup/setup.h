@@ -46,8 +46,9 @@ inline DrawCall make_call(const PrimitivePlan& mode) {
 /// A vertex of a triangle, snapped, with the values its call's varyings (PrimitivePlan::varyings) give it.
 struct SetupVertex {
   double x = 0, y = 0;  ///< 1/256 px, integral values, origin top-left, y down (|value| <= 2^136)
-  /// At Varyings::vertex_offset, rows in Varying order. Not initialised: whoever makes a vertex writes every
-  /// row its call has (a dense mesh makes three a triangle, and zeroing them cost more than filling them).
+  /// At VaryingLayout::vertex_offset, rows in Varying order. Not initialised: whoever makes a vertex writes
+  /// every row its call has (a dense mesh makes three a triangle, and zeroing them cost more than filling
+  /// them).
   float values[VaryingLayout::kMaxFloats];
 
   float* at(const VaryingLayout& v, Varying name) { return values + v.vertex_offset[static_cast<int>(name)]; }
@@ -75,9 +76,10 @@ struct TriangleRecord {
              ///< alone)
   EdgeFunctions<std::int64_t> edges;  ///< the edges, when in the fast range (kept here: one fetch per record)
   std::uint32_t call = 0;             ///< index into Setup::calls
-  std::uint32_t attributes = 0;  ///< index into its part's attributes of this record's first float (Varyings)
-  std::uint32_t wide = kFast;    ///< kFast, or the index of its edges in Setup::wide_edges
-  bool back_facing = false;      ///< 3D: seen from behind (per-pixel lighting flips the normal)
+  std::uint32_t attributes =
+      0;  ///< index into its part's attributes of this record's first float (VaryingLayout)
+  std::uint32_t wide = kFast;  ///< kFast, or the index of its edges in Setup::wide_edges
+  bool back_facing = false;    ///< 3D: seen from behind (per-pixel lighting flips the normal)
 };
 
 /// A 1-px line between the pixels that contain its endpoints. Pixel indices are integers held exactly in

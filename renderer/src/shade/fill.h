@@ -511,7 +511,7 @@ class ColorPlanes {
   }
 
   const Surface* surface_ = nullptr;
-  const float* color_[3] = {};  // vertex k's RGBA in the record (Varyings::record_at)
+  const float* color_[3] = {};  // vertex k's RGBA in the record (VaryingLayout::record_at)
   bool blend_ = false;
   double lo_[4] = {}, hi_[4] = {};                  // each channel's range over the vertices
   std::int64_t slope_x_[4] = {}, slope_y_[4] = {};  // 16.16 per pixel right and down
