@@ -172,7 +172,11 @@ bool set_field(raster::Scene& scene, const std::string& name, const std::string&
   } else if (name == "target") {
     camera.target = vector_param(name, value), camera.has_target = true;
   } else if (name == "up") {
-    camera.up = raster::checks::up(vector_param(name, value)), camera.has_up = true;
+    // An axis by name, or a vector; a URL's '+' arrives as a space (?up=+z is " z").
+    const std::string axis = value.starts_with(' ') ? "+" + value.substr(1) : value;
+    const bool named = !axis.empty() && std::isalpha(static_cast<unsigned char>(axis.back()));
+    camera.up = named ? raster::checks::up_axis(axis) : raster::checks::up(vector_param(name, value));
+    camera.has_up = true;
   } else if (name == "antialias") {
     scene.antialias = raster::checks::antialias(value);
   } else {

@@ -66,8 +66,45 @@ TEST(View, TopAndBottomPutTheFrontEdgeDown) {
   EXPECT_EQ(raster::plan(top).view.up, (raster::Vec3{0, 0, -1}));
   raster::Scene bottom = cube_scene({{"view", "bottom"}});
   EXPECT_EQ(raster::plan(bottom).view.up, (raster::Vec3{0, 0, 1}));
-  raster::Scene given = cube_scene({{"view", "top"}, {"up", {1, 0, 0}}});
-  EXPECT_EQ(raster::plan(given).view.up, (raster::Vec3{1, 0, 0})) << "a given up is kept";
+  // Relative to a given up axis (issue 42): a Z-up model's top view looks down +Z with its front (-Y) edge
+  // at the bottom of the picture.
+  raster::Scene z_up = cube_scene({{"view", "top"}, {"up", "+z"}});
+  const raster::ViewPlan v = raster::plan(z_up).view;
+  EXPECT_EQ(v.up, (raster::Vec3{0, 1, 0}));
+  EXPECT_GT(v.eye.z - v.target.z, 0) << "looks down the up axis";
+  EXPECT_NEAR(v.eye.x - v.target.x, 0, 1e-9);
+  EXPECT_NEAR(v.eye.y - v.target.y, 0, 1e-9);
+}
+
+// Issue 42: every named view is relative to the up axis, so a Z-up model (up "+z", as CAD and 3D printing
+// write STL) is seen from its front with the default view, and each view shows the face it names in that
+// frame: front is -Y, back +Y, top +Z; and in the iso view the model's top (+Z) is at the top of the image.
+TEST(View, NamedViewsAreRelativeToTheUpAxis) {
+  const raster::Rgba8 blue{0, 0, 255, 255}, yellow{255, 255, 0, 255}, red{255, 0, 0, 255},
+      cyan{0, 255, 255, 255}, green{0, 255, 0, 255}, magenta{255, 0, 255, 255};
+  // The cube's faces: +Z blue, -Z yellow, +X red, -X cyan, +Y green, -Y magenta.
+  const std::pair<const char*, raster::Rgba8> cases[] = {
+      {"front", magenta}, {"back", green}, {"right", red}, {"left", cyan}, {"top", blue}, {"bottom", yellow}};
+  for (const auto& [name, colour] : cases) {
+    const raster::Image image = test::render(cube_scene({{"view", name}, {"up", "+z"}}));
+    EXPECT_EQ(test::pixel(image, 16, 16), colour) << name;
+  }
+  EXPECT_EQ(test::pixel(test::render(cube_scene({{"up", "+z"}})), 16, 16), magenta)
+      << "the default view: front";
+  EXPECT_EQ(test::pixel(test::render(cube_scene({{"up", {0, 0, 1}}})), 16, 16), magenta) << "as a vector too";
+  const raster::Image iso =
+      test::render(cube_scene({{"view", "iso"}, {"up", "+z"}, {"projection", "orthographic"}}, 65));
+  double top_rows = 0, side_rows = 0;
+  int top = 0, side = 0;
+  for (int y = 0; y < 65; ++y)
+    for (int x = 0; x < 65; ++x) {
+      const raster::Rgba8 p = test::pixel(iso, x, y);
+      if (p == blue) top_rows += y, ++top;
+      if (p == red || p == magenta) side_rows += y, ++side;
+    }
+  ASSERT_GT(top, 0);
+  ASSERT_GT(side, 0);
+  EXPECT_LT(top_rows / top, side_rows / side) << "the model's top is above its sides";
 }
 
 TEST(View, IsoShowsThreeFacesEqually) {

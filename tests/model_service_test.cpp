@@ -90,6 +90,28 @@ TEST(ModelService, AntialiasIsAQueryParameterOfABareModel) {
       << detail;
 }
 
+// Issue 42: ?up= takes an axis by name, its '+' written as is (a URL's '+' arrives as a space) or as %2B,
+// and the default view turns with it: the picture of the vector's.
+TEST(ModelService, UpTakesAnAxisName) {
+  test::TestServer server;
+  const std::string obj = test::write_obj(test::make_mesh(5));
+  auto post = [&](const std::string& up) {
+    auto r = server.client().Post("/render?width=64&height=64&up=" + up, obj, "model/obj");
+    EXPECT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << up << ": " << r->body;
+    return r->body;
+  };
+  const std::string vector = post("0,0,1");
+  EXPECT_EQ(post("+z"), vector);
+  EXPECT_EQ(post("%2Bz"), vector);
+  EXPECT_EQ(post("z"), vector);
+  EXPECT_NE(post("-z"), vector);
+  auto bad = server.client().Post("/render?up=+w", obj, "model/obj");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_NE(problem_detail(bad).find("\"+x\""), std::string::npos) << "names the axes";
+}
+
 // A glTF document is JSON, and model/gltf+json ends in "+json": it is still a model, not a scene.
 TEST(ModelService, AGltfDocumentIsAModelWhateverItsJsonContentType) {
   test::TestServer server;

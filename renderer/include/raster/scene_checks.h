@@ -39,6 +39,9 @@ double coordinate(double value, std::string_view text);
 /// A camera's "up": not the zero vector.
 Vec3 up(const Vec3& direction);
 
+/// An up axis by name: "+x", "-x", "+y", "-y", "+z", "-z" (or "x", "y", "z" for the positive ones).
+Vec3 up_axis(std::string_view name);
+
 /// What a camera's fields must satisfy together ("view" or "eye"; "near" before "far"), as a camera object
 /// is checked when it ends. Throws with the pointer of the field at fault under `at` (a camera object's), at
 /// `byte`.

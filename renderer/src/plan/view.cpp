@@ -49,6 +49,19 @@ Vec3 side_of(View view) {
   return {0, 0, 1};
 }
 
+// A named view's direction for a camera whose up is `up`: the views are defined for +Y up, and turned by the
+// rotation that takes +Y to `up` (Rodrigues), so "front" with ?up=+z looks at a Z-up model from its front
+// (from -Y), as CAD tools do, instead of straight down the up axis.
+Vec3 relative_to_up(const Vec3& d, const Vec3& up) {
+  const Vec3 y{0, 1, 0}, u = normalize(up);
+  const double c = dot(y, u);
+  Vec3 axis = cross(y, u);
+  const double s = length(axis);
+  if (!(s > 1e-12)) return c > 0 ? d : Vec3{d.x, -d.y, -d.z};  // +Y: as it is; -Y: half a turn about x
+  axis = axis * (1 / s);
+  return d * c + cross(axis, d) * s + axis * (dot(axis, d) * (1 - c));
+}
+
 // The basis of a camera at v.eye looking at v.target with v.up; a camera error when either is degenerate.
 ViewBasis basis_of(const ViewPlan& v) {
   const Vec3 forward = normalize(v.target - v.eye);
@@ -120,13 +133,17 @@ ViewPlan resolve_view(const Scene& scene, double aspect) {
   v.fov_deg = cam.fov_deg;
   v.up = cam.up;
   v.target = cam.has_target ? cam.target : centre;
-  if (!cam.has_up && cam.view == View::top) v.up = {0, 0, -1};  // the front edge at the bottom, as in CAD
-  if (!cam.has_up && cam.view == View::bottom) v.up = {0, 0, 1};
+  // Named views are relative to the up axis (a camera without `up` has +Y: the views as they are); looking
+  // along it, the image's up is the model's back (top view: the front edge at the bottom, as in CAD).
+  auto turned = [&](const Vec3& d) { return cam.has_up ? relative_to_up(d, cam.up) : d; };
+  if (cam.view == View::top) v.up = turned({0, 0, -1});
+  if (cam.view == View::bottom) v.up = turned({0, 0, 1});
   const double half = cam.fov_deg * std::numbers::pi / 360.0;
   // Distance at which the bounding sphere fits the narrower of the two fields of view.
   const double tan_fit = std::min(std::tan(half), std::tan(half) * aspect);
   const double fit_distance = radius * std::sqrt(1 + tan_fit * tan_fit) / tan_fit;
-  v.eye = cam.has_eye ? cam.eye : v.target + side_of(cam.view) * (fit_distance + length(v.target - centre));
+  v.eye = cam.has_eye ? cam.eye
+                      : v.target + turned(side_of(cam.view)) * (fit_distance + length(v.target - centre));
   const ViewBasis basis = basis_of(v);
   fit_depth_range(cam, lo, hi, basis.forward, v);
   v.height = cam.has_height ? cam.height : 2 * length(v.target - v.eye) * std::tan(half);

@@ -43,6 +43,10 @@ void image_size(int width, int height, const Limits& limits) {
                                            std::to_string(limits.max_pixels));
 }
 
+Vec3 up_axis(std::string_view name) {
+  return format::kUpAxes[choice(format::kUpAxisNames, name)];
+}
+
 Antialias antialias(std::string_view text) {
   if (text == "area") return Antialias::area;
   int samples = 0;

@@ -26,6 +26,11 @@ struct Range {
 };
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
+/// The up axes by name (checks::up_axis), in the order of kUpAxes.
+inline constexpr std::array<std::string_view, 9> kUpAxisNames = {"+x", "-x", "+y", "-y", "+z",
+                                                                 "-z", "x",  "y",  "z"};
+inline constexpr Vec3 kUpAxes[] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1},
+                                   {0, 0, -1}, {1, 0, 0},  {0, 1, 0}, {0, 0, 1}};
 /// How a bad "antialias" is refused (the value as sent follows).
 inline constexpr std::string_view kAntialiasRule =
     "\"antialias\" is \"area\" or the samples per pixel: 1, 4, 8 or 16; got ";

@@ -95,9 +95,18 @@ constexpr Field<CameraState> kCameraFields[] = {
      [](Reader& r, CameraState& c, const Path& at) {
        c.camera.target = r.vec3(at), c.camera.has_target = true;
      }},
-    {"up", format::kArray, "a direction [x, y, z]",
+    {"up", format::kArray | format::kString, "a direction [x, y, z] or an axis (\"+z\", \"-y\", ...)",
      [](Reader& r, CameraState& c, const Path& at) {
-       c.camera.up = r.vec3(at), c.camera.has_up = true;
+       c.camera.has_up = true;
+       if (r.in.peek() == Kind::string) {
+         try {
+           c.camera.up = checks::up_axis(r.in.string());
+         } catch (const SceneError& e) {
+           r.invalid(at, std::string("\"up\": ") + e.what());
+         }
+         return;
+       }
+       c.camera.up = r.vec3(at);
        if (c.camera.up == Vec3{}) r.invalid(at, "\"up\" must not be the zero vector");
      }},
     {"fov", format::kNumber, "a number",
