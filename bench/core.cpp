@@ -1,17 +1,16 @@
-// The raster core's targets (2D: issue 30; meshes: issue 29), side by side with llvmpipe in one run: plan +
+// The raster core's targets (2D: issue 30; meshes: issue 41), side by side with llvmpipe in one run: plan +
 // render time of the 2D scenes and the 3D meshes at 1 and 2 threads, flat fill rate against memset's
 // bandwidth, and the bytes the tile bins take. Usage: core [runs] [path/to/osmesa_peer]. Prints Markdown.
 // This VM runs a whole process at one of two speeds, so each side of a ratio is the fastest of kProcesses
 // processes: the peer run that often per thread count, and this program re-run in its hidden mode
 // (`core --measure runs`, "scene threads ms" lines), each process's medians, the minimum over processes.
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -68,21 +67,14 @@ void measure(int runs) {
   }
 }
 
-// One process of the hidden mode, run from this program's own file: scene -> threads -> median ms.
+// One process of the hidden mode: scene -> threads -> median ms.
 std::map<std::string, std::map<int, double>> measure_in_child(int runs) {
   std::map<std::string, std::map<int, double>> out;
-  char self[4096];
-  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  if (n <= 0) return out;
-  self[n] = 0;
-  const std::string command = std::string("'") + self + "' --measure " + std::to_string(runs);
-  if (FILE* f = popen(command.c_str(), "r")) {
-    char name[32];
-    int threads = 0;
-    double ms = 0;
-    while (std::fscanf(f, "%31s %d %lf", name, &threads, &ms) == 3) out[name][threads] = ms;
-    pclose(f);
-  }
+  std::istringstream lines(bench::measure_in_child(runs));
+  std::string name;
+  int threads = 0;
+  double ms = 0;
+  while (lines >> name >> threads >> ms) out[name][threads] = ms;
   return out;
 }
 

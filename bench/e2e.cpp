@@ -5,13 +5,12 @@
 // does): llvmpipe's, the service's (a server per process) and this program's own raster and tinyobjloader
 // times, measured in children that re-run this program in its hidden mode (`e2e --measure runs`). Parse,
 // encode and stb stay in this process: their ratios are within it, so its speed moves both sides alike.
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -105,22 +104,15 @@ struct Fastest {
 };
 
 void measure_in_child(int runs, Fastest& out) {
-  char self[4096];
-  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  if (n <= 0) return;
-  self[n] = 0;
-  const std::string command = std::string("'") + self + "' --measure " + std::to_string(runs);
-  if (FILE* f = popen(command.c_str(), "r")) {
-    char what[16], name[32];
-    int threads = 0;
-    double ms = 0;
-    while (std::fscanf(f, "%15s %31s %d %lf", what, name, &threads, &ms) == 4)
-      if (std::string(what) == "raster")
-        keep_min(out.raster[name], threads, ms);
-      else
-        keep_min(out.tinyobj, std::string(name), ms);
-    pclose(f);
-  }
+  std::istringstream lines(bench::measure_in_child(runs));
+  std::string what, name;
+  int threads = 0;
+  double ms = 0;
+  while (lines >> what >> name >> threads >> ms)
+    if (what == "raster")
+      keep_min(out.raster[name], threads, ms);
+    else
+      keep_min(out.tinyobj, name, ms);
 }
 
 void serve_fastest(const std::string& rasterd, const std::string& name, const std::string& body,
