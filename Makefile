@@ -63,6 +63,7 @@ bench: bench-build
 # docs/accuracy.md and docs/accuracy.png.
 bench-accuracy: bench-build
 	@build-bench/bench/accuracy .
+	@build-bench/bench/model_defaults .
 
 # wrk against a local server on the mid-size scene; LOADTEST_SECONDS=30 by default.
 loadtest: bench-build

@@ -185,28 +185,32 @@ bool set_field(raster::Scene& scene, const std::string& name, const std::string&
   return true;
 }
 
-// The default scene of a bare model (512x512, the camera framing the model) as the parameters shape it,
-// built directly: each value is checked with the words the scene reader has for its field, so a bad
-// parameter reads as that field would in a scene document. The order errors are found in: each parameter
-// when it is read, in name order (the map's); then the camera's fields together, the image's pixels, the
-// model, and validate().
-// `sniffed`: the model's format by its bytes, when the request has already asked.
+// The default scene of a bare model (raster::model_scene: the library's picture of a model in its format)
+// as the parameters shape it, built directly: each value is checked with the words the scene reader has for
+// its field, so a bad parameter reads as that field would in a scene document. The order errors are found
+// in: ?format=, the model's format; each other parameter when it is read, in name order (the map's); then
+// the camera's fields together, the image's pixels, the model, and validate().
 raster::Scene default_scene(const Params& params, std::optional<raster::ModelFormat> named_format,
-                            const raster::Uploads& uploads, const raster::Limits& limits,
-                            std::optional<raster::ModelFormat> sniffed) {
-  raster::Scene scene;
-  scene.width = scene.height = 512;
+                            const raster::Uploads& uploads, const raster::Limits& limits) {
   // The bytes tell the format first (the reader sniffs them); else the part's file name, else ?format=.
   std::optional<raster::ModelFormat> hint = named_format;
-  for (const auto& [name, value] : params) {
-    if (name == "explain" || name == "scale")
-      continue;  // the route's, and the scene's once read (apply_scale)
+  if (const auto it = params.find("format"); it != params.end() && !named_format) {
     try {
-      if (name == "format") {
-        if (!named_format) hint = raster::checks::model_format(value);
-      } else if (!set_field(scene, name, value, limits)) {
-        bad_param(name, "unknown; known: " + known_params());
-      }
+      hint = raster::checks::model_format(it->second);
+    } catch (const raster::SceneError& e) {
+      rethrow_as("format", e);
+    }
+  }
+  const std::string& bytes = uploads.at("model");
+  const raster::ModelFormat format = raster::model_format_of(bytes, hint);
+  // The library's picture of a bare model (size, background, anti-aliasing, the format's up axis), which
+  // the parameters adjust; its mesh is read last.
+  raster::Scene scene = raster::model_scene({}, format);
+  for (const auto& [name, value] : params) {
+    if (name == "explain" || name == "scale" || name == "format")
+      continue;  // the route's, the scene's once read (apply_scale), and the format's (above)
+    try {
+      if (!set_field(scene, name, value, limits)) bad_param(name, "unknown; known: " + known_params());
     } catch (const QueryError&) {
       throw;
     } catch (const raster::SceneError& e) {
@@ -217,12 +221,9 @@ raster::Scene default_scene(const Params& params, std::optional<raster::ModelFor
     raster::checks::camera(scene.camera, "/camera", 0);
     raster::checks::image_size(scene.width, scene.height, limits);
     const auto mtl = uploads.find("mtl");  // an MTL uploaded as part "mtl" goes with the model
-    scene.meshes.push_back(raster::checks::model_mesh(uploads.at("model"), hint, limits, uploads,
-                                                      mtl == uploads.end() ? std::string_view() : mtl->second,
-                                                      "/primitives/0", 0, sniffed));
-    raster::Primitive model;
-    model.kind = raster::PrimitiveKind::mesh;
-    scene.primitives.push_back(model);
+    scene.meshes[0] = raster::checks::model_mesh(bytes, hint, limits, uploads,
+                                                 mtl == uploads.end() ? std::string_view() : mtl->second,
+                                                 "/primitives/0", 0, format);
     raster::validate(scene);
   } catch (const raster::SceneError& e) {
     const std::string param = param_of_pointer(e.where().pointer, params);
@@ -396,10 +397,8 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     throw raster::SceneError(raster::ErrorKind::syntax,
                              "the request is empty: send a scene (JSON) or a model (" +
                                  std::string(raster::accepted_formats()) + ")");
-  // The body is the model when it has bytes (else a part is): its format by its bytes is known already.
-  const std::optional<raster::ModelFormat> model_sniffed = body.empty() ? std::nullopt : sniffed;
-  if (!body.empty()) uploads["model"] = std::move(body);
-  raster::Scene scene = default_scene(params, named_format, uploads, limits, model_sniffed);
+  if (!body.empty()) uploads["model"] = std::move(body);  // the body is the model when it has bytes
+  raster::Scene scene = default_scene(params, named_format, uploads, limits);
   if (scale) apply_scale(scene, *scale, limits);
   return scene;
 }

@@ -13,7 +13,23 @@
 #include <string>
 #include <vector>
 
+#include "raster/model.h"
+
 namespace test {
+
+// The scene fields that draw a model as a bare request draws it (raster::kModelPicture's background and
+// anti-aliasing), to put in a scene whose picture is compared with the bare model's. The format's up axis
+// is the camera's ("up": "+z" for STL) and is left to the scene, which has its own camera.
+// `antialias` false leaves "antialias" out, for a scene that sets its own.
+inline std::string model_picture_fields(bool antialias = true) {
+  const raster::Rgba8 b = raster::kModelPicture.background;
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "#%02x%02x%02x", b.r, b.g, b.b);
+  return "\"background\": \"" + std::string(hex) + "\"" +
+         (antialias
+              ? ", \"antialias\": " + std::to_string(raster::sample_count(raster::kModelPicture.antialias))
+              : "");
+}
 
 // A closed, bumpy ring of quads (a torus with seeded radii), so that the quads are not planar and their
 // diagonal matters. Coordinates are multiples of 1/256: exact as floats and in decimal.

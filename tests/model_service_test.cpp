@@ -3,8 +3,11 @@
 // in no format is a 422 that names the formats.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,25 +31,27 @@ TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
   const test::TestMesh m = test::make_mesh(5);
   // STL is drawn flat, and so is a glTF without normals (glTF's rule); OBJ and PLY without normals are drawn
   // smooth: one picture for each group.
+  // STL stands on +Z by default (the others on +Y): its rows ask for +Y so that all draw one mesh alike.
   struct Body {
     const char* name;
     std::string bytes;
     const char* type;
     bool flat;
+    const char* up = "";
   };
-  const Body bodies[] = {
-      {"binary STL", test::write_stl_binary(m), "application/octet-stream", true},
-      {"ASCII STL", test::write_stl_ascii(m), "text/plain", true},
-      {"binary STL with no type", test::write_stl_binary(m), "", true},
-      // A header that starts like a scene: the size tells a binary STL first.
-      {"binary STL, header \"{\"", test::write_stl_binary(m, "{ binary"), "application/octet-stream", true},
-      {"OBJ", test::write_obj(m), "model/obj", false},
-      {"PLY", test::write_ply_binary(m, false), "application/octet-stream", false},
-      {"GLB", test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary", true}};
+  const Body bodies[] = {{"binary STL", test::write_stl_binary(m), "application/octet-stream", true, "&up=y"},
+                         {"ASCII STL", test::write_stl_ascii(m), "text/plain", true, "&up=y"},
+                         {"binary STL with no type", test::write_stl_binary(m), "", true, "&up=y"},
+                         // A header that starts like a scene: the size tells a binary STL first.
+                         {"binary STL, header \"{\"", test::write_stl_binary(m, "{ binary"),
+                          "application/octet-stream", true, "&up=y"},
+                         {"OBJ", test::write_obj(m), "model/obj", false},
+                         {"PLY", test::write_ply_binary(m, false), "application/octet-stream", false},
+                         {"GLB", test::write_glb(test::make_gltf(m, "", true)), "model/gltf-binary", true}};
   std::string flat, smooth;
   for (const Body& b : bodies) {
     SCOPED_TRACE(b.name);
-    auto r = server.client().Post(kQuery, b.bytes, b.type);
+    auto r = server.client().Post(std::string(kQuery) + b.up, b.bytes, b.type);
     ASSERT_TRUE(r);
     ASSERT_EQ(r->status, 200) << r->body;
     EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
@@ -57,30 +62,72 @@ TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
   EXPECT_NE(flat, smooth);
 }
 
+// Issue 42: each format stands on its own up axis (ModelFormatInfo::up): a post 1 unit long along Z and
+// 0.25 wide, seen from the right, is upright from an STL (CAD's and 3D printing's +Z) and lies down from an
+// OBJ (+Y); ?up= overrides the format's.
+TEST(ModelService, EachFormatStandsOnItsUpAxis) {
+  test::TestServer server;
+  test::TestMesh post;  // a box: x and y in [0, 0.25], z in [0, 1]
+  for (int k = 0; k < 8; ++k) post.v.push_back({0.25 * (k & 1), 0.25 * ((k >> 1) & 1), 1.0 * ((k >> 2) & 1)});
+  post.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  // The box's extent in the picture: the rows and columns holding a pixel unlike the corner's (background).
+  auto extent = [&](const std::string& png) {
+    const test::Decoded image = test::decode_png(png);
+    auto at = [&](int x, int y) { return image.pixels.data() + (y * image.width + x) * image.channels; };
+    int left = image.width, right = -1, top = image.height, bottom = -1;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x)
+        if (std::memcmp(at(x, y), at(0, 0), static_cast<std::size_t>(image.channels)) != 0)
+          left = std::min(left, x), right = std::max(right, x), top = std::min(top, y),
+          bottom = std::max(bottom, y);
+    return std::pair{right - left + 1, bottom - top + 1};  // width, height in pixels
+  };
+  auto draw = [&](const std::string& bytes, const char* type, const std::string& params) {
+    auto r = server.client().Post("/render?width=96&height=96&view=right" + params, bytes, type);
+    EXPECT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << r->body;
+    return r->body;
+  };
+  const std::string stl = test::write_stl_binary(post), obj = test::write_obj(post);
+  const auto [stl_w, stl_h] = extent(draw(stl, "model/stl", ""));
+  EXPECT_GT(stl_h, 2 * stl_w) << "an STL stands on +Z: the post is upright";
+  const auto [obj_w, obj_h] = extent(draw(obj, "model/obj", ""));
+  EXPECT_GT(obj_w, 2 * obj_h) << "an OBJ stands on +Y: the same post lies down";
+  EXPECT_EQ(draw(stl, "model/stl", ""), draw(stl, "model/stl", "&up=%2Bz")) << "STL's default is +Z";
+  EXPECT_EQ(draw(obj, "model/obj", ""), draw(obj, "model/obj", "&up=%2By")) << "OBJ's default is +Y";
+  EXPECT_EQ(extent(draw(stl, "model/stl", "&up=y")), std::pair(obj_w, obj_h))
+      << "?up= wins over the format's: the STL's post lies down as the OBJ's";
+}
+
 // Issue 42: a bare model takes ?antialias= with the scene field's values and words: the picture is the one
-// the same model gets in a scene that says "antialias", and a bad value is a 400 naming the parameter.
+// the same model gets in a scene that says "antialias" (on the bare model's background), the default is
+// raster::kModelPicture's level, and a bad value is a 400 naming the parameter.
 TEST(ModelService, AntialiasIsAQueryParameterOfABareModel) {
   test::TestServer server;
   const std::string obj = test::write_obj(test::make_mesh(5));
-  auto aliased = server.client().Post(kQuery, obj, "model/obj");
-  ASSERT_TRUE(aliased);
-  ASSERT_EQ(aliased->status, 200) << aliased->body;
-  for (const char* level : {"4", "area"}) {
+  auto by_default = server.client().Post(kQuery, obj, "model/obj");
+  ASSERT_TRUE(by_default);
+  ASSERT_EQ(by_default->status, 200) << by_default->body;
+  const std::string default_level = std::to_string(raster::sample_count(raster::kModelPicture.antialias));
+  std::set<std::string> pictures;
+  for (const char* level : {"1", "4", "16", "area"}) {
     SCOPED_TRACE(level);
-    auto smooth = server.client().Post(std::string(kQuery) + "&antialias=" + level, obj, "model/obj");
-    ASSERT_TRUE(smooth);
-    ASSERT_EQ(smooth->status, 200) << smooth->body;
-    EXPECT_NE(smooth->body, aliased->body);
+    auto r = server.client().Post(std::string(kQuery) + "&antialias=" + level, obj, "model/obj");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    pictures.insert(r->body);
+    EXPECT_EQ(r->body == by_default->body, level == default_level) << "the default is " << default_level;
     const std::string value = level == std::string("area") ? "\"area\"" : level;
     const std::string scene =
-        R"({"width": 64, "height": 64, "antialias": )" + value +
+        R"({"width": 64, "height": 64, )" + test::model_picture_fields(false) + R"(, "antialias": )" + value +
         R"(, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "model"}]})";
     auto in_scene = server.client().Post(
         "/render", httplib::MultipartFormDataItems{{"scene", scene, "", ""}, {"model", obj, "m.obj", ""}});
     ASSERT_TRUE(in_scene);
     ASSERT_EQ(in_scene->status, 200) << in_scene->body;
-    EXPECT_EQ(smooth->body, in_scene->body) << "the parameter is the scene field";
+    EXPECT_EQ(r->body, in_scene->body) << "the parameter is the scene field";
   }
+  EXPECT_EQ(pictures.size(), 4u);
   auto bad = server.client().Post(std::string(kQuery) + "&antialias=3", obj, "model/obj");
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
@@ -148,7 +195,8 @@ TEST(ModelService, MultipartPartsOfEveryFormatAreFoundByFileName) {
 
   // A scene that names the part: "model" with or without a format, and the old "obj" type.
   const std::string scene =
-      R"({"width": 64, "height": 64, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "part"}]})";
+      R"({"width": 64, "height": 64, )" + test::model_picture_fields() +
+      R"(, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "part"}]})";
   auto referenced = server.client().Post(
       "/render", httplib::MultipartFormDataItems{{"scene", scene, "scene.json", "application/json"},
                                                  {"part", test::write_ply_ascii(m), "", ""}});
@@ -199,7 +247,8 @@ TEST(ModelService, ANamedModelThatStartsLikeJsonIsStillTheModel) {
   ASSERT_TRUE(want);
   ASSERT_EQ(want->status, 200) << want->body;
   const std::string scene =
-      R"({"width": 64, "height": 64, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "part.stl"}]})";
+      R"({"width": 64, "height": 64, )" + test::model_picture_fields() +
+      R"(, "camera": {"view": "iso", "up": "+z"}, "primitives": [{"type": "model", "source": "part.stl"}]})";
   auto by_type = server.client().Post(kQuery, padded, "model/stl");
   auto by_part =
       server.client().Post(kQuery, httplib::MultipartFormDataItems{{"file", padded, "part.stl", ""}});
@@ -215,8 +264,10 @@ TEST(ModelService, ANamedModelThatStartsLikeJsonIsStillTheModel) {
   const std::string glb = test::write_glb(test::make_gltf(m, "", true));
   auto scene_and_glb = server.client().Post(
       "/render",
-      httplib::MultipartFormDataItems{{"scene", R"({"width": 64, "height": 64, "camera": {"view": "iso"},
-                                                             "primitives": [{"type": "model", "source": "model"}]})",
+      httplib::MultipartFormDataItems{{"scene",
+                                       R"({"width": 64, "height": 64, )" + test::model_picture_fields() +
+                                           R"(, "camera": {"view": "iso"},
+                                              "primitives": [{"type": "model", "source": "model"}]})",
                                        "scene.json", "application/json"},
                                       {"model", glb, "torus.glb", ""}});
   auto glb_alone = server.client().Post(kQuery, glb, "model/gltf-binary");

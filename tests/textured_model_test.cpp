@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model_files.h"
 #include "support.h"
 #include "test_server.h"
 
@@ -113,7 +114,7 @@ TEST(TexturedModel, ScenesStillNamePartsByTheirPartName) {
                                               {"mtl", box.mtl, "box.mtl", "model/mtl"},
                                               {"texture", box.png, "box_diffuse.png", "image/png"}});
   const std::string scene =
-      R"({"width": 64, "height": 64, "camera": {"eye": [3, 2.5, 4]},
+      R"({"width": 64, "height": 64, )" + test::model_picture_fields() + R"(, "camera": {"eye": [3, 2.5, 4]},
           "primitives": [{"type": "obj", "source": "second", "mtl_source": "mymtl"}]})";
   auto named = server.client().Post(
       "/render", httplib::MultipartFormDataItems{{"scene", scene, "", "application/json"},
@@ -195,14 +196,15 @@ TEST(TexturedModel, HostileTextureHeaderIsA422BeforeDecoding) {
 TEST(TexturedModel, InlineJsonGivesTheSamePictureAsMultipart) {
   test::TestServer server;
   const Box box;
-  const nlohmann::json scene = {{"width", 64},
-                                {"height", 64},
-                                {"camera", {{"eye", {3, 2.5, 4}}}},
-                                {"primitives",
-                                 {{{"type", "obj"},
-                                   {"data", box.obj},
-                                   {"mtl", box.mtl},
-                                   {"textures", {{"box_diffuse.png", base64(box.png)}}}}}}};
+  nlohmann::json scene = {{"width", 64},
+                          {"height", 64},
+                          {"camera", {{"eye", {3, 2.5, 4}}}},
+                          {"primitives",
+                           {{{"type", "obj"},
+                             {"data", box.obj},
+                             {"mtl", box.mtl},
+                             {"textures", {{"box_diffuse.png", base64(box.png)}}}}}}};
+  scene.update(nlohmann::json::parse("{" + test::model_picture_fields() + "}"));  // the bare model's picture
   auto inline_r = server.client().Post("/render", scene.dump(), "application/json");
   auto multipart = server.client().Post(
       kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},
@@ -243,8 +245,10 @@ TEST(TexturedModel, CliPartsGiveTheSamePictureAsHttp) {
   {
     std::FILE* f = std::fopen(scene_file.c_str(), "wb");
     ASSERT_NE(f, nullptr);
-    std::fputs(R"({"width": 64, "height": 64, "camera": {"eye": [3, 2.5, 4]},
-                  "primitives": [{"type": "obj", "source": "second", "mtl_source": "mymtl"}]})",
+    std::fputs((R"({"width": 64, "height": 64, )" + test::model_picture_fields() +
+                R"(, "camera": {"eye": [3, 2.5, 4]},
+                  "primitives": [{"type": "obj", "source": "second", "mtl_source": "mymtl"}]})")
+                   .c_str(),
                f);
     std::fclose(f);
   }

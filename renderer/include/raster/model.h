@@ -39,6 +39,11 @@ struct ModelFormatInfo {
   /// How many times `files` is asked, each time with the files found before: OBJ 2 (the libraries its
   /// mtllib lines name, then the textures those name), glTF 1, STL and PLY 0.
   int file_rounds;
+  /// The world direction the format's files take as up by their own convention, which a bare model's
+  /// picture stands on (see model_scene): glTF's specification says +Y; OBJ (Wavefront, Maya and Blender's
+  /// exporters) and PLY (the Stanford scans, the bunny among them) are +Y in practice; STL, the format of
+  /// CAD and 3D printing, is +Z, as slicers and CAD programs place a part on the build plate.
+  Vec3 up;
 };
 
 /// The table, one row per ModelFormat, in the enum's order.
@@ -131,11 +136,31 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits = {}, const Uploads
 /// model's folder at hand (the CLI) to gather them as uploads. Never throws: parse_gltf reports a bad model.
 std::vector<std::string> gltf_files(std::string_view bytes);
 
-/// Any of the formats: sniff_model(bytes), else `hint` (from a file name or the request), else
-/// SceneError(model) naming the formats accepted. OBJ takes `mtl_text` as parse_obj does; OBJ and glTF
-/// find the files they name in `files`.
+/// The format parse_model reads `bytes` as: sniff_model(bytes), else `hint` (from a file name or the
+/// request), else SceneError(model): the model is empty, or in no format rasterd reads.
+ModelFormat model_format_of(std::string_view bytes, std::optional<ModelFormat> hint);
+
+/// Any of the formats: model_format_of(bytes, hint), then that format's reader. OBJ takes `mtl_text` as
+/// parse_obj does; OBJ and glTF find the files they name in `files`.
 Mesh parse_model(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits = {},
                  const Uploads& files = {}, std::string_view mtl_text = {});
+
+/// The picture of a bare model (a model sent without a scene) where the request asks nothing else: the
+/// service's and the CLI's default scene. Each value was chosen by measurement over a corpus of real models
+/// (`make bench-accuracy`, bench/model_defaults.cpp; docs/accuracy.md gives the numbers): the background is
+/// the grey that keeps the worst-shown model of the corpus most visible, the anti-aliasing the cheapest
+/// level whose edges are smooth. A scene document keeps its own documented defaults.
+struct ModelPicture {
+  int width = 512, height = 512;           ///< pixels
+  Rgba8 background{255, 255, 255, 255};    ///< straight RGBA, opaque: white
+  Antialias antialias = Antialias::msaa4;  ///< 4 samples a pixel
+};
+inline constexpr ModelPicture kModelPicture{};
+
+/// The scene a bare model is drawn in: kModelPicture's size, background and anti-aliasing, one mesh
+/// primitive drawing `mesh`, and a camera fitted to it from the front, standing on `format`'s up axis
+/// (the camera's up is given only when that axis is not +Y, so a +Y model's scene is the default camera's).
+Scene model_scene(Mesh mesh, ModelFormat format);
 
 /// Decodes a PNG or JPEG texture to RGBA8. The size is read from the header and checked first: over
 /// kMaxTextureSide a side, or over `texel_budget` texels, is SceneError(limit) before any pixel is decoded.

@@ -144,13 +144,14 @@ constexpr std::string_view kPlyTypes[] = {"model/ply", "application/ply"};
 constexpr std::string_view kGltfTypes[] = {"model/gltf+json"};
 constexpr std::string_view kGlbTypes[] = {"model/gltf-binary"};
 
+constexpr Vec3 kYUp{0, 1, 0}, kZUp{0, 0, 1};
 constexpr ModelFormatInfo kFormats[] = {
-    {ModelFormat::obj, "obj", kObjExtensions, kObjTypes, looks_like_obj, read_obj, obj_files, 2},
-    {ModelFormat::stl, "stl", kStlExtensions, kStlTypes, looks_like_stl, read_stl, nullptr, 0},
-    {ModelFormat::ply, "ply", kPlyExtensions, kPlyTypes, looks_like_ply, read_ply, nullptr, 0},
+    {ModelFormat::obj, "obj", kObjExtensions, kObjTypes, looks_like_obj, read_obj, obj_files, 2, kYUp},
+    {ModelFormat::stl, "stl", kStlExtensions, kStlTypes, looks_like_stl, read_stl, nullptr, 0, kZUp},
+    {ModelFormat::ply, "ply", kPlyExtensions, kPlyTypes, looks_like_ply, read_ply, nullptr, 0, kYUp},
     {ModelFormat::gltf, "gltf", kGltfExtensions, kGltfTypes, looks_like_gltf_json, read_gltf, files_of_gltf,
-     1},
-    {ModelFormat::glb, "glb", kGlbExtensions, kGlbTypes, looks_like_glb, read_gltf, files_of_gltf, 1},
+     1, kYUp},
+    {ModelFormat::glb, "glb", kGlbExtensions, kGlbTypes, looks_like_glb, read_gltf, files_of_gltf, 1, kYUp},
 };
 static_assert(std::size(kFormats) == kModelFormatCount);
 // model_format() finds a row by its enum value.
@@ -232,20 +233,36 @@ std::optional<ModelFormat> format_of_media_type(std::string_view media_type) {
   return std::nullopt;
 }
 
+ModelFormat model_format_of(std::string_view bytes, std::optional<ModelFormat> hint) {
+  if (const std::optional<ModelFormat> sniffed = sniff_model(bytes)) return *sniffed;
+  if (hint) return *hint;
+  if (skip_blanks(bytes).empty())
+    throw SceneError(ErrorKind::model,
+                     "the model is empty; rasterd reads " + std::string(accepted_formats()));
+  throw SceneError(ErrorKind::model, "the model is in no format rasterd reads: its first bytes are not " +
+                                         std::string(accepted_formats()) +
+                                         ". Name the format if the bytes are one of them (?format=stl, "
+                                         "or \"format\" in the scene)");
+}
+
 Mesh parse_model(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits,
                  const Uploads& files, std::string_view mtl_text) {
-  std::optional<ModelFormat> format = sniff_model(bytes);
-  if (!format) format = hint;
-  if (!format) {
-    if (skip_blanks(bytes).empty())
-      throw SceneError(ErrorKind::model,
-                       "the model is empty; rasterd reads " + std::string(accepted_formats()));
-    throw SceneError(ErrorKind::model, "the model is in no format rasterd reads: its first bytes are not " +
-                                           std::string(accepted_formats()) +
-                                           ". Name the format if the bytes are one of them (?format=stl, "
-                                           "or \"format\" in the scene)");
-  }
-  return model_format(*format).read(bytes, limits, files, mtl_text);
+  return model_format(model_format_of(bytes, hint)).read(bytes, limits, files, mtl_text);
+}
+
+Scene model_scene(Mesh mesh, ModelFormat format) {
+  Scene scene;
+  scene.width = kModelPicture.width;
+  scene.height = kModelPicture.height;
+  scene.background = kModelPicture.background;
+  scene.antialias = kModelPicture.antialias;
+  const Vec3& up = model_format(format).up;
+  if (up != Vec3{0, 1, 0}) scene.camera.up = up, scene.camera.has_up = true;
+  scene.meshes.push_back(std::move(mesh));
+  Primitive model;
+  model.kind = PrimitiveKind::mesh;
+  scene.primitives.push_back(model);
+  return scene;
 }
 
 }  // namespace raster
