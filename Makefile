@@ -4,7 +4,7 @@ JOBS    ?= 2
 PORT    ?= 8080
 CMAKE_FLAGS ?=
 
-.PHONY: test-openapi deps build serve test test-asan fuzz bench-build bench lighting bench-accuracy loadtest loadtest-admission loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster test-memory clean
+.PHONY: gallery test-openapi deps build serve test test-asan fuzz bench-build bench lighting bench-accuracy loadtest loadtest-admission loadtest-cache test-proxy test-docker test-repeat test-browser test-deploy test-cluster test-memory clean
 
 deps:
 	@scripts/install-deps
@@ -121,6 +121,12 @@ test-cluster: build
 # under the manifest's limits (make test-docker does, on the image it builds) and rewrites the image section.
 test-memory: build
 	@BUILD=$(BUILD) scripts/test-memory
+
+# Every model of Debian's assimp-testmodels that rasterd reads, rendered with the defaults a bare model gets,
+# as one contact sheet per format: rewrites docs/gallery.md and docs/images/gallery-*.png; fails on a crash.
+gallery: build
+	@scripts/install-deps gallery
+	@scripts/gallery --binary $(BUILD)/rasterd
 
 # openapi.json against the OpenAPI 3.1 schema, fetched from the npm registry (not kept in the repository).
 test-openapi: build
