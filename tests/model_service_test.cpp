@@ -108,6 +108,10 @@ TEST(ModelService, AntialiasIsAQueryParameterOfABareModel) {
   auto by_default = server.client().Post(kQuery, obj, "model/obj");
   ASSERT_TRUE(by_default);
   ASSERT_EQ(by_default->status, 200) << by_default->body;
+  const test::Decoded picture = test::decode_png(by_default->body);
+  const raster::Rgba8 background = raster::kModelPicture.background;
+  EXPECT_EQ(picture.pixels[0], background.r) << "a bare model is drawn on kModelPicture's background";
+  EXPECT_EQ(picture.pixels[picture.channels - 1], background.b);
   const std::string default_level = std::to_string(raster::sample_count(raster::kModelPicture.antialias));
   std::set<std::string> pictures;
   for (const char* level : {"1", "4", "16", "area"}) {
