@@ -264,6 +264,95 @@ TEST(Models, EveryFormatIsOneRowOfTheTable) {
   EXPECT_EQ(raster::format_of_media_type(""), std::nullopt);
 }
 
+// The readers' clock, injected: a budget that never refuses memory (it adds up what was asked) and says the
+// deadline passed from its `expire_at`-th question on (1-based; 0: never), counting the questions.
+class ReadClock : public raster::Budget {
+ public:
+  explicit ReadClock(std::int64_t expire_at = 0) : expire_at_(expire_at) {}
+  bool reserve(std::int64_t bytes) noexcept override {
+    reserved += bytes;
+    return true;
+  }
+  bool expired() const noexcept override { return ++asked >= expire_at_ && expire_at_ > 0; }
+  mutable std::int64_t asked = 0;  ///< questions so far
+  std::int64_t reserved = 0;       ///< bytes asked for so far
+
+ private:
+  std::int64_t expire_at_;
+};
+
+// Every reader asks the deadline as its work goes (at least once per 2^16 vertices and triangles read, in
+// whatever shape: lines, binary entries, list items, JSON values, accessors), and stops with RenderCancelled
+// at the first question after it passed: already passed, passing half way, passing at the last question.
+TEST(Models, EveryReaderStopsOnceTheDeadlinePasses) {
+  const TestMesh m = make_mesh(11, 300, 200);  // 60,000 vertices; 60,000 faces, ~108,000 triangles
+  const Gltf g = make_gltf(m, "m.bin", true);
+  const Written models[] = {
+      {"OBJ", write_obj(m), {}, ModelFormat::obj, true},
+      {"ASCII STL", write_stl_ascii(m), {}, ModelFormat::stl, false},
+      {"binary STL", write_stl_binary(m), {}, ModelFormat::stl, false},
+      {"ASCII PLY", write_ply_ascii(m), {}, ModelFormat::ply, true},
+      {"binary PLY", write_ply_binary(m, false), {}, ModelFormat::ply, true},
+      {"glTF", g.json, {{"m.bin", g.buffer}}, ModelFormat::gltf, true},
+      {"GLB", write_glb(make_gltf(m, "", true)), {}, ModelFormat::glb, true},
+  };
+  const std::int64_t work = static_cast<std::int64_t>(m.v.size() + triangles_of(m).size());
+  for (const Written& w : models) {
+    SCOPED_TRACE(w.name);
+    auto read = [&](raster::Budget& clock) {
+      raster::Limits limits;
+      limits.budget = &clock;
+      return raster::parse_model(w.bytes, w.format, limits, w.files);
+    };
+    ReadClock never;
+    EXPECT_FALSE(read(never).triangles.empty());
+    EXPECT_GE(never.asked, work / std::int64_t{1 << 16}) << "asked " << never.asked << " times";
+    for (const std::int64_t at : {std::int64_t{1}, std::max<std::int64_t>(1, never.asked / 2), never.asked}) {
+      ReadClock expires(at);
+      EXPECT_THROW(read(expires), raster::RenderCancelled) << "deadline passing at question " << at;
+      EXPECT_EQ(expires.asked, at) << "stopped at the first question after it passed";
+    }
+  }
+}
+
+// glTF instancing: what a model may build is bounded by the bytes sent (raster::kModelBuiltPerByte, with a
+// floor for small files). 1,000 nodes drawing one mesh of 3,000 vertices (3 million vertices from ~60 kB)
+// are refused, from the document's counts, before any vertex is asked for or built; ten nodes read.
+TEST(Models, GltfInstancingIsBoundedByTheBytesSent) {
+  std::string buffer;
+  for (int i = 0; i < 3000; ++i)
+    for (float v : {static_cast<float>(i % 7), static_cast<float>(i % 5), static_cast<float>(i % 3)})
+      test::put<float>(buffer, v);
+  auto doc = [&](int nodes) {
+    std::string list, scene;
+    for (int i = 0; i < nodes; ++i) {
+      list += std::string(i ? ", " : "") + R"({"mesh": 0})";
+      scene += (i ? ", " : "") + std::to_string(i);
+    }
+    return R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [)" + scene + R"(]}], "nodes": [)" + list +
+           R"(], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3000, "type": "VEC3"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36000}],
+      "buffers": [{"byteLength": 36000, "uri": "b.bin"}]})";
+  };
+  const raster::Uploads files{{"b.bin", buffer}};
+  const std::string many = doc(1000);
+  const std::uint64_t sent = many.size() + buffer.size();
+  ASSERT_LT(sent * raster::kModelBuiltPerByte, 3'000'000u);
+  ASSERT_LT(raster::kModelBuiltFloor, 3'000'000u);
+  ReadClock clock;
+  raster::Limits limits;
+  limits.budget = &clock;
+  expect_refused([&] { raster::parse_gltf(many, limits, files); }, ErrorKind::limit,
+                 "the model would build 3000000 vertices from " + std::to_string(sent) + " bytes; at most " +
+                     std::to_string(raster::kModelBuiltPerByte) + " per byte");
+  EXPECT_EQ(clock.reserved, raster::cost::kGltfPerByte * static_cast<std::int64_t>(sent))
+      << "only the document was asked for: no vertex or triangle";
+  const raster::Mesh ten = raster::parse_gltf(doc(10), {}, files);
+  EXPECT_EQ(ten.positions.size(), 30'000u);
+  EXPECT_EQ(ten.triangles.size(), 10'000u);
+}
+
 // Each declared count is checked against the bytes before it sizes anything: these would ask for
 // terabytes (the test runs under ASan too, whose allocator fails loudly on such sizes).
 TEST(Models, DeclaredCountsAreCheckedAgainstTheBytesFirst) {
