@@ -132,11 +132,12 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits = {});
 /// node's transform; triangles, strips and fans, lines, line strips and loops; indices of every component
 /// type; POSITION, NORMAL (a primitive without normals is flat, as glTF says: face normals beside others'
 /// given ones, Shading::flat when none has any), COLOR_0, TEXCOORD_n; a material's baseColorFactor and
-/// baseColorTexture with its alphaMode (OPAQUE: texel alpha 255; MASK: 255 or 0 at alphaCutoff; BLEND:
-/// kept), and KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked
-/// to lie within its buffer view and buffer before it is read; what tinygltf would build from the document
-/// is bounded before it runs, and so are the primitives drawn (nodes x their meshes' primitives). Nothing is
-/// read from disk or the network.
+/// baseColorTexture with its alphaMode (OPAQUE: texel alpha 255; MASK: 255 or 0 at alphaCutoff, and
+/// the renderer draws a texel of alpha 0 as a hole: neither colour nor depth; BLEND: kept), and
+/// KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked to lie
+/// within its buffer view and buffer before it is read; what tinygltf would build from the document is
+/// bounded before it runs, and so are the primitives drawn (nodes x their meshes' primitives) and the
+/// vertices and faces they build (kModelBuiltPerByte). Nothing is read from disk or the network.
 Mesh parse_gltf(std::string_view bytes, const Limits& limits = {}, const Uploads& files = {});
 
 /// The files a glTF document (or a GLB's JSON chunk) names: the URIs of its buffers and images that are not
