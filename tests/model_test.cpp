@@ -647,6 +647,67 @@ TEST(Models, GltfReviewFindingsAreRefusedOrDrawnAsGltfSays) {
           {{"b.bin", far + buffer.substr(36)}});
 }
 
+// glTF's alphaMode MASK end to end: a textured quad in front, its left texel below the cutoff, and a blue
+// quad behind it drawn later (the mesh's second primitive). Through the cut-out half the blue quad shows
+// (the cut-out texel wrote no depth), the kept half hides it; aliased and 4x multisampled.
+TEST(Models, GltfMaskCutOutsShowWhatIsDrawnBehindThem) {
+  std::string buffer;
+  for (const float z : {0.5f, -0.5f})  // the front quad's corners, then the back quad's
+    for (const float xy : {-1.f, -1.f, 1.f, -1.f, 1.f, 1.f, -1.f, 1.f}) {
+      test::put<float>(buffer, xy);
+      if (buffer.size() % 12 == 8) test::put<float>(buffer, z);
+    }
+  for (const float uv : {0.f, 1.f, 1.f, 1.f, 1.f, 0.f, 0.f, 0.f}) test::put<float>(buffer, uv);  // v down
+  for (const std::uint16_t i : {0, 1, 2, 0, 2, 3}) test::put<std::uint16_t>(buffer, i);
+  ASSERT_EQ(buffer.size(), 140u);
+  raster::Image texels;  // left: red, alpha 0 (cut out); right: opaque green
+  texels.width = 2, texels.height = 1, texels.format = raster::PixelFormat::rgba8;
+  texels.pixels = {255, 0, 0, 0, 0, 255, 0, 255};
+  const auto png = raster::encode_png(texels);
+  const raster::Uploads files{{"b.bin", buffer}, {"t.png", std::string(png.begin(), png.end())}};
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 2}, "indices": 3, "material": 0},
+                               {"attributes": {"POSITION": 1}, "indices": 3, "material": 1}]}],
+    "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}, "alphaMode": "MASK",
+                   "extensions": {"KHR_materials_unlit": {}}},
+                  {"pbrMetallicRoughness": {"baseColorFactor": [0, 0, 1, 1]},
+                   "extensions": {"KHR_materials_unlit": {}}}],
+    "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 33071, "wrapT": 33071}],
+    "images": [{"uri": "t.png"}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                  {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+                  {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+                  {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                    {"buffer": 0, "byteOffset": 96, "byteLength": 32},
+                    {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
+    "buffers": [{"byteLength": 140, "uri": "b.bin"}]})";
+  raster::Mesh mesh = raster::parse_gltf(gltf, {}, files);
+  ASSERT_EQ(mesh.textures.size(), 1u);
+  EXPECT_EQ(mesh.textures[0].rgba[3], 0);  // MASK: the left texel is cut out
+  for (const int samples : {1, 4}) {
+    SCOPED_TRACE(samples == 1 ? "aliased" : "4x multisampled");
+    raster::Scene s;  // looking down -z at [-1, 1]^2 exactly
+    s.width = s.height = 64;
+    s.meshes.push_back(mesh);
+    raster::Primitive p;
+    p.kind = raster::PrimitiveKind::mesh;
+    s.primitives.push_back(p);
+    s.camera.projection = raster::Projection::orthographic;
+    s.camera.eye = {0, 0, 5}, s.camera.has_eye = true;
+    s.camera.target = {0, 0, 0}, s.camera.has_target = true;
+    s.camera.height = 2, s.camera.has_height = true;
+    s.antialias = test::multisample(samples);
+    const raster::Image image = test::render(s);
+    // Two texels over 64 pixels: the outer 16 columns of each side sample one texel only (clamped).
+    for (int y = 2; y < 62; y += 5) {
+      for (int x = 1; x < 14; x += 4) EXPECT_EQ(test::pixel(image, x, y), test::kBlue) << x << ", " << y;
+      for (int x = 51; x < 64; x += 4) EXPECT_EQ(test::pixel(image, x, y), test::kGreen) << x << ", " << y;
+    }
+  }
+}
+
 // Coordinates beyond +-2^128 and counts that are no whole number get the reader's own words, with the line.
 TEST(Models, StlAndPlyNameWhatIsOutOfRange) {
   auto refused = [](auto parse, const std::string& bytes, const std::string& words) {
