@@ -264,6 +264,95 @@ TEST(Models, EveryFormatIsOneRowOfTheTable) {
   EXPECT_EQ(raster::format_of_media_type(""), std::nullopt);
 }
 
+// The readers' clock, injected: a budget that never refuses memory (it adds up what was asked) and says the
+// deadline passed from its `expire_at`-th question on (1-based; 0: never), counting the questions.
+class ReadClock : public raster::Budget {
+ public:
+  explicit ReadClock(std::int64_t expire_at = 0) : expire_at_(expire_at) {}
+  bool reserve(std::int64_t bytes) noexcept override {
+    reserved += bytes;
+    return true;
+  }
+  bool expired() const noexcept override { return ++asked >= expire_at_ && expire_at_ > 0; }
+  mutable std::int64_t asked = 0;  ///< questions so far
+  std::int64_t reserved = 0;       ///< bytes asked for so far
+
+ private:
+  std::int64_t expire_at_;
+};
+
+// Every reader asks the deadline as its work goes (at least once per 2^16 vertices and triangles read, in
+// whatever shape: lines, binary entries, list items, JSON values, accessors), and stops with RenderCancelled
+// at the first question after it passed: already passed, passing half way, passing at the last question.
+TEST(Models, EveryReaderStopsOnceTheDeadlinePasses) {
+  const TestMesh m = make_mesh(11, 300, 200);  // 60,000 vertices; 60,000 faces, ~108,000 triangles
+  const Gltf g = make_gltf(m, "m.bin", true);
+  const Written models[] = {
+      {"OBJ", write_obj(m), {}, ModelFormat::obj, true},
+      {"ASCII STL", write_stl_ascii(m), {}, ModelFormat::stl, false},
+      {"binary STL", write_stl_binary(m), {}, ModelFormat::stl, false},
+      {"ASCII PLY", write_ply_ascii(m), {}, ModelFormat::ply, true},
+      {"binary PLY", write_ply_binary(m, false), {}, ModelFormat::ply, true},
+      {"glTF", g.json, {{"m.bin", g.buffer}}, ModelFormat::gltf, true},
+      {"GLB", write_glb(make_gltf(m, "", true)), {}, ModelFormat::glb, true},
+  };
+  const std::int64_t work = static_cast<std::int64_t>(m.v.size() + triangles_of(m).size());
+  for (const Written& w : models) {
+    SCOPED_TRACE(w.name);
+    auto read = [&](raster::Budget& clock) {
+      raster::Limits limits;
+      limits.budget = &clock;
+      return raster::parse_model(w.bytes, w.format, limits, w.files);
+    };
+    ReadClock never;
+    EXPECT_FALSE(read(never).triangles.empty());
+    EXPECT_GE(never.asked, work / std::int64_t{1 << 16}) << "asked " << never.asked << " times";
+    for (const std::int64_t at : {std::int64_t{1}, std::max<std::int64_t>(1, never.asked / 2), never.asked}) {
+      ReadClock expires(at);
+      EXPECT_THROW(read(expires), raster::RenderCancelled) << "deadline passing at question " << at;
+      EXPECT_EQ(expires.asked, at) << "stopped at the first question after it passed";
+    }
+  }
+}
+
+// glTF instancing: what a model may build is bounded by the bytes sent (raster::kModelBuiltPerByte, with a
+// floor for small files). 1,000 nodes drawing one mesh of 3,000 vertices (3 million vertices from ~60 kB)
+// are refused, from the document's counts, before any vertex is asked for or built; ten nodes read.
+TEST(Models, GltfInstancingIsBoundedByTheBytesSent) {
+  std::string buffer;
+  for (int i = 0; i < 3000; ++i)
+    for (float v : {static_cast<float>(i % 7), static_cast<float>(i % 5), static_cast<float>(i % 3)})
+      test::put<float>(buffer, v);
+  auto doc = [&](int nodes) {
+    std::string list, scene;
+    for (int i = 0; i < nodes; ++i) {
+      list += std::string(i ? ", " : "") + R"({"mesh": 0})";
+      scene += (i ? ", " : "") + std::to_string(i);
+    }
+    return R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [)" + scene + R"(]}], "nodes": [)" + list +
+           R"(], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3000, "type": "VEC3"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36000}],
+      "buffers": [{"byteLength": 36000, "uri": "b.bin"}]})";
+  };
+  const raster::Uploads files{{"b.bin", buffer}};
+  const std::string many = doc(1000);
+  const std::uint64_t sent = many.size() + buffer.size();
+  ASSERT_LT(sent * raster::kModelBuiltPerByte, 3'000'000u);
+  ASSERT_LT(raster::kModelBuiltFloor, 3'000'000u);
+  ReadClock clock;
+  raster::Limits limits;
+  limits.budget = &clock;
+  expect_refused([&] { raster::parse_gltf(many, limits, files); }, ErrorKind::limit,
+                 "the model would build 3000000 vertices from " + std::to_string(sent) + " bytes; at most " +
+                     std::to_string(raster::kModelBuiltPerByte) + " per byte");
+  EXPECT_EQ(clock.reserved, raster::cost::kGltfPerByte * static_cast<std::int64_t>(sent))
+      << "only the document was asked for: no vertex or triangle";
+  const raster::Mesh ten = raster::parse_gltf(doc(10), {}, files);
+  EXPECT_EQ(ten.positions.size(), 30'000u);
+  EXPECT_EQ(ten.triangles.size(), 10'000u);
+}
+
 // Each declared count is checked against the bytes before it sizes anything: these would ask for
 // terabytes (the test runs under ASan too, whose allocator fails loudly on such sizes).
 TEST(Models, DeclaredCountsAreCheckedAgainstTheBytesFirst) {
@@ -556,6 +645,67 @@ TEST(Models, GltfReviewFindingsAreRefusedOrDrawnAsGltfSays) {
   refused(doc(without, R"(, "scale": [1e30, 1, 1])", ""), ErrorKind::model,
           "POSITION (accessor 0) element 1 is not a finite point within +-2^128",
           {{"b.bin", far + buffer.substr(36)}});
+}
+
+// glTF's alphaMode MASK end to end: a textured quad in front, its left texel below the cutoff, and a blue
+// quad behind it drawn later (the mesh's second primitive). Through the cut-out half the blue quad shows
+// (the cut-out texel wrote no depth), the kept half hides it; aliased and 4x multisampled.
+TEST(Models, GltfMaskCutOutsShowWhatIsDrawnBehindThem) {
+  std::string buffer;
+  for (const float z : {0.5f, -0.5f})  // the front quad's corners, then the back quad's
+    for (const float xy : {-1.f, -1.f, 1.f, -1.f, 1.f, 1.f, -1.f, 1.f}) {
+      test::put<float>(buffer, xy);
+      if (buffer.size() % 12 == 8) test::put<float>(buffer, z);
+    }
+  for (const float uv : {0.f, 1.f, 1.f, 1.f, 1.f, 0.f, 0.f, 0.f}) test::put<float>(buffer, uv);  // v down
+  for (const std::uint16_t i : {0, 1, 2, 0, 2, 3}) test::put<std::uint16_t>(buffer, i);
+  ASSERT_EQ(buffer.size(), 140u);
+  raster::Image texels;  // left: red, alpha 0 (cut out); right: opaque green
+  texels.width = 2, texels.height = 1, texels.format = raster::PixelFormat::rgba8;
+  texels.pixels = {255, 0, 0, 0, 0, 255, 0, 255};
+  const auto png = raster::encode_png(texels);
+  const raster::Uploads files{{"b.bin", buffer}, {"t.png", std::string(png.begin(), png.end())}};
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 2}, "indices": 3, "material": 0},
+                               {"attributes": {"POSITION": 1}, "indices": 3, "material": 1}]}],
+    "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}, "alphaMode": "MASK",
+                   "extensions": {"KHR_materials_unlit": {}}},
+                  {"pbrMetallicRoughness": {"baseColorFactor": [0, 0, 1, 1]},
+                   "extensions": {"KHR_materials_unlit": {}}}],
+    "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 33071, "wrapT": 33071}],
+    "images": [{"uri": "t.png"}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                  {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+                  {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+                  {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                    {"buffer": 0, "byteOffset": 96, "byteLength": 32},
+                    {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
+    "buffers": [{"byteLength": 140, "uri": "b.bin"}]})";
+  raster::Mesh mesh = raster::parse_gltf(gltf, {}, files);
+  ASSERT_EQ(mesh.textures.size(), 1u);
+  EXPECT_EQ(mesh.textures[0].rgba[3], 0);  // MASK: the left texel is cut out
+  for (const int samples : {1, 4}) {
+    SCOPED_TRACE(samples == 1 ? "aliased" : "4x multisampled");
+    raster::Scene s;  // looking down -z at [-1, 1]^2 exactly
+    s.width = s.height = 64;
+    s.meshes.push_back(mesh);
+    raster::Primitive p;
+    p.kind = raster::PrimitiveKind::mesh;
+    s.primitives.push_back(p);
+    s.camera.projection = raster::Projection::orthographic;
+    s.camera.eye = {0, 0, 5}, s.camera.has_eye = true;
+    s.camera.target = {0, 0, 0}, s.camera.has_target = true;
+    s.camera.height = 2, s.camera.has_height = true;
+    s.antialias = test::multisample(samples);
+    const raster::Image image = test::render(s);
+    // Two texels over 64 pixels: the outer 16 columns of each side sample one texel only (clamped).
+    for (int y = 2; y < 62; y += 5) {
+      for (int x = 1; x < 14; x += 4) EXPECT_EQ(test::pixel(image, x, y), test::kBlue) << x << ", " << y;
+      for (int x = 51; x < 64; x += 4) EXPECT_EQ(test::pixel(image, x, y), test::kGreen) << x << ", " << y;
+    }
+  }
 }
 
 // Coordinates beyond +-2^128 and counts that are no whole number get the reader's own words, with the line.

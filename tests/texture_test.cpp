@@ -540,4 +540,54 @@ TEST(TextureDecode, AJpegScanCutShortByAMarkerReadsZerosPastTheCut) {
       << "the first texels, before the cut";
 }
 
+// A glTF MASK material's cut-out texels (alpha 0 after the cutoff) write neither colour nor depth: a quad
+// drawn later behind a cut-out quad shows through the cut-out half, aliased and multisampled, and is hidden
+// by the kept half. The same front quad with its cut-out half opaque hides it everywhere (depth works).
+TEST(Texture, ACutOutTexelWritesNoDepth) {
+  // Left half cut out (alpha 0, its colour red so that a drawn one would show), right half opaque green.
+  auto front_texture = [](std::uint8_t left_alpha) {
+    Texture t = make_texture(8, 8, [&](int x, int) {
+      return x < 4 ? raster::Rgba8{255, 0, 0, left_alpha} : raster::Rgba8{0, 255, 0, 255};
+    });
+    t.clamp = true;  // repeating would mix the far edge's texels into the near one's
+    return t;
+  };
+  auto scene = [&](std::uint8_t left_alpha, int samples) {
+    Scene s = scene_of(
+        textured_quad(front_texture(left_alpha), {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}), 64);
+    Mesh back;  // drawn after the front quad, behind it (z = -1: farther from the eye at z = 5)
+    back.positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}};
+    back.triangles = {{0, 1, 2}, {0, 2, 3}};
+    back.colors = {test::kBlue};
+    back.shading = raster::Shading::unlit;
+    s.meshes.push_back(std::move(back));
+    raster::Primitive p;
+    p.kind = raster::PrimitiveKind::mesh;
+    p.mesh = 1;
+    s.primitives.push_back(p);
+    look_at_unit_square(s);
+    s.antialias = test::multisample(samples);
+    return s;
+  };
+  for (const int samples : {1, 4}) {
+    SCOPED_TRACE(samples == 1 ? "aliased" : "4x multisampled");
+    const Scene cut = scene(0, samples);
+    EXPECT_TRUE(raster::plan(cut).draw_of(0)->mode.cut_outs) << "the plan finds the alpha-0 texels";
+    const raster::Image image = test::render(cut);
+    // Away from the middle column (where bilinear filtering mixes the halves): the cut-out half shows the
+    // blue quad behind it, the kept half is green.
+    for (int y = 2; y < 62; y += 6) {
+      for (int x = 1; x < 26; x += 3) EXPECT_EQ(test::pixel(image, x, y), test::kBlue) << x << ", " << y;
+      for (int x = 36; x < 63; x += 3) EXPECT_EQ(test::pixel(image, x, y), test::kGreen) << x << ", " << y;
+    }
+    const Scene opaque = scene(255, samples);
+    EXPECT_FALSE(raster::plan(opaque).draw_of(0)->mode.cut_outs) << "no alpha-0 texel: the depth-first path";
+    const raster::Image hidden = test::render(opaque);
+    for (int y = 2; y < 62; y += 6) {
+      for (int x = 1; x < 26; x += 3) EXPECT_EQ(test::pixel(hidden, x, y), test::kRed) << x << ", " << y;
+      for (int x = 36; x < 63; x += 3) EXPECT_EQ(test::pixel(hidden, x, y), test::kGreen) << x << ", " << y;
+    }
+  }
+}
+
 }  // namespace

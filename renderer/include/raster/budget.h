@@ -20,8 +20,8 @@ class Budget {
   /// asking stage then stops and throws MemoryRefused. May wait (the service waits for other requests to
   /// give memory back, within its queue's bound).
   virtual bool reserve(std::int64_t bytes) noexcept = 0;
-  /// True once the render must stop (its deadline passed, or it was cancelled): long loops of the readers
-  /// ask every few tens of thousands of lines or elements, and throw RenderCancelled.
+  /// True once the render must stop (its deadline passed, or it was cancelled): the readers ask every 65,536
+  /// units of work (lines, entries, list items, corners, JSON values, ...) and throw RenderCancelled.
   virtual bool expired() const noexcept = 0;
 };
 

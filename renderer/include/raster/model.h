@@ -83,6 +83,19 @@ std::optional<ModelFormat> format_of_file_name(std::string_view file_name);
 /// nullopt.
 std::optional<ModelFormat> format_of_media_type(std::string_view media_type);
 
+/// What a model may build is bounded by the bytes sent (the model and the files it names, together): at most
+/// kModelBuiltPerByte vertices and as many faces (triangles and line segments) per byte, or kModelBuiltFloor
+/// of each whatever the size, so that tiny valid files always read. A glTF's nodes may draw one mesh many
+/// times (instancing): without this bound a few megabytes of nodes naming one large mesh reach the vertex
+/// limit (~1.5 GB while parsing); the count is made from the document before anything is built, and over it
+/// is SceneError(limit). The other formats are already within it by their syntax, so they are not counted:
+/// an OBJ vertex is a `v` line (>= 8 bytes) and each triangle of a face one more corner (>= 2 bytes); a PLY
+/// vertex has three properties (>= 3 bytes) and each triangle of a face one more index (>= 1 byte); an STL
+/// facet is 50 bytes (binary) or more (ASCII). Core glTF data is within it too (a position is 12 bytes, a
+/// triangle of a strip of byte indices 1 byte): only a mesh drawn again and again goes over it.
+inline constexpr std::uint64_t kModelBuiltPerByte = 1;
+inline constexpr std::uint64_t kModelBuiltFloor = std::uint64_t{1} << 20;
+
 /// Parses an OBJ model (and optional MTL text) into a mesh. Throws SceneError(model) naming the line.
 /// `files` are the uploaded files by file name (a name differing only in case is accepted); nothing is
 /// ever read from disk. Without `mtl_text`, the materials are the files the model's `mtllib` lines name,
@@ -124,11 +137,12 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits = {});
 /// node's transform; triangles, strips and fans, lines, line strips and loops; indices of every component
 /// type; POSITION, NORMAL (a primitive without normals is flat, as glTF says: face normals beside others'
 /// given ones, Shading::flat when none has any), COLOR_0, TEXCOORD_n; a material's baseColorFactor and
-/// baseColorTexture with its alphaMode (OPAQUE: texel alpha 255; MASK: 255 or 0 at alphaCutoff; BLEND:
-/// kept), and KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked
-/// to lie within its buffer view and buffer before it is read; what tinygltf would build from the document
-/// is bounded before it runs, and so are the primitives drawn (nodes x their meshes' primitives). Nothing is
-/// read from disk or the network.
+/// baseColorTexture with its alphaMode (OPAQUE: texel alpha 255; MASK: 255 or 0 at alphaCutoff, and
+/// the renderer draws a texel of alpha 0 as a hole: neither colour nor depth; BLEND: kept), and
+/// KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked to lie
+/// within its buffer view and buffer before it is read; what tinygltf would build from the document is
+/// bounded before it runs, and so are the primitives drawn (nodes x their meshes' primitives) and the
+/// vertices and faces they build (kModelBuiltPerByte). Nothing is read from disk or the network.
 Mesh parse_gltf(std::string_view bytes, const Limits& limits = {}, const Uploads& files = {});
 
 /// The files a glTF document (or a GLB's JSON chunk) names: the URIs of its buffers and images that are not

@@ -89,6 +89,11 @@ struct PrimitivePlan {
   bool depth = false;   ///< 3D: depth-tested and depth-written; 2D overlays are not
   bool lit = false;     ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
   bool compute_normals = false;  ///< per-pixel lighting of a mesh without normals: computed, angle-weighted
+  /// 3D textured: some texel of the mesh's textures has alpha 0 (glTF's MASK cut-outs). Its pixels are shaded
+  /// before their depth is written, and one whose alpha comes out 0 writes neither colour nor depth, so what
+  /// is drawn later behind a cut-out shows through it. Found once per texture by the plan; meshes without
+  /// such texels keep the path that writes depth first.
+  bool cut_outs = false;
   bool line_rectangles =
       false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
   /// Area coverage: the primitive's triangles (a line's two, a polyline's segments) add up their coverage

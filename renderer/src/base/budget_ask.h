@@ -30,4 +30,29 @@ inline void stop_if_expired(const Limits& limits) {
 }
 inline constexpr std::uint32_t kLinesPerCheck = 1u << 16;
 
+/// A reader's account of work since it last asked the budget whether to stop: a line, element, vertex,
+/// corner or point test is a unit, and every kLinesPerCheck units it asks (stop_if_expired). So a reader
+/// stops within that much work of the deadline however its work is shaped: many short lines, one PLY face
+/// of a million corners, or a concave polygon's ear clipping. Without a budget it only counts.
+class ReadMeter {
+ public:
+  explicit ReadMeter(const Limits& limits) : limits_(limits) {}
+  /// Counts `work` units; throws RenderCancelled once they add up to a check that finds the deadline passed.
+  void add(std::uint64_t work) {
+    if ((work_ += work) < kLinesPerCheck) return;
+    work_ = 0;
+    stop_if_expired(limits_);
+  }
+  /// Asks now, whatever the count: before a step whose work is not counted unit by unit (a library's
+  /// parse, a texture's decoding).
+  void check() {
+    work_ = 0;
+    stop_if_expired(limits_);
+  }
+
+ private:
+  const Limits& limits_;
+  std::uint64_t work_ = 0;
+};
+
 }  // namespace raster::detail

@@ -180,7 +180,7 @@ struct Shape {
 
 // Passes over one value, adding up what tinygltf would build for it (`values`: the value lies under
 // "extras" or "extensions"); without recursion (the cursor bounds the depth).
-std::uint64_t structure_bytes(JsonCursor& in, bool values) {
+std::uint64_t structure_bytes(JsonCursor& in, bool values, detail::ReadMeter& meter) {
   using Kind = JsonCursor::Kind;
   struct Open {
     bool object;  ///< else an array
@@ -189,6 +189,7 @@ std::uint64_t structure_bytes(JsonCursor& in, bool values) {
   std::vector<Open> open;  // the open containers, innermost last
   std::uint64_t bytes = 0;
   auto enter = [&](bool value) -> bool {  // reads a value's start: true when it opened a non-empty container
+    meter.add(1);
     const Kind k = in.peek();
     if (k != Kind::object && k != Kind::array) {
       bytes += value ? kValueBytes : kScalarBytes;
@@ -217,7 +218,7 @@ std::uint64_t structure_bytes(JsonCursor& in, bool values) {
   return bytes;
 }
 
-Shape shape_of(std::string_view json, int max_depth, const Uploads& files) {
+Shape shape_of(std::string_view json, int max_depth, const Uploads& files, detail::ReadMeter& meter) {
   using Kind = JsonCursor::Kind;
   JsonCursor in(json, max_depth);
   Shape shape;
@@ -226,13 +227,13 @@ Shape shape_of(std::string_view json, int max_depth, const Uploads& files) {
     const std::string_view key = in.key();
     const std::uint64_t size = struct_bytes(key);
     if (size == 0 || in.peek() != Kind::array) {
-      shape.structure_bytes += structure_bytes(in, holds_values(key));
+      shape.structure_bytes += structure_bytes(in, holds_values(key), meter);
       continue;
     }
     const bool buffers = key == "buffers";
     for (bool item = in.array_begin(); item; item = in.array_next()) {
       if (!buffers || in.peek() != Kind::object) {
-        shape.structure_bytes += size + structure_bytes(in, false);
+        shape.structure_bytes += size + structure_bytes(in, false, meter);
         continue;
       }
       shape.structure_bytes += size;
@@ -248,7 +249,7 @@ Shape shape_of(std::string_view json, int max_depth, const Uploads& files) {
           if (shape.missing.empty() && !name.starts_with("data:") && !find_upload(files, name))
             shape.missing = file_name_of_uri(name);
         } else {
-          shape.structure_bytes += structure_bytes(in, holds_values(field));
+          shape.structure_bytes += structure_bytes(in, holds_values(field), meter);
         }
       }
       shape.buffers_without_uri += !uri;
@@ -328,8 +329,9 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
   std::uint64_t sent = bytes.size();
   for (const auto& [name, file] : files) sent += file.size();
   Shape shape;
+  detail::ReadMeter meter(limits);  // each JSON value a unit while the document is measured
   try {
-    shape = shape_of(binary ? glb_json(bytes) : bytes, limits.max_json_depth, files);
+    shape = shape_of(binary ? glb_json(bytes) : bytes, limits.max_json_depth, files, meter);
   } catch (const SceneError& e) {
     gltf_error(std::string("the document is not JSON: ") + e.what() +
                (e.where().byte ? " (byte " + std::to_string(e.where().byte) + " of the JSON)" : ""));
@@ -353,6 +355,9 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
   // objects: bounded by what was sent, asked for before it runs.
   detail::reserve(limits, cost::kGltfPerByte * static_cast<std::int64_t>(sent),
                   [] { return std::string("reading the glTF document"); });
+  // tinygltf's parse cannot be asked to stop; it is linear in the bytes just measured, and asked about before
+  // and after.
+  meter.check();
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   CopyBudget budget{&model, &files, sent};
@@ -384,7 +389,8 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
   if (!model.asset.version.starts_with("2"))
     gltf_error("the document is glTF " + model.asset.version.substr(0, 20) +
                "; rasterd reads glTF 2.0 (Blender and the glTF tools convert older files)");
-  return gltf::build_mesh(model, limits, files);
+  meter.check();
+  return gltf::build_mesh(model, limits, files, sent);
 }
 
 }  // namespace raster

@@ -199,6 +199,7 @@ class AccessorView {
 
 // Every mesh of the document's default scene (else of every root node, else every mesh) in one Mesh,
 // under its nodes' transforms: the document is tinygltf's, already loaded and within the limits' bytes.
-Mesh build_mesh(const tinygltf::Model& model, const Limits& limits, const Uploads& files);
+// `sent` is the bytes of the model and its uploads, which bound what it may build (kModelBuiltPerByte).
+Mesh build_mesh(const tinygltf::Model& model, const Limits& limits, const Uploads& files, std::uint64_t sent);
 
 }  // namespace raster::gltf

@@ -21,6 +21,9 @@ namespace {
 // microseconds even when empty, so this bounds a model's reading to seconds, far above real scenes'
 // thousands.
 constexpr std::size_t kMaxDrawnPrimitives = 1 << 20;
+// What reading one primitive costs beyond its elements, in units of the deadline meter (detail::ReadMeter):
+// a few microseconds, as about a thousand vertices cost.
+constexpr std::uint64_t kPrimitiveWork = 1024;
 
 // Room for `more` elements, growing geometrically: a model of many primitives must not reallocate its arrays
 // once per primitive (reserving exactly each time copies them quadratically often).
@@ -73,8 +76,8 @@ Mat local_matrix(const tinygltf::Node& node) {
 // One Mesh built from the primitives of every node drawn, in the order the nodes are visited.
 class MeshBuilder {
  public:
-  MeshBuilder(const tinygltf::Model& model, const Limits& limits, const Uploads& files)
-      : model_(model), limits_(limits), files_(files) {}
+  MeshBuilder(const tinygltf::Model& model, const Limits& limits, const Uploads& files, std::uint64_t sent)
+      : model_(model), limits_(limits), files_(files), sent_(sent) {}
 
   Mesh read() {
     std::vector<int> roots;
@@ -93,6 +96,7 @@ class MeshBuilder {
       for (std::size_t i = 0; i < child.size(); ++i)
         if (!child[i]) roots.push_back(static_cast<int>(i));
     }
+    check_what_it_builds(roots, model_.scenes.empty() && model_.nodes.empty());
     visited_.assign(model_.nodes.size(), false);
     // Depth first without recursion: a document's nesting cannot exhaust the stack.
     std::vector<std::pair<int, Mat>> stack;
@@ -130,6 +134,83 @@ class MeshBuilder {
   }
 
  private:
+  // What drawing the nodes from `roots` (or, `every_mesh`, each mesh once) would build, counted from the
+  // accessors' declared counts before anything is built, against what the bytes sent allow (model.h:
+  // kModelBuiltPerByte). Only a count: the walk that builds checks each node, accessor and limit itself.
+  void check_what_it_builds(const std::vector<int>& roots, bool every_mesh) const {
+    // A declared count, where its buffer view could hold that many elements (else 0: AccessorView refuses
+    // the accessor, naming it, when the walk reaches it); at most 2^32, so a million primitives' sum cannot
+    // overflow.
+    auto count_of = [&](int accessor) -> std::uint64_t {
+      if (accessor < 0 || static_cast<std::size_t>(accessor) >= model_.accessors.size()) return 0;
+      const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(accessor)];
+      if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size()) return 0;
+      const int component = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType)),
+                components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+      if (component <= 0 || components <= 0) return 0;
+      const std::uint64_t view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)].byteLength;
+      const auto size = static_cast<std::uint64_t>(component) * static_cast<std::uint64_t>(components);
+      return a.count <= view / size ? std::min<std::uint64_t>(a.count, 1ull << 32) : 0;
+    };
+    std::uint64_t vertices = 0, faces = 0, primitives = 0;
+    auto add = [&](int mesh) {
+      if (mesh < 0 || static_cast<std::size_t>(mesh) >= model_.meshes.size()) return;
+      for (const tinygltf::Primitive& p : model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
+        ++primitives;
+        const auto pos = p.attributes.find("POSITION");
+        if (p.mode == TINYGLTF_MODE_POINTS || pos == p.attributes.end()) continue;
+        const std::uint64_t v = count_of(pos->second), n = p.indices >= 0 ? count_of(p.indices) : v;
+        vertices += v;
+        switch (p.mode) {  // as add_faces makes them
+          case TINYGLTF_MODE_TRIANGLES:
+            faces += n / 3;
+            break;
+          case TINYGLTF_MODE_TRIANGLE_STRIP:
+          case TINYGLTF_MODE_TRIANGLE_FAN:
+            faces += n < 2 ? 0 : n - 2;
+            break;
+          case TINYGLTF_MODE_LINE:
+            faces += n / 2;
+            break;
+          case TINYGLTF_MODE_LINE_STRIP:
+          case TINYGLTF_MODE_LINE_LOOP:
+            faces += n < 2 ? 0 : n - 1 + (p.mode == TINYGLTF_MODE_LINE_LOOP && n > 2);
+            break;
+          default:
+            break;
+        }
+      }
+    };
+    if (every_mesh) {
+      for (std::size_t i = 0; i < model_.meshes.size(); ++i) add(static_cast<int>(i));
+    } else {
+      std::vector<bool> seen(model_.nodes.size(), false);
+      std::vector<int> stack(roots.rbegin(), roots.rend());
+      // Stops past kMaxDrawnPrimitives, which the walk that builds refuses with its own error.
+      while (!stack.empty() && primitives <= kMaxDrawnPrimitives) {
+        const int index = stack.back();
+        stack.pop_back();
+        if (index < 0 || static_cast<std::size_t>(index) >= seen.size() ||
+            seen[static_cast<std::size_t>(index)])
+          continue;
+        seen[static_cast<std::size_t>(index)] = true;
+        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+        add(node.mesh);
+        stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
+      }
+    }
+    const std::uint64_t allowed = std::max(kModelBuiltFloor, kModelBuiltPerByte * sent_);
+    auto refuse = [&](std::uint64_t n, const char* what) {
+      throw SceneError(ErrorKind::limit,
+                       "glTF: the model would build " + std::to_string(n) + " " + what + " from " +
+                           std::to_string(sent_) + " bytes; at most " + std::to_string(kModelBuiltPerByte) +
+                           " per byte sent (or " + std::to_string(kModelBuiltFloor) +
+                           " for any model). Its nodes draw its meshes more often than its bytes allow");
+    };
+    if (vertices > allowed) refuse(vertices, "vertices");
+    if (faces > allowed) refuse(faces, "triangles and lines");
+  }
+
   void add_mesh(int index, const Mat& m) {
     if (static_cast<std::size_t>(index) >= model_.meshes.size())
       gltf_error("a node names mesh " + std::to_string(index) + ", which does not exist");
@@ -154,6 +235,8 @@ class MeshBuilder {
       const tinygltf::Primitive& p = primitives[pi];
       if (p.mode == TINYGLTF_MODE_POINTS) continue;  // rasterd draws faces and lines
       const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(pi);
+      // A primitive costs a few microseconds even when empty: kPrimitiveWork units, and its elements below.
+      meter_.add(kPrimitiveWork);
       const auto pos_it = p.attributes.find("POSITION");
       if (pos_it == p.attributes.end()) gltf_error(where + " has no POSITION");
       const AccessorView positions(model_, pos_it->second, where + " POSITION");
@@ -196,7 +279,8 @@ class MeshBuilder {
     if (base + positions.count() > 3 * static_cast<std::size_t>(limits_.max_model_faces) + 3)
       throw SceneError(ErrorKind::limit, "the model has more than " +
                                              std::to_string(3 * limits_.max_model_faces) + " vertices");
-    detail::stop_if_expired(limits_);
+    // Its loops (positions, normals, colours, uvs: each linear in the accessor) counted before they run.
+    meter_.add(4 * positions.count());
     detail::reserve(limits_, cost::kGltfPerVertex * static_cast<std::int64_t>(positions.count()), [&] {
       return positions.what() + "'s " + std::to_string(positions.count()) + " vertices";
     });
@@ -256,6 +340,7 @@ class MeshBuilder {
     const auto& pos = mesh_.positions;
     for (const auto& [first, end] : without_normals_)
       for (std::size_t t = first; t < end; ++t) {
+        meter_.add(1);
         const auto& tri = mesh_.triangles[t];
         const Vec3 a = pos[tri[0]], b = pos[tri[1]], c = pos[tri[2]];
         const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z}, v{c.x - a.x, c.y - a.y, c.z - a.z};
@@ -375,6 +460,7 @@ class MeshBuilder {
                    ". Send it as a multipart part with that file name (curl -F 'file=@" + name + "')");
       bytes = *upload;
     }
+    meter_.check();  // each decoding is bounded by the texel budget; asked before each
     Texture texture = decode_texture(bytes, name, texel_budget_);
     texel_budget_ -= std::int64_t{texture.width} * texture.height;
     if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < model_.samplers.size())
@@ -414,6 +500,7 @@ class MeshBuilder {
 
   // `more` triangles to come: refused over the face limit, else room made for them.
   void make_room_for_triangles(std::size_t more) {
+    meter_.add(more);  // the triangles' loop, counted before it runs
     if (mesh_.triangles.size() + more > static_cast<std::size_t>(limits_.max_model_faces))
       throw SceneError(ErrorKind::limit,
                        "the model has more than " + std::to_string(limits_.max_model_faces) + " faces");
@@ -444,6 +531,7 @@ class MeshBuilder {
 
   void add_faces(int mode, const std::vector<std::uint32_t>& v, bool mirrored, const std::string& where) {
     const std::size_t n = v.size();
+    meter_.add(n);
     switch (mode) {
       case TINYGLTF_MODE_TRIANGLES:
         add_triangles(n / 3, mirrored, [&](std::array<std::uint32_t, 3>* t) {
@@ -478,6 +566,9 @@ class MeshBuilder {
   const tinygltf::Model& model_;
   const Limits& limits_;
   const Uploads& files_;
+  detail::ReadMeter meter_{limits_};  ///< the deadline, asked as the work adds up
+  const std::uint64_t
+      sent_;  ///< bytes of the model and its uploads: what it may build (check_what_it_builds)
   Mesh mesh_;
   std::vector<bool> visited_;
   std::map<std::pair<int, TexelAlpha>, std::int32_t>
@@ -495,8 +586,9 @@ class MeshBuilder {
 
 }  // namespace
 
-Mesh build_mesh(const tinygltf::Model& model, const Limits& limits, const Uploads& files) {
-  return MeshBuilder(model, limits, files).read();
+Mesh build_mesh(const tinygltf::Model& model, const Limits& limits, const Uploads& files,
+                std::uint64_t sent) {
+  return MeshBuilder(model, limits, files, sent).read();
 }
 
 }  // namespace raster::gltf

@@ -65,6 +65,7 @@ struct Counts {
 // Validates every line tinyobjloader would index with, before it sees the text.
 Counts prescan(std::string_view text, const Limits& limits) {
   Counts n;
+  detail::ReadMeter meter(limits);  // a line and each of its words a unit: one line may hold a huge face
   std::size_t line_no = 0;
   std::string why;
   std::vector<std::string_view> w;
@@ -73,8 +74,9 @@ Counts prescan(std::string_view text, const Limits& limits) {
     if (end == std::string_view::npos) end = text.size();
     const std::string_view line = text.substr(pos, end - pos);
     pos = end + 1;
-    if (++line_no % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
+    ++line_no;
     split_words(line, w);
+    meter.add(1 + w.size());
     if (w.empty() || w[0][0] == '#') continue;
     const std::string_view key = w[0];
     if (key == "mtllib" && w.size() > 1) {
@@ -242,7 +244,8 @@ struct FaceTotals {
 // references, texture and colour (into `face_colors`, one per triangle). `no_uv` is the (0, 0) coordinate
 // of faces without their own.
 FaceTotals add_faces(const Parsed& model, const Counts& counts, const MaterialTextures& textures,
-                     std::uint32_t no_uv, Mesh& mesh, std::vector<Rgba8>& face_colors) {
+                     std::uint32_t no_uv, Mesh& mesh, std::vector<Rgba8>& face_colors,
+                     detail::ReadMeter& meter) {
   const auto& materials = model.materials;
   FaceTotals totals;
   // Each face's corners: tinyobjloader's count, but the prescan's for faces of 256 and more (tinyobjloader
@@ -256,7 +259,7 @@ FaceTotals add_faces(const Parsed& model, const Counts& counts, const MaterialTe
     }
     return stored;
   };
-  PolygonSplitter splitter;
+  PolygonSplitter splitter(&meter);                  // ear clipping's point tests count as the reader's work
   std::vector<Vec3> polygon;                         // a face's corners' positions
   std::vector<std::array<std::uint32_t, 3>> pieces;  // its triangles, as indices into its corners
   std::int64_t face_number = 0;                      // across shapes, in file order
@@ -267,6 +270,7 @@ FaceTotals add_faces(const Parsed& model, const Counts& counts, const MaterialTe
       const std::size_t n = corners_of(face_number++, shape.mesh.num_face_vertices[f]), first = next_face;
       next_face += n;
       if (next_face > idx.size()) model_error(0, "the model's faces could not be read consistently");
+      meter.add(n);
       if (n < 3) continue;
       split_face(idx, first, n, mesh.positions, splitter, polygon, pieces);
       const int m = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
@@ -378,14 +382,21 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
                            std::to_string(counts.v) + " vertices";
                   });
 
+  // tinyobjloader's parse cannot be asked to stop: it is linear in the text the prescan has just read (and
+  // checked as it went), and is asked about before and after. Every later step counts its work.
+  detail::ReadMeter meter(limits);
+  meter.check();
   const Parsed model = parse_with_tinyobj(obj_text, mtl.text);
+  meter.check();
   Mesh mesh = vertices_of(model.attrib);
   const MaterialTextures textures = material_textures(model.materials, mtl, files, limits, mesh.textures);
   if (!mesh.textures.empty()) add_uvs(model.attrib, mesh);
   std::vector<Rgba8> face_colors;
   reserve_triangles(model.shapes, counts, !model.attrib.normals.empty(), mesh, face_colors);
   const auto no_uv = static_cast<std::uint32_t>(model.attrib.texcoords.size() / 2);
-  const FaceTotals totals = add_faces(model, counts, textures, no_uv, mesh, face_colors);
+  meter.check();
+  const FaceTotals totals = add_faces(model, counts, textures, no_uv, mesh, face_colors, meter);
+  meter.check();
   add_lines(model.shapes, mesh);
   // Normals are used only when every face has them; otherwise they are computed.
   if (!totals.all_normals || mesh.normal_triangles.size() != mesh.triangles.size()) {
@@ -393,6 +404,7 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
     mesh.normal_triangles.clear();
   }
   if (totals.any_material) mesh.face_colors = std::move(face_colors);
+  meter.check();
   check_references(mesh);
   if (mesh.triangles.empty() && mesh.segments.empty())
     model_error(0, "the model has no faces or lines to draw");

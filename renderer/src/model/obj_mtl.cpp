@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "model/obj_mtl.h"
+
+#include "base/budget_ask.h"
 #include "raster/model.h"
 
 namespace raster::obj {
@@ -217,6 +219,7 @@ MaterialTextures material_textures(const std::vector<tinyobj::material_t>& mater
                          map.file + "\" (map_Kd), which was not sent; sent: " + names_of(files) +
                          ". Send it as a multipart part with that file name (curl -F 'texture=@" + map.file +
                          "')");
+    detail::stop_if_expired(limits);  // each decoding is bounded by the texel budget; asked before each
     Texture texture = decode_texture(*bytes, map.file, budget);
     budget -= std::int64_t{texture.width} * texture.height;
     texture.clamp = map.clamp, texture.scale = map.scale, texture.offset = map.offset;

@@ -374,7 +374,7 @@ inline void store(Mesh& mesh, const Layout& l, const Values& in, std::uint64_t i
 // Binary entries of one size (no lists): checked once for the whole element, then each vertex property
 // read at its offset, the others passed over, rather than value by value; another element is skipped.
 void read_fixed(const Element& e, const Layout& l, const Header& h, std::size_t file_size, Values& in,
-                Mesh& mesh) {
+                Mesh& mesh, detail::ReadMeter& meter) {
   const std::uint64_t stride = min_bytes(e, h.encoding);
   if (e.count * stride > in.left())  // e.count <= data bytes / stride: no overflow
     ply_error("element \"" + e.name + "\" ends after the data", e.line, file_size);
@@ -392,6 +392,7 @@ void read_fixed(const Element& e, const Layout& l, const Header& h, std::size_t 
   }
   const bool swapped = in.swapped();
   for (std::uint64_t i = 0; i < e.count; ++i) {
+    meter.add(1);
     const unsigned char* entry = in.take(static_cast<std::size_t>(stride));
     Vec3 pos, normal;
     Rgba8 colour;
@@ -404,12 +405,15 @@ void read_fixed(const Element& e, const Layout& l, const Header& h, std::size_t 
 // The faces, split into triangles as they come; those read before the vertices (legal, if rare) are kept,
 // their corners one after another and how many each has, and split once the positions are known.
 struct Faces {
+  Faces(Mesh& m, const Limits& l) : mesh(m), limits(l) {}
   Mesh& mesh;
   const Limits& limits;
+  /// The reader's deadline meter: entries, list items and ear clipping's point tests are its units.
+  detail::ReadMeter meter{limits};
   std::vector<std::uint32_t> corners;                // the face at hand's vertices
   std::vector<Vec3> polygon;                         // their positions, for a face of more than three
   std::vector<std::array<std::uint32_t, 3>> pieces;  // its triangles, as indices into corners
-  PolygonSplitter splitter;
+  PolygonSplitter splitter{&meter};
   std::vector<std::uint32_t> early_corners, early_sizes;
   std::size_t early_triangles = 0;
 
@@ -425,6 +429,7 @@ struct Faces {
   }
   void add_early() {
     for (std::size_t f = 0, at = 0; f < early_sizes.size(); at += early_sizes[f++]) {
+      meter.add(early_sizes[f]);
       corners.assign(early_corners.begin() + at, early_corners.begin() + at + early_sizes[f]);
       add();
     }
@@ -459,6 +464,7 @@ void read_list(const Element& e, const Property& p, std::uint64_t i, const Layou
                   " is longer than the data left",
               in.line(), in.ascii() ? 0 : in.byte());
   if (p.role != Role::indices || &e != l.face) return in.skip(p.type, items);
+  faces.meter.add(items);  // a list of a million corners is a million units of work
   std::vector<std::uint32_t>& corners = faces.corners;
   corners.clear();
   for (std::uint64_t k = 0; k < items; ++k) {
@@ -473,10 +479,9 @@ void read_list(const Element& e, const Property& p, std::uint64_t i, const Layou
 }
 
 // Element e value by value (ASCII, or binary with lists): vertices into the mesh, faces into `faces`.
-void read_values(const Element& e, const Layout& l, const Limits& limits, Values& in, Mesh& mesh,
-                 Faces& faces) {
+void read_values(const Element& e, const Layout& l, Values& in, Mesh& mesh, Faces& faces) {
   for (std::uint64_t i = 0; i < e.count; ++i) {
-    if ((i + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
+    faces.meter.add(1);
     Vec3 pos, normal;
     Rgba8 colour;
     for (const Property& p : e.properties) {
@@ -510,7 +515,7 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
 
   Mesh mesh;
   Values in(bytes, h);
-  Faces faces{mesh, limits, {}, {}, {}, {}, {}, {}, 0};
+  Faces faces(mesh, limits);
   for (const Element& e : h.elements) {
     // An element without properties holds no bytes, however many entries it declares (6e9 of them took a
     // fuzzed file 12 s to count through).
@@ -525,9 +530,9 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
     const bool fixed =
         std::none_of(e.properties.begin(), e.properties.end(), [](const Property& p) { return p.list; });
     if (!in.ascii() && fixed)
-      read_fixed(e, l, h, bytes.size(), in, mesh);
+      read_fixed(e, l, h, bytes.size(), in, mesh, faces.meter);
     else
-      read_values(e, l, limits, in, mesh, faces);
+      read_values(e, l, in, mesh, faces);
   }
   faces.add_early();
   if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");

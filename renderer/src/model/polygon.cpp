@@ -33,6 +33,7 @@ void PolygonSplitter::split(std::span<const Vec3> corners, std::vector<std::arra
 
 void PolygonSplitter::charge(std::int64_t work, std::size_t n) {
   work_left_ -= work;
+  if (meter_) meter_->add(static_cast<std::uint64_t>(work));
   if (work_left_ < 0)
     throw SceneError(ErrorKind::limit,
                      "the model's faces of many corners are too many or too concave to split into triangles "

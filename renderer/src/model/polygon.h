@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "base/budget_ask.h"
 #include "raster/scene.h"
 
 namespace raster {
@@ -18,6 +19,9 @@ namespace raster {
 /// so one face of a million concave corners would take hours. 2^28 units take about a second.
 class PolygonSplitter {
  public:
+  PolygonSplitter() = default;
+  /// With a meter, the work is also counted there: a face that takes long to split is deadline-checked.
+  explicit PolygonSplitter(detail::ReadMeter* meter) : meter_(meter) {}
   /// Appends the triangles of the polygon whose corners, in order (counter-clockwise seen from the front),
   /// are at `corners`: n - 2 triangles as triples of indices into `corners`, wound as the polygon is. A
   /// simple polygon, convex or not, is covered exactly; a self-intersecting or degenerate one still gets
@@ -33,6 +37,7 @@ class PolygonSplitter {
   void charge(std::int64_t work, std::size_t n);
 
   std::int64_t work_left_ = std::int64_t{1} << 28;  ///< point tests and steps still allowed
+  detail::ReadMeter* meter_ = nullptr;              ///< the reader's deadline meter, if any
   // The polygon being clipped: its corners in its plane, the ring that remains, reflex corners.
   std::vector<P2> p_;
   std::vector<std::uint32_t> prev_, next_, reflexes_;

@@ -57,8 +57,9 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
   mesh.positions.resize(std::size_t{count} * 3);
   mesh.triangles.resize(count);
   const char* p = bytes.data() + 84;
+  detail::ReadMeter meter(limits);  // a corner or a triangle a unit, as for the other readers
   for (std::uint32_t t = 0; t < count; ++t, p += 50) {
-    if ((t + 1) % detail::kLinesPerCheck == 0) detail::stop_if_expired(limits);
+    meter.add(4);
     // 12 bytes of facet normal (not read: see parse_stl), 3 corners of 12 bytes, 2 attribute bytes.
     for (int k = 0; k < 3; ++k) {
       const char* c = p + 12 + 12 * k;
@@ -149,10 +150,12 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
                   [] { return std::string("the model's facets"); });
   mesh.positions.reserve(reserved * 3);
   mesh.triangles.reserve(reserved);
+  detail::ReadMeter meter(limits);  // a facet line or corner a unit: the deadline is asked as lines go by
   std::string_view w = in.next();
   if (!iequal(w, "solid")) stl_error("expected \"solid\", got " + quoted(w), in.line());
   in.skip_line();  // the solid's name
   while (true) {
+    meter.add(1);  // the facet (or solid): with its corners below, 4 units a triangle as binary facets
     w = in.next();
     if (iequal(w, "endsolid")) {
       in.skip_line();
@@ -176,6 +179,7 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
       if (!iequal(w, "vertex")) stl_error("expected \"vertex\" or \"endloop\", got " + quoted(w), in.line());
       const double x = number(in), y = number(in), z = number(in);
       mesh.positions.push_back({x, y, z});
+      meter.add(1);
     }
     const std::size_t corners = mesh.positions.size() - first;
     if (corners < 3)

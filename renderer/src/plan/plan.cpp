@@ -105,12 +105,14 @@ struct Tally {
 // The textures of a textured mesh: whether they blend or break grey, and their bytes with the mipmaps.
 void plan_textures(const Mesh& mesh, PrimitivePlan& pp, RenderPlan& out, Tally& tally) {
   for (const Texture& t : mesh.textures) {
-    bool opaque = true, grey_texels = true;
+    bool opaque = true, grey_texels = true, cut_outs = false;
     for (std::size_t k = 0; k + 3 < t.rgba.size(); k += 4) {
       opaque &= t.rgba[k + 3] == 255;
+      cut_outs |= t.rgba[k + 3] == 0;
       grey_texels &= t.rgba[k] == t.rgba[k + 1] && t.rgba[k + 1] == t.rgba[k + 2];
     }
     pp.blend |= !opaque;
+    pp.cut_outs |= cut_outs;
     tally.grey &= grey_texels;
     out.memory.texture_bytes +=
         static_cast<std::int64_t>(t.rgba.size()) + detail::mip_bytes(t.width, t.height);

@@ -210,18 +210,25 @@ class TriangleShader {
 
   // 3D multisampling: depth tested per sample (the plane at each position), shaded once per pixel; a block
   // row at a time in lanes, on the plan's instruction set.
+  // A mesh with cut-outs (PrimitivePlan::cut_outs) takes its own instantiation: the others keep the code
+  // that writes depth as it tests, with no cost for the case they never have.
   void depth_samples(const Block& b, const std::uint64_t* masks) {
 #if defined(__x86_64__)
-    if (surface_.simd == Simd::avx2) return depth_samples_avx2(b, masks);
+    if (surface_.simd == Simd::avx2)
+      return mode_.cut_outs ? depth_samples_avx2<true>(b, masks) : depth_samples_avx2<false>(b, masks);
 #endif
-    depth_samples_lanes(b, masks);
+    mode_.cut_outs ? depth_samples_lanes<true>(b, masks) : depth_samples_lanes<false>(b, masks);
   }
 #if defined(__x86_64__)
+  template <bool kCutOuts>
   __attribute__((target("avx2"))) void depth_samples_avx2(const Block& b, const std::uint64_t* masks) {
-    depth_samples_lanes(b, masks);
+    depth_samples_lanes<kCutOuts>(b, masks);
   }
 #endif
 
+  // kCutOuts: the row is shaded before any depth is written, and the pixels whose alpha comes out 0 are
+  // taken out of every sample's pass, so a cut-out texel keeps neither colour nor depth.
+  template <bool kCutOuts>
   [[gnu::always_inline]] inline void depth_samples_lanes(const Block& b, const std::uint64_t* masks) {
     const int n = surface_.sample_count;
     const unsigned all = (1u << n) - 1;
@@ -239,12 +246,25 @@ class TriangleShader {
       unsigned pass[16], any = 0;
       for (int s = 0; s < n; ++s) {
         const unsigned covered = static_cast<unsigned>(masks[s] >> (8 * r)) & 0xff;
-        pass[s] = covered ? depth_test(surface_.depth + static_cast<std::size_t>(s) * surface_.plane + at,
-                                       centre + z_offset_[s], covered)
-                          : 0;
+        float* stored = surface_.depth + static_cast<std::size_t>(s) * surface_.plane + at;
+        if constexpr (kCutOuts)
+          pass[s] = covered ? nearer(stored, centre + z_offset_[s], covered) : 0;
+        else
+          pass[s] = covered ? depth_test(stored, centre + z_offset_[s], covered) : 0;
         any |= pass[s];
       }
       if (!any) continue;
+      FloatLanes rgba[4] = {};
+      if constexpr (kCutOuts) {
+        // Shaded at every pixel that passed somewhere (the centroid moves nothing where all samples are
+        // covered, so the colours are those the other path gives); alpha 0 drops the pixel from each sample.
+        unsigned visible = flat_.a ? 0xffu : 0u;
+        if (mode_.smooth) {
+          shade_row(b, masks, r, l0, any, any, rgba);
+          visible = lane_bits(rgba[3] >= 1.0f);  // byte_lanes: the alpha byte is 0 below 1
+        }
+        if (!(any = keep_visible(centre, at, visible, pass))) continue;
+      }
       *surface_.shaded += std::popcount(any);
       // Pixels whose every sample passed: one colour again, written as an aliased row writes it.
       unsigned whole = mode_.blend ? 0u : any;
@@ -253,11 +273,7 @@ class TriangleShader {
       std::uint8_t* p = surface_.color + at * C;
       std::uint64_t r8 = 0, g8 = 0, b8 = 0, a8 = 0;  // the pixels' colours, byte i for lane i
       if (mode_.smooth) {
-        FloatLanes l[3], rgba[4] = {};
-        for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
-        for (unsigned m = any & ~whole; m; m &= m - 1) centroid(b, std::countr_zero(m), r, masks, l);
-        kernel_.color.template shade<kColours>(l, any, rgba);
-        for (FloatLanes& v : rgba) byte_lanes(v);
+        if constexpr (!kCutOuts) shade_row(b, masks, r, l0, any, any & ~whole, rgba);
         if (whole) write(p, whole, rgba);
         r8 = lane_bytes(rgba[0]), a8 = lane_bytes(rgba[3]);
         g8 = kColours == 3 ? lane_bytes(rgba[1]) : r8, b8 = kColours == 3 ? lane_bytes(rgba[2]) : r8;
@@ -292,6 +308,32 @@ class TriangleShader {
     }
   }
 
+  // The colours (byte_lanes values) of the lanes `lanes` of block row r, each shaded at its pixel's centre,
+  // or for those of `moved` at the centroid of its covered samples where the centre is not covered.
+  [[gnu::always_inline]] inline void shade_row(const Block& b, const std::uint64_t* masks, int r,
+                                               const float (&l0)[3], unsigned lanes, unsigned moved,
+                                               FloatLanes (&rgba)[4]) const {
+    FloatLanes l[3];
+    for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
+    for (unsigned m = moved; m; m &= m - 1) centroid(b, std::countr_zero(m), r, masks, l);
+    kernel_.color.template shade<kColours>(l, lanes, rgba);
+    for (FloatLanes& v : rgba) byte_lanes(v);
+  }
+
+  // Multisampled cut-outs: the lanes not in `visible` leave every sample's pass (of the block row at `at`,
+  // depth `centre` at the pixel centres), and the others' depth is written. Returns the lanes still passing.
+  [[gnu::always_inline]] inline unsigned keep_visible(const FloatLanes& centre, std::size_t at,
+                                                      unsigned visible, unsigned* pass) const {
+    unsigned any = 0;
+    for (int s = 0; s < surface_.sample_count; ++s) {
+      if ((pass[s] &= visible))
+        keep_depth(surface_.depth + static_cast<std::size_t>(s) * surface_.plane + at, centre + z_offset_[s],
+                   pass[s]);
+      any |= pass[s];
+    }
+    return any;
+  }
+
   // The depth test of the lanes of `covered` against the stored row at `stored`: nearer values are kept;
   // returns the lanes that passed.
   [[gnu::always_inline]] inline static unsigned depth_test(float* stored, const FloatLanes& depth,
@@ -305,6 +347,21 @@ class TriangleShader {
       std::memcpy(stored, &kept, sizeof kept);
     }
     return pass;
+  }
+  // depth_test in two steps, for meshes with cut-outs: the lanes of `covered` nearer than the stored row
+  // (nothing written), then the depth of the lanes of `lanes` written once their alpha is known.
+  [[gnu::always_inline]] inline static unsigned nearer(const float* stored, const FloatLanes& depth,
+                                                       unsigned covered) {
+    FloatLanes old;
+    std::memcpy(&old, stored, sizeof old);
+    return lane_bits((depth > old) & ((kLaneBit & static_cast<std::int32_t>(covered)) != 0));
+  }
+  [[gnu::always_inline]] inline static void keep_depth(float* stored, const FloatLanes& depth,
+                                                       unsigned lanes) {
+    FloatLanes old;
+    std::memcpy(&old, stored, sizeof old);
+    const FloatLanes kept = (kLaneBit & static_cast<std::int32_t>(lanes)) != 0 ? depth : old;
+    std::memcpy(stored, &kept, sizeof kept);
   }
 
   // A block's values at its first pixel, from its exact edge values: depth in doubles, the barycentrics in
@@ -382,18 +439,24 @@ class TriangleShader {
 
   // 3D: depth test (reversed: larger is nearer; ties keep what was drawn first), then the colour of the
   // pixels that pass, eight at a time (a block row): on the plan's instruction set, the same bytes on each.
+  // Cut-outs (PrimitivePlan::cut_outs) as depth_samples takes them: an instantiation of their own.
   void shade_depth(const Block& b) const {
 #if defined(__x86_64__)
-    if (surface_.simd == Simd::avx2) return shade_depth_avx2(b);
+    if (surface_.simd == Simd::avx2)
+      return mode_.cut_outs ? shade_depth_avx2<true>(b) : shade_depth_avx2<false>(b);
 #endif
-    shade_depth_lanes(b);
+    mode_.cut_outs ? shade_depth_lanes<true>(b) : shade_depth_lanes<false>(b);
   }
 #if defined(__x86_64__)
+  template <bool kCutOuts>
   __attribute__((target("avx2"))) void shade_depth_avx2(const Block& b) const {
-    shade_depth_lanes(b);
+    shade_depth_lanes<kCutOuts>(b);
   }
 #endif
 
+  // kCutOuts: the lanes that pass are shaded before their depth is written; those whose alpha comes out 0
+  // write neither.
+  template <bool kCutOuts>
   [[gnu::always_inline]] inline void shade_depth_lanes(const Block& b) const {
     double z0;
     float l0[3];
@@ -404,10 +467,15 @@ class TriangleShader {
       const std::size_t at = surface_.index(b.x0, b.y0 + r);
       FloatLanes depth;
       row_depth(z0, r, depth);
-      const unsigned pass = depth_test(surface_.depth + at, depth, bits);
+      unsigned pass =
+          kCutOuts ? nearer(surface_.depth + at, depth, bits) : depth_test(surface_.depth + at, depth, bits);
       if (!pass) continue;
       std::uint8_t* p = surface_.color + at * C;
       if (!mode_.smooth) {
+        if constexpr (kCutOuts) {
+          if (!flat_.a) continue;
+          keep_depth(surface_.depth + at, depth, pass);
+        }
         for (unsigned m = pass; m; m &= m - 1) put<C>(p + std::countr_zero(m) * C, flat_, mode_.blend);
         continue;
       }
@@ -415,6 +483,10 @@ class TriangleShader {
       for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
       kernel_.color.template shade<kColours>(l, pass, rgba);
       for (FloatLanes& v : rgba) byte_lanes(v);
+      if constexpr (kCutOuts) {
+        if (!(pass &= lane_bits(rgba[3] >= 1.0f))) continue;  // byte_lanes: the alpha byte is 0 below 1
+        keep_depth(surface_.depth + at, depth, pass);
+      }
       write(p, pass, rgba);
     }
   }
