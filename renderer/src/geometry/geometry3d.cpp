@@ -569,6 +569,22 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
   }
 }
 
+// Points (scene.h: Mesh::points): a record each, a disc at the projected vertex. One beyond the near or far
+// plane or the guard band (which a disc of <= 64 px cannot cross into the image) is dropped whole.
+void add_points(const MeshView& view, const PrimitivePlan& point_mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  const std::uint32_t call = setup.add_call(make_call(point_mode));
+  // The radius in whole 1/256 px (coverage is decided in integers).
+  const std::int64_t radius = std::llround(static_cast<double>(mesh.point_size) * (kSubpixelScale / 2.0));
+  Records& part = setup.last_part();
+  for (const std::uint32_t i : mesh.points) {
+    if (meter.add(StopMeter::kPrimitiveWork)) return;  // deadline: a cloud can be millions of points
+    if (view.outside[i]) continue;
+    const ScreenVertex& v = view.screen[i];
+    setup.add_point(part, {v.x, v.y, radius * radius, v.depth, view.vertex_color(i), call, {}});
+  }
+}
+
 }  // namespace
 
 void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup,
@@ -578,6 +594,7 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
   if (!mesh.wireframe && !mesh.triangles.empty()) add_triangles(view, draw.mode, setup, meter);
   add_lines(view, draw.line_mode, setup, meter);
   if (draw.edge_mode.depth) add_edges(view, draw.edge_mode, setup, meter);
+  if (draw.point_mode.depth) add_points(view, draw.point_mode, setup, meter);
 }
 
 }  // namespace raster::detail

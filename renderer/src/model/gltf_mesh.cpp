@@ -93,6 +93,7 @@ class MeshBuilder {
       for (std::size_t i = 0; i < child.size(); ++i)
         if (!child[i]) roots.push_back(static_cast<int>(i));
     }
+    count_drawn_primitives(roots);
     visited_.assign(model_.nodes.size(), false);
     // Depth first without recursion: a document's nesting cannot exhaust the stack.
     std::vector<std::pair<int, Mat>> stack;
@@ -110,10 +111,8 @@ class MeshBuilder {
       if (node.mesh >= 0) add_mesh(node.mesh, world);
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back({*c, world});
     }
-    if (mesh_.triangles.empty() && mesh_.segments.empty())
-      gltf_error(
-          "the default scene has no triangles or lines to draw (rasterd draws faces and lines, not "
-          "points)");
+    if (mesh_.triangles.empty() && mesh_.segments.empty() && mesh_.points.empty())
+      gltf_error("the default scene has no triangles, lines or points to draw");
     if (!textured_) {
       mesh_.textures.clear(), mesh_.uvs.clear(), mesh_.face_textures.clear();
     } else {
@@ -130,6 +129,31 @@ class MeshBuilder {
   }
 
  private:
+  // The primitives the nodes under `roots` draw, counted before any is read and refused over
+  // kMaxDrawnPrimitives: every primitive is drawn (POINTS too), so a document of many nodes naming a mesh of
+  // many primitives is refused before the first is read. Bad node references are left to the traversal.
+  void count_drawn_primitives(const std::vector<int>& roots) const {
+    std::vector<bool> seen(model_.nodes.size(), false);
+    std::vector<int> stack(roots.rbegin(), roots.rend());
+    std::size_t drawn = 0;
+    while (!stack.empty()) {
+      const int index = stack.back();
+      stack.pop_back();
+      if (index < 0 || static_cast<std::size_t>(index) >= seen.size() ||
+          seen[static_cast<std::size_t>(index)])
+        continue;
+      seen[static_cast<std::size_t>(index)] = true;
+      const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+      if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < model_.meshes.size())
+        drawn += model_.meshes[static_cast<std::size_t>(node.mesh)].primitives.size();
+      if (drawn > kMaxDrawnPrimitives)
+        throw SceneError(ErrorKind::limit,
+                         "glTF: the default scene draws more than " + std::to_string(kMaxDrawnPrimitives) +
+                             " mesh primitives (each node draws every primitive of its mesh)");
+      for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back(*c);
+    }
+  }
+
   void add_mesh(int index, const Mat& m) {
     if (static_cast<std::size_t>(index) >= model_.meshes.size())
       gltf_error("a node names mesh " + std::to_string(index) + ", which does not exist");
@@ -152,7 +176,6 @@ class MeshBuilder {
                            " mesh primitives (each node draws every primitive of its mesh)");
     for (std::size_t pi = 0; pi < primitives.size(); ++pi) {
       const tinygltf::Primitive& p = primitives[pi];
-      if (p.mode == TINYGLTF_MODE_POINTS) continue;  // rasterd draws faces and lines
       const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(pi);
       const auto pos_it = p.attributes.find("POSITION");
       if (pos_it == p.attributes.end()) gltf_error(where + " has no POSITION");
@@ -458,6 +481,12 @@ class MeshBuilder {
       case TINYGLTF_MODE_TRIANGLE_FAN:
         make_room_for_triangles(n < 2 ? 0 : n - 2);
         for (std::size_t i = 1; i + 1 < n; ++i) add_triangle(v[0], v[i], v[i + 1], mirrored);
+        break;
+      case TINYGLTF_MODE_POINTS:  // each vertex a round point (Mesh::points), unlit
+        if (mesh_.points.size() + n > static_cast<std::size_t>(limits_.max_model_points))
+          throw SceneError(ErrorKind::limit,
+                           "the model has more than " + std::to_string(limits_.max_model_points) + " points");
+        mesh_.points.insert(mesh_.points.end(), v.begin(), v.end());
         break;
       case TINYGLTF_MODE_LINE:
         for (std::size_t i = 0; i + 1 < n; i += 2) mesh_.segments.push_back({v[i], v[i + 1]});
