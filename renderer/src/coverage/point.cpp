@@ -20,10 +20,11 @@ inline std::int64_t distance2(const PointRecord& p, int x, int y, SamplePoint at
 template <int C>
 void draw_centres(const PointRecord& p, const PrimitivePlan& mode, const Surface& s, Rect r) {
   const SamplePoint centre{kSubpixelScale / 2, kSubpixelScale / 2};
+  const std::int64_t radius2 = p.radius * p.radius;
   std::int64_t shaded = 0;
   for (int y = r.y0; y < r.y1; ++y)
     for (int x = r.x0; x < r.x1; ++x) {
-      if (distance2(p, x, y, centre) > p.radius2) continue;
+      if (distance2(p, x, y, centre) > radius2) continue;
       const std::size_t index = s.index(x, y);
       if (mode.depth) {  // reversed: larger is nearer; ties keep what was drawn first
         if (!(p.depth > s.depth[index])) continue;
@@ -42,6 +43,7 @@ template <int C>
 void draw_samples(const PointRecord& p, const PrimitivePlan& mode, const Surface& s, Rect r) {
   const int n = s.sample_count;
   const unsigned all = (1u << n) - 1;
+  const std::int64_t radius2 = p.radius * p.radius;
   auto sample_pixel = [&](int k, std::size_t index) {
     return s.samples + (static_cast<std::size_t>(k) * s.plane + index) * C;
   };
@@ -51,7 +53,7 @@ void draw_samples(const PointRecord& p, const PrimitivePlan& mode, const Surface
       const std::size_t index = s.index(x, y);
       unsigned passed = 0;
       for (int k = 0; k < n; ++k) {
-        if (distance2(p, x, y, s.pattern[k]) > p.radius2) continue;
+        if (distance2(p, x, y, s.pattern[k]) > radius2) continue;
         if (mode.depth) {
           float& stored = s.depth[static_cast<std::size_t>(k) * s.plane + index];
           if (!(p.depth > stored)) continue;

@@ -99,7 +99,7 @@ struct LineRecord {
 /// pixels in every tile and at every thread count.
 struct PointRecord {
   std::int32_t x = 0, y = 0;  ///< the centre, 1/256 px, origin top-left, y down (inside the guard band)
-  std::int64_t radius2 = 0;   ///< the radius squared, (1/256 px)^2
+  std::int64_t radius = 0;    ///< 1/256 px, >= 0 (at most 64 px / 2)
   float depth = 0;            ///< z / w, reversed (larger is nearer), the same over the whole disc
   Rgba8 color;                ///< straight RGBA: the vertex colour, unlit
   std::uint32_t call = 0;     ///< index into Setup::calls (depth test and blending)
@@ -173,8 +173,9 @@ struct Setup {
   void finish(Records& part, std::uint32_t call, const SetupVertex* const (&v)[3], bool back_facing) const;
   /// Adds a 1-px line record (its box is computed here).
   void add_line(LineRecord line);
-  /// Adds a point record to `part` (its box is computed here from its centre and radius; a point whose
-  /// samples can all lie outside the image is not added). Reads only the setup's image and coverage.
+  /// Adds a point record to `part` (its box is computed here from its centre and radius; a point that can
+  /// cover no sample of the image is not added). Reads only the setup's image and coverage: threads may fill
+  /// different parts at once.
   void add_point(Records& part, PointRecord point) const;
   /// Records of every part.
   std::size_t record_count() const;
