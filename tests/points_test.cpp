@@ -129,6 +129,30 @@ TEST(Points, VertexColoursColourThePoints) {
   EXPECT_EQ(test::pixel(one, 50, 50), colors[3]);
 }
 
+// The plan counts the points and lights none of them (points carry no normals); a mesh of faces and points
+// lights its faces alone.
+TEST(Points, ThePlanCountsPointsAndLightsNone) {
+  const raster::Scene cloud_only = scene_of({cloud({{10.5, 10.5, 0}, {50.5, 50.5, 0}}, {test::kWhite}, 3)});
+  const raster::RenderPlan plan = raster::plan(cloud_only);
+  EXPECT_EQ(plan.points_3d, 2);
+  EXPECT_EQ(plan.lit_count, 0);
+  EXPECT_NE(raster::explain_json(plan).find("\"points_3d\": 2"), std::string::npos)
+      << raster::explain_json(plan);
+  const Rgba8 colour{200, 100, 50, 255};
+  Mesh both = square(16, 16, 48, 48, 0, colour);
+  both.shading = raster::Shading::smooth;
+  both.points = {0};
+  const raster::RenderPlan lit = raster::plan(scene_of({both}));
+  EXPECT_EQ(lit.lit_count, 1);
+  EXPECT_EQ(lit.points_3d, 1);
+  // The point at the square's corner (16, 48) keeps its own colour, unlit, beside the square (at the square's
+  // own depth it loses the tie to the square drawn first); the lit square is not that colour.
+  const raster::Image image = test::render(scene_of({both}));
+  EXPECT_EQ(test::pixel(image, 15, 48), colour);
+  EXPECT_EQ(test::pixel(image, 14, 48), kBlack);
+  EXPECT_NE(test::pixel(image, 32, 32), colour);
+}
+
 // Multisampled, a point's rim pixels are partly covered (some of their samples are in the disc): between the
 // background and the point's colour. Its centre pixel is whole, and a pixel with no sample in the disc is
 // untouched. The covered pixels are those with a sample in the disc.
