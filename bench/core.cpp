@@ -1,6 +1,7 @@
 // The raster core's targets (2D: issue 30; meshes: issue 41), side by side with llvmpipe in one run: plan +
 // render time of the 2D scenes and the 3D meshes at 1 and 2 threads, flat fill rate against memset's
-// bandwidth, and the bytes the tile bins take. Usage: core [runs] [path/to/osmesa_peer]. Prints Markdown.
+// bandwidth, and the bytes the tile bins take; issue 42's points against triangles and the default point size
+// (`core --point-size` prints that table alone). Usage: core [runs] [path/to/osmesa_peer]. Prints Markdown.
 // This VM runs a whole process at one of two speeds, so each side of a ratio is the fastest of kProcesses
 // processes: the peer run that often per thread count, and this program re-run in its hidden mode
 // (`core --measure runs`, "scene threads ms" lines), each process's medians, the minimum over processes.
@@ -14,6 +15,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -47,8 +49,14 @@ struct Target {
 constexpr Target kTargets[] = {{"small", 2.5}, {"large", 3},    {"grid", 2},
                                {"flat", 2},    {"sphere", 1.5}, {"bunny", 2}};
 
+// Issue 42: a cloud of a million points renders in at most twice the time of a million triangles.
+constexpr const char* kPointKinds[] = {"triangles_1m", "points_1m"};
+constexpr double kPointsTarget = 2;  // points_1m ms / triangles_1m ms, at most
+
 raster::Scene target_scene(const std::string& kind) {
-  return kind == "sphere" || kind == "bunny" ? bench::mesh_scene(kind) : bench::make_scene(kind, 1);
+  return kind == "sphere" || kind == "bunny" || kind == "triangles_1m" || kind == "points_1m"
+             ? bench::mesh_scene(kind)
+             : bench::make_scene(kind, 1);
 }
 
 // The bare models whose default anti-aliasing is held to <= kModelAntialiasCost x the aliased render
@@ -71,14 +79,19 @@ raster::Scene model_picture(const ModelFile& file) {
   return raster::model_scene(raster::checks::model_mesh(bytes, format, {}, {}, "", "", 0, format), format);
 }
 
-// The hidden mode: plan + render of every target scene at 1 and 2 threads, medians of `runs`, one
-// "scene threads ms" line each (a scene that cannot be made is left out; the parent says why); then each
-// model picture aliased ("bunny-model-1") and at its default ("bunny-model-default").
-void measure(int runs) {
-  for (const Target& t : kTargets) {
+// The hidden mode: plan + render of every target scene (or of the `only` ones, when named) at 1 and 2
+// threads, medians of `runs`, one "scene threads ms" line each (a scene that cannot be made is left out; the
+// parent says why); then each model picture aliased ("bunny-model-1") and at its default
+// ("bunny-model-default"), unless `only` names others.
+void measure(int runs, const std::vector<std::string>& only) {
+  std::vector<std::string> kinds;
+  for (const Target& t : kTargets) kinds.push_back(t.kind);
+  for (const char* k : kPointKinds) kinds.push_back(k);
+  for (const std::string& kind : kinds) {
+    if (!only.empty() && std::find(only.begin(), only.end(), kind) == only.end()) continue;
     raster::Scene scene;
     try {
-      scene = target_scene(t.kind);
+      scene = target_scene(kind);
     } catch (const std::exception&) {
       continue;
     }
@@ -88,11 +101,12 @@ void measure(int runs) {
       raster::Image image;
       const double ms =
           bench::median_ms(runs, [&] { image = raster::render(scene, raster::plan(scene, {}, options)); });
-      std::printf("%s %d %.4f\n", t.kind, threads, ms);
+      std::printf("%s %d %.4f\n", kind.c_str(), threads, ms);
       std::fflush(stdout);
     }
   }
   for (const ModelFile& file : kModelFiles) {
+    if (!only.empty()) break;
     raster::Scene scene;
     try {
       scene = model_picture(file);
@@ -127,6 +141,89 @@ std::map<std::string, std::map<int, double>> measure_in_child(int runs) {
   return out;
 }
 
+// The default point size (issue 42): the bunny's surface sampled as a scanner would, 100,000 points spread
+// over its triangles by area (seeded), drawn at 512x512 through the camera fitted to the mesh, at each size
+// in half pixels; a hole is a pixel of the mesh's own silhouette that the points leave as background.
+// raster::kDefaultPointSize is the smallest size with under 1% holes.
+void point_size_table() {
+  raster::Scene mesh_scene;
+  try {
+    mesh_scene = bench::mesh_scene("bunny");
+  } catch (const std::exception& e) {
+    std::printf("\nPoint size: %s\n", e.what());
+    return;
+  }
+  raster::Mesh& mesh = mesh_scene.meshes[0];
+  mesh.shading = raster::Shading::unlit;
+  mesh_scene.background = {0, 0, 0, 255};
+  const raster::Rgba8 colour{255, 255, 255, 255};
+  mesh.colors = {colour};
+  const raster::RenderPlan fitted = raster::plan(mesh_scene);
+  raster::Camera& camera = mesh_scene.camera;  // the mesh's fitted camera, for both renders
+  camera.eye = fitted.view.eye, camera.target = fitted.view.target, camera.up = fitted.view.up;
+  camera.near = fitted.view.near, camera.far = fitted.view.far;
+  camera.has_eye = camera.has_target = camera.has_up = camera.has_near = camera.has_far = true;
+  const raster::Image silhouette = raster::render(mesh_scene, raster::plan(mesh_scene));
+
+  raster::Scene cloud_scene = mesh_scene;
+  raster::Mesh cloud;
+  std::vector<double> area_sum;  // running total of the triangles' areas
+  auto at = [&](std::uint32_t i) { return mesh.positions[i]; };
+  double total = 0;
+  for (const auto& t : mesh.triangles) {
+    const raster::Vec3 a = at(t[0]), b = at(t[1]), c = at(t[2]);
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y,
+                 vz = c.z - a.z;
+    const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+    total += std::sqrt(cx * cx + cy * cy + cz * cz) / 2;
+    area_sum.push_back(total);
+  }
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> unit(0, 1);
+  constexpr int kScanPoints = 100'000;
+  for (int i = 0; i < kScanPoints; ++i) {
+    const std::size_t t = std::min<std::size_t>(
+        std::lower_bound(area_sum.begin(), area_sum.end(), unit(rng) * total) - area_sum.begin(),
+        mesh.triangles.size() - 1);
+    double u = unit(rng), v = unit(rng);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    const raster::Vec3 a = at(mesh.triangles[t][0]), b = at(mesh.triangles[t][1]),
+                       c = at(mesh.triangles[t][2]);
+    cloud.positions.push_back({a.x + u * (b.x - a.x) + v * (c.x - a.x),
+                               a.y + u * (b.y - a.y) + v * (c.y - a.y),
+                               a.z + u * (b.z - a.z) + v * (c.z - a.z)});
+    cloud.points.push_back(static_cast<std::uint32_t>(i));
+  }
+  cloud.colors = {colour};
+  cloud_scene.meshes[0] = cloud;
+
+  std::int64_t inside = 0;
+  for (int y = 0; y < silhouette.height; ++y)
+    for (int x = 0; x < silhouette.width; ++x) inside += silhouette.at(x, y)[0] != 0;
+  std::printf(
+      "\nPoint size (issue 42): the bunny as a %d-point scan (points spread over its surface by area) at "
+      "%dx%d; holes are pixels of the mesh's silhouette (%lld pixels) the points leave empty, spill is "
+      "pixels they cover outside it. Default: %.1f px, the smallest size with under 1%% holes.\n\n"
+      "| point_size px | holes | spill | plan + render ms |\n|---:|---:|---:|---:|\n",
+      kScanPoints, silhouette.width, silhouette.height, static_cast<long long>(inside),
+      static_cast<double>(raster::kDefaultPointSize));
+  for (const float size : {1.0f, 1.5f, 2.0f, 2.5f, 3.0f, 3.5f, 4.0f}) {
+    cloud_scene.meshes[0].point_size = size;
+    raster::Image image;
+    const double ms =
+        bench::median_ms(5, [&] { image = raster::render(cloud_scene, raster::plan(cloud_scene)); });
+    std::int64_t holes = 0, spill = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const bool in = silhouette.at(x, y)[0] != 0;
+        const bool drawn = image.at(x, y)[0] != 0;
+        holes += in && !drawn, spill += drawn && !in;
+      }
+    std::printf("| %.1f | %.2f%% | %.2f%% | %.2f |\n", static_cast<double>(size), 100.0 * holes / inside,
+                100.0 * spill / inside, ms);
+  }
+}
+
 // Keeps the smaller of each time already in `into` and the one in `from`.
 template <typename Key>
 void keep_min(std::map<Key, double>& into, const std::map<Key, double>& from) {
@@ -137,8 +234,12 @@ void keep_min(std::map<Key, double>& into, const std::map<Key, double>& from) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 2 && std::string(argv[1]) == "--measure") {
-    measure(std::max(1, std::atoi(argv[2])));
+  if (argc > 1 && std::string(argv[1]) == "--point-size") {  // that table alone
+    point_size_table();
+    return 0;
+  }
+  if (argc > 2 && std::string(argv[1]) == "--measure") {  // core --measure runs [scene...]
+    measure(std::max(1, std::atoi(argv[2])), std::vector<std::string>(argv + 3, argv + argc));
     return 0;
   }
   const int runs = argc > 1 ? std::atoi(argv[1]) : 11;
@@ -230,6 +331,21 @@ int main(int argc, char** argv) {
                   smooth / aliased, kModelAntialiasCost,
                   smooth / aliased <= kModelAntialiasCost ? "met" : "**gap**");
     }
+
+  // Points against triangles (issue 42): the same sphere as a million points and as a million triangles.
+  std::printf(
+      "\nA million points against a million triangles (issue 42), 1024x1024, plan + render, fastest of %d "
+      "processes:\n\n| threads | triangles_1m ms | points_1m ms | points / triangles | target | verdict |\n"
+      "|---:|---:|---:|---:|---:|---|\n",
+      kProcesses);
+  for (int threads : {1, 2}) {
+    if (!raster_ms["triangles_1m"].count(threads) || !raster_ms["points_1m"].count(threads)) continue;
+    const double tri = raster_ms["triangles_1m"][threads], pts = raster_ms["points_1m"][threads];
+    std::printf("| %d | %.2f | %.2f | %.2fx | ≤ %.0fx | %s |\n", threads, tri, pts, pts / tri, kPointsTarget,
+                pts / tri <= kPointsTarget ? "met" : "**gap**");
+  }
+
+  point_size_table();
 
   // Where the time goes, one thread, and what the bins cost.
   std::printf(

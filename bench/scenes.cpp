@@ -155,7 +155,35 @@ namespace bench {
 raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path) {
   raster::Scene s;
   raster::Mesh mesh;
-  if (kind == "sphere") {
+  if (kind == "triangles_1m") {  // issue 42's yardstick for points: a sphere of 999,698 triangles
+    s.width = s.height = 1024;
+    constexpr int n = 707;
+    const double pi = std::acos(-1.0);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const double theta = pi * i / n, phi = 2 * pi * j / n;
+        mesh.positions.push_back(
+            {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+      }
+    auto at = [](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
+        mesh.triangles.push_back({at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
+      }
+    mesh.colors = {{220, 200, 180, 255}};
+  } else if (kind == "points_1m") {  // the same sphere as 1,000,000 points, evenly spread (a Fibonacci
+                                     // lattice), at the default point size
+    s.width = s.height = 1024;
+    constexpr int n = 1'000'000;
+    const double golden = std::acos(-1.0) * (3 - std::sqrt(5.0));
+    for (int i = 0; i < n; ++i) {
+      const double y = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - y * y), phi = golden * i;
+      mesh.positions.push_back({r * std::cos(phi), y, r * std::sin(phi)});
+      mesh.points.push_back(static_cast<std::uint32_t>(i));
+    }
+    mesh.colors = {{220, 200, 180, 255}};
+  } else if (kind == "sphere") {
     s.width = s.height = 1024;
     constexpr int n = 548;  // rings and segments: 2 n^2 triangles, the poles' degenerate ones included
     const double pi = std::acos(-1.0);

@@ -37,7 +37,8 @@ namespace bench {
 
 /// 3D benchmark scenes: "sphere" (a UV sphere of 2 x 548 x 548 = 600,608 triangles built in code, smooth-lit
 /// with computed normals, 1024x1024) and "bunny" (the Stanford bunny from $RASTERD_BUNNY, else `bunny_path`,
-/// smooth-lit, 512x512).
+/// smooth-lit, 512x512); for issue 42's points, "triangles_1m" (a UV sphere of 999,698 triangles, smooth-lit)
+/// and "points_1m" (1,000,000 points spread evenly over the same sphere, default size), both 1024x1024.
 /// Camera and lights are the defaults (auto-framed; ambient, key and fill). Throws if the bunny file cannot
 /// be read.
 raster::Scene mesh_scene(const std::string& kind,

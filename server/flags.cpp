@@ -32,6 +32,9 @@ constexpr Flag kFlags[] = {
     {"max-model-faces",
      "faces of one model (OBJ faces; STL, PLY and glTF triangles), 422 above (default 5000000; "
      "--max-obj-faces is its old name)"},
+    {"max-model-points",
+     "points of one model (a point cloud's vertices, OBJ 'p' vertices, glTF POINTS), 422 above (default "
+     "5000000)"},
     {"max-json-depth", "JSON nesting limit, 400 above (default 64)"},
     {"render-deadline-ms", "parse + render + encode deadline, 422 deadline-exceeded past it (default 10000)"},
     {"body-deadline-ms", "time for the whole request body to arrive, 408 past it (default 10000)"},
@@ -141,6 +144,8 @@ std::string apply_flag_values(std::map<std::string, std::string>& values, Servic
       config.limits.max_primitives = number(name, 1, 1ll << 31);
     else if (name == "max-model-faces")
       config.limits.max_model_faces = number(name, 1, 1ll << 31);
+    else if (name == "max-model-points")
+      config.limits.max_model_points = number(name, 1, 1ll << 31);
     else if (name == "max-json-depth")
       config.limits.max_json_depth = static_cast<int>(number(name, 2, 1000));
     else if (name == "render-deadline-ms")

@@ -29,6 +29,7 @@ Scene one_of_everything() {
   m.positions = {{1, 2, 3}};
   m.triangles = {{0, 0, 0}};
   m.segments = {{0, 0}};
+  m.points = {0};
   m.normals = {{0, 0, 1}};
   m.normal_triangles = {{0, 0, 0}};
   m.colors = {{9, 9, 9, 9}};

@@ -12,6 +12,7 @@
 #include "base/parallel.h"
 #include "coverage/coverage.h"
 #include "coverage/line.h"
+#include "coverage/point.h"
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/tiles.h"
 #include "geometry/geometry.h"
@@ -91,11 +92,11 @@ inline void prefetch(const detail::Records& part, const detail::Bins::Part& bins
   constexpr std::uint32_t kAhead = 8;
   if (i + kAhead < end) {
     const std::uint32_t ref = bins.records[i + kAhead].value;
-    if (!(ref & detail::RecordRef::kLineBit)) fetch(&part.triangles[ref]);
+    if (!(ref & detail::RecordRef::kKindBits)) fetch(&part.triangles[ref]);
   }
   if (i + kAhead / 2 < end) {
     const std::uint32_t ref = bins.records[i + kAhead / 2].value;
-    if (ref & detail::RecordRef::kLineBit) return;
+    if (ref & detail::RecordRef::kKindBits) return;
     const detail::TriangleRecord& t = part.triangles[ref];
     fetch(reinterpret_cast<const char*>(&t) + 64);  // the record's second cache line
     fetch(&part.attributes[t.attributes]);
@@ -128,8 +129,14 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
       const std::uint32_t ref = bins.records[i].value;
       if (ref & detail::RecordRef::kLineBit) {
         close();
-        const detail::LineRecord& line = part.lines[ref & ~detail::RecordRef::kLineBit];
+        const detail::LineRecord& line = part.lines[ref & ~detail::RecordRef::kKindBits];
         detail::draw_line(line, f.setup.calls[line.call].mode, surface, rect, meter);
+        continue;
+      }
+      if (ref & detail::RecordRef::kPointBit) {
+        close();
+        const detail::PointRecord& point = part.points[ref & ~detail::RecordRef::kKindBits];
+        detail::draw_point(point, f.setup.calls[point.call].mode, surface, rect, meter);
         continue;
       }
       const detail::TriangleRecord& t = part.triangles[ref];

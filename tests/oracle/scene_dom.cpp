@@ -576,11 +576,11 @@ Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limi
   if (obj)
     check_keys(v, pointer,
                {"type", "data", "source", "mtl", "mtl_source", "textures", "color", "shading", "wireframe",
-                "edges", "cull", "transform"});
+                "edges", "cull", "transform", "point_size"});
   else
     check_keys(v, pointer,
                {"type", "data", "source", "format", "mtl", "mtl_source", "textures", "color", "shading",
-                "wireframe", "edges", "cull", "transform"});
+                "wireframe", "edges", "cull", "transform", "point_size"});
   auto text_of = [&](const char* inline_key, const char* source_key, bool required) -> std::string_view {
     auto data = v.find(inline_key);
     auto source = v.find(source_key);
@@ -651,6 +651,12 @@ Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limi
     mesh.colors = {kMeshGrey};
   }
   read_mesh_options(v, pointer, mesh);
+  if (auto it = v.find("point_size"); it != v.end()) {
+    const double size = read_number(*it, Path(pointer, "point_size"));
+    if (!(size > 0 && size <= 64))
+      invalid(Path(pointer, "point_size"), "\"point_size\" is in (0, 64] pixels; got " + it->dump());
+    mesh.point_size = static_cast<float>(size);
+  }
   return mesh;
 }
 

@@ -68,6 +68,7 @@ inline constexpr std::int64_t kScenePerByte = 4;      ///< per byte of scene JSO
 // plan's.
 inline constexpr std::int64_t kRenderPerTriangle = 192;
 inline constexpr std::int64_t kRenderPerVertex = 48;
+inline constexpr std::int64_t kRenderPerPoint = 56;  ///< a point's record (48 bytes) and its place in order
 inline constexpr std::int64_t kRenderPerPrimitive = 160;
 inline constexpr std::int64_t kRenderPerBinEntry = 4;
 }  // namespace cost

@@ -113,6 +113,8 @@ struct DrawPlan {
   PrimitivePlan mode;           ///< its triangles, or its 2D lines
   PrimitivePlan line_mode;      ///< meshes: its segments and wireframe edges (aliased, depth-tested)
   PrimitivePlan edge_mode;      ///< meshes with "edges": the feature edges (depth-tested, one colour)
+  PrimitivePlan point_mode;     ///< meshes with points: depth-tested, unlit, one colour a point (depth set
+                                ///< exactly when the mesh has points)
 };
 
 /// One light resolved for this view: camera-space lights turned into world space, colour x intensity folded.
@@ -213,6 +215,7 @@ struct RenderPlan {
   std::int64_t culled_count = 0;    ///< primitives skipped before setup
   std::int64_t lit_count = 0;       ///< meshes lit by the light
   std::int64_t triangles_3d = 0;    ///< triangles of all visible meshes (before clipping)
+  std::int64_t points_3d = 0;       ///< points of all visible meshes (before clipping)
   std::int64_t textured_count = 0;  ///< meshes drawn with textures
 
   ViewPlan view;  ///< meaningful only when depth_buffer is true (the scene has 3D content)

@@ -5,6 +5,10 @@
 // image takes the exact wide records instead of being clipped in floating point.
 #pragma once
 
+#include <algorithm>
+#include <utility>
+
+#include "base/parallel.h"
 #include "base/stop.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
@@ -12,13 +16,37 @@
 
 namespace raster::detail {
 
+/// Runs `run(begin, end, part, meter)` over [0, count) (a mesh's triangles or points): small counts into the
+/// current part, as 2D records are (no part per small mesh); else in pieces on every render thread, each
+/// piece into a part of its own, parts in order, so the image is that of one thread. Four pieces a thread
+/// (some pieces clip, some lie off-screen: threads that finish early take more), of at least `least`.
+template <typename Run>
+void in_parts(std::size_t count, std::size_t least, int plan_threads, Setup& setup, StopMeter& meter,
+              Run&& run) {
+  const int threads = count >= 2 * least ? plan_threads : 1;
+  const std::size_t size = threads > 1 ? std::max(least, (count + 4 * threads - 1) / (4 * threads)) : count;
+  const std::size_t pieces = count ? (count + size - 1) / size : 0;
+  if (pieces <= 1) return run(0, count, setup.last_part(), meter);
+  const std::size_t first = setup.parts.size();
+  setup.parts.resize(first + pieces);
+  parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
+    // Filled on the thread's stack and moved in at the end: parts lie side by side in memory, and two threads
+    // growing neighbouring ones would share the cache line of their sizes.
+    Records part;
+    run(piece * size, std::min(count, (piece + 1) * size), part, own);
+    setup.parts[first + piece] = std::move(part);
+  });
+  meter.check();
+  setup.parts.emplace_back();  // what follows goes after all of the pieces
+}
+
 /// Sets up the plan's draws, in scene order. Stops early, with the setup incomplete, once `meter` says
 /// the render must stop (a record costs StopMeter::kPrimitiveWork).
 Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter);
 
-/// The 3D part (geometry3d.cpp): a mesh through the plan's camera into triangle and line records, clipped
-/// in homogeneous space (near, far and a guard band) so that w > 0 everywhere and every snapped coordinate
-/// stays in the fast range.
+/// The 3D part (geometry3d.cpp): a mesh through the plan's camera into triangle, line and point records,
+/// clipped in homogeneous space (near, far and a guard band) so that w > 0 everywhere and every snapped
+/// coordinate stays in the fast range.
 void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup, StopMeter& meter);
 
 }  // namespace raster::detail

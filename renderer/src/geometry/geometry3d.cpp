@@ -384,27 +384,10 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
       if (meter.stopped()) return;
       job.texture_calls.push_back(setup.add_call(call));
     }
-  const std::size_t count = mesh.triangles.size();
-  // Four pieces a thread (some pieces clip, some lie off-screen: threads that finish early take more), of
-  // at least kPiece triangles; the parts do not change the image, only who made it.
-  const int threads = count >= 2 * kPiece ? view.plan.threads : 1;
-  const std::size_t size = threads > 1 ? std::max(kPiece, (count + 4 * threads - 1) / (4 * threads)) : count;
-  const std::size_t pieces = count ? (count + size - 1) / size : 0;
-  if (pieces <= 1) {  // one piece: into the current part, as 2D records are (no part per small mesh)
-    job.run(0, count, setup.last_part(), meter);
-    return;
-  }
-  const std::size_t first = setup.parts.size();
-  setup.parts.resize(first + pieces);
-  parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
-    // Filled on the thread's stack and moved in at the end: parts lie side by side in memory, and two threads
-    // growing neighbouring ones would share the cache line of their sizes.
-    Records part;
-    job.run(piece * size, std::min(count, (piece + 1) * size), part, own);
-    setup.parts[first + piece] = std::move(part);
-  });
-  meter.check();
-  setup.parts.emplace_back();  // what follows the mesh goes after all of its pieces
+  in_parts(mesh.triangles.size(), kPiece, view.plan.threads, setup, meter,
+           [&](std::size_t begin, std::size_t end, Records& part, StopMeter& own) {
+             job.run(begin, end, part, own);
+           });
 }
 
 // A projected segment as the rectangle `width` pixels wide around it (butt caps), two triangles whose depth
@@ -569,6 +552,26 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
   }
 }
 
+// Points (scene.h: Mesh::points): a record each, a disc at the projected vertex. One beyond the near or far
+// plane or the guard band (which a disc of <= 64 px cannot cross into the image) is dropped whole.
+void add_points(const MeshView& view, const PrimitivePlan& point_mode, Setup& setup, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  const std::uint32_t call = setup.add_call(make_call(point_mode));
+  // The radius in whole 1/256 px (coverage is decided in integers).
+  const std::int64_t radius = std::llround(static_cast<double>(mesh.point_size) * (kSubpixelScale / 2.0));
+  in_parts(mesh.points.size(), kPiece, view.plan.threads, setup, meter,
+           [&](std::size_t begin, std::size_t end, Records& part, StopMeter& own) {
+             part.points.reserve_more(end - begin), part.order.reserve_more(end - begin);
+             for (std::size_t k = begin; k < end; ++k) {
+               if (own.add(StopMeter::kRowWork)) return;  // deadline: a cloud can be millions of points
+               const std::uint32_t i = mesh.points[k];
+               if (view.outside[i]) continue;
+               const ScreenVertex& v = view.screen[i];
+               setup.add_point(part, {v.x, v.y, radius, v.depth, view.vertex_color(i), call, {}});
+             }
+           });
+}
+
 }  // namespace
 
 void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup,
@@ -578,6 +581,7 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
   if (!mesh.wireframe && !mesh.triangles.empty()) add_triangles(view, draw.mode, setup, meter);
   add_lines(view, draw.line_mode, setup, meter);
   if (draw.edge_mode.depth) add_edges(view, draw.edge_mode, setup, meter);
+  if (draw.point_mode.depth) add_points(view, draw.point_mode, setup, meter);
 }
 
 }  // namespace raster::detail

@@ -114,10 +114,8 @@ class MeshBuilder {
       if (node.mesh >= 0) add_mesh(node.mesh, world);
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back({*c, world});
     }
-    if (mesh_.triangles.empty() && mesh_.segments.empty())
-      gltf_error(
-          "the default scene has no triangles or lines to draw (rasterd draws faces and lines, not "
-          "points)");
+    if (mesh_.triangles.empty() && mesh_.segments.empty() && mesh_.points.empty())
+      gltf_error("the default scene has no triangles, lines or points to draw");
     if (!textured_) {
       mesh_.textures.clear(), mesh_.uvs.clear(), mesh_.face_textures.clear();
     } else {
@@ -158,9 +156,9 @@ class MeshBuilder {
       for (const tinygltf::Primitive& p : model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
         ++primitives;
         const auto pos = p.attributes.find("POSITION");
-        if (p.mode == TINYGLTF_MODE_POINTS || pos == p.attributes.end()) continue;
+        if (pos == p.attributes.end()) continue;
         const std::uint64_t v = count_of(pos->second), n = p.indices >= 0 ? count_of(p.indices) : v;
-        vertices += v;
+        vertices += v;     // POINTS build their vertices and nothing else
         switch (p.mode) {  // as add_faces makes them
           case TINYGLTF_MODE_TRIANGLES:
             faces += n / 3;
@@ -186,7 +184,7 @@ class MeshBuilder {
     } else {
       std::vector<bool> seen(model_.nodes.size(), false);
       std::vector<int> stack(roots.rbegin(), roots.rend());
-      // Stops past kMaxDrawnPrimitives, which the walk that builds refuses with its own error.
+      // Stops past kMaxDrawnPrimitives, which is refused below.
       while (!stack.empty() && primitives <= kMaxDrawnPrimitives) {
         const int index = stack.back();
         stack.pop_back();
@@ -199,6 +197,12 @@ class MeshBuilder {
         stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
       }
     }
+    // Every primitive is drawn (POINTS too): a document of many nodes naming a mesh of many primitives is
+    // refused before the first is read.
+    if (primitives > kMaxDrawnPrimitives)
+      throw SceneError(ErrorKind::limit,
+                       "glTF: the default scene draws more than " + std::to_string(kMaxDrawnPrimitives) +
+                           " mesh primitives (each node draws every primitive of its mesh)");
     const std::uint64_t allowed = std::max(kModelBuiltFloor, kModelBuiltPerByte * sent_);
     auto refuse = [&](std::uint64_t n, const char* what) {
       throw SceneError(ErrorKind::limit,
@@ -233,7 +237,6 @@ class MeshBuilder {
                            " mesh primitives (each node draws every primitive of its mesh)");
     for (std::size_t pi = 0; pi < primitives.size(); ++pi) {
       const tinygltf::Primitive& p = primitives[pi];
-      if (p.mode == TINYGLTF_MODE_POINTS) continue;  // rasterd draws faces and lines
       const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(pi);
       // A primitive costs a few microseconds even when empty: kPrimitiveWork units, and its elements below.
       meter_.add(kPrimitiveWork);
@@ -546,6 +549,12 @@ class MeshBuilder {
       case TINYGLTF_MODE_TRIANGLE_FAN:
         make_room_for_triangles(n < 2 ? 0 : n - 2);
         for (std::size_t i = 1; i + 1 < n; ++i) add_triangle(v[0], v[i], v[i + 1], mirrored);
+        break;
+      case TINYGLTF_MODE_POINTS:  // each vertex a round point (Mesh::points), unlit
+        if (mesh_.points.size() + n > static_cast<std::size_t>(limits_.max_model_points))
+          throw SceneError(ErrorKind::limit,
+                           "the model has more than " + std::to_string(limits_.max_model_points) + " points");
+        mesh_.points.insert(mesh_.points.end(), v.begin(), v.end());
         break;
       case TINYGLTF_MODE_LINE:
         for (std::size_t i = 0; i + 1 < n; i += 2) mesh_.segments.push_back({v[i], v[i + 1]});

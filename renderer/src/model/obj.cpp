@@ -53,8 +53,16 @@ bool obj_number(std::string_view word, double& d) {
   return ec == std::errc() && p == word.data() + word.size() && std::isfinite(d);
 }
 
+// Refuses a model once `count` passes `limit` (faces or points), naming the line that passed it.
+void check_limit(std::int64_t count, std::int64_t limit, const char* what, std::size_t line_no) {
+  if (count > limit)
+    throw SceneError(ErrorKind::limit, "the model has more than " + std::to_string(limit) + " " + what,
+                     ErrorLocation{"", 0, line_no});
+}
+
 struct Counts {
-  std::int64_t v = 0, vt = 0, vn = 0, faces = 0, segments = 0, points = 0;
+  std::int64_t v = 0, vt = 0, vn = 0, faces = 0, segments = 0, points = 0;  ///< points: 'p' lines
+  std::int64_t point_refs = 0;  ///< vertices named on 'p' lines (each is a point)
   std::int64_t corners = 0;  ///< face corners (references on 'f' lines), what tinyobjloader stores per face
   /// (0-based face number, corners) of each face of 256 corners or more, in file order: tinyobjloader
   /// stores a face's corner count in a byte.
@@ -128,14 +136,13 @@ Counts prescan(std::string_view text, const Limits& limits) {
       if (key == "f") {
         n.corners += static_cast<std::int64_t>(w.size()) - 1;
         if (w.size() - 1 >= 256) n.long_faces.push_back({n.faces, static_cast<std::uint32_t>(w.size() - 1)});
-        if (++n.faces > limits.max_model_faces)
-          throw SceneError(ErrorKind::limit,
-                           "the model has more than " + std::to_string(limits.max_model_faces) + " faces",
-                           ErrorLocation{"", 0, line_no});
+        check_limit(++n.faces, limits.max_model_faces, "faces", line_no);
       } else if (key == "l") {
         n.segments += static_cast<std::int64_t>(w.size()) - 2;
       } else {
         ++n.points;
+        n.point_refs += static_cast<std::int64_t>(w.size()) - 1;
+        check_limit(n.point_refs, limits.max_model_points, "points", line_no);
       }
     }
   }
@@ -331,6 +338,13 @@ void add_lines(const std::vector<tinyobj::shape_t>& shapes, Mesh& mesh) {
   }
 }
 
+// Every 'p' line's vertices, shape after shape: each is a point.
+void add_points(const std::vector<tinyobj::shape_t>& shapes, Mesh& mesh) {
+  for (const tinyobj::shape_t& shape : shapes)
+    for (const tinyobj::index_t& i : shape.points.indices)
+      mesh.points.push_back(static_cast<std::uint32_t>(i.vertex_index));
+}
+
 // Defence in depth: the prescan validated every index; a disagreement with the parser is a model error.
 void check_references(const Mesh& mesh) {
   for (const auto& t : mesh.triangles)
@@ -339,6 +353,8 @@ void check_references(const Mesh& mesh) {
   for (const auto& s : mesh.segments)
     for (std::uint32_t i : s)
       if (i >= mesh.positions.size()) model_error(0, "a line refers to a vertex the model does not define");
+  for (std::uint32_t i : mesh.points)
+    if (i >= mesh.positions.size()) model_error(0, "a point refers to a vertex the model does not define");
   for (const auto& t : mesh.normal_triangles)
     for (std::uint32_t i : t)
       if (i >= mesh.normals.size()) model_error(0, "a face refers to a normal the model does not define");
@@ -362,9 +378,9 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   require_utf8(mtl_text, "the materials (MTL)", true);
   const Counts counts = prescan(obj_text, limits);
   if (counts.v == 0) model_error(0, "the model is empty: it defines no vertices");
-  if (counts.faces == 0 && counts.segments == 0)
-    model_error(0, counts.points ? "the model has only points ('p'); rasterd draws faces and lines"
-                                 : "the model has no faces ('f') or lines ('l') to draw");
+  // Only vertices ('v' lines, as a scan exported to OBJ has them): a point cloud, every vertex a point.
+  const bool cloud = counts.faces == 0 && counts.segments == 0 && counts.points == 0;
+  if (cloud) check_limit(counts.v, limits.max_model_points, "points", 0);
 
   std::string libraries;
   if (mtl_text.empty() && !counts.mtllibs.empty()) {
@@ -375,7 +391,7 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   const MtlPass mtl = read_mtl(mtl_text);
   // The prescan has counted what tinyobjloader and the mesh will hold: asked for before either is built.
   detail::reserve(limits,
-                  cost::kObjPerCorner * (counts.corners + 2 * counts.segments + counts.points) +
+                  cost::kObjPerCorner * (counts.corners + 2 * counts.segments + counts.point_refs) +
                       cost::kObjPerVertex * (counts.v + counts.vt + counts.vn),
                   [&] {
                     return "the model's " + std::to_string(counts.faces) + " faces and " +
@@ -398,6 +414,11 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   const FaceTotals totals = add_faces(model, counts, textures, no_uv, mesh, face_colors, meter);
   meter.check();
   add_lines(model.shapes, mesh);
+  add_points(model.shapes, mesh);
+  if (cloud) {
+    mesh.points.resize(mesh.positions.size());
+    for (std::uint32_t i = 0; i < mesh.points.size(); ++i) mesh.points[i] = i;
+  }
   // Normals are used only when every face has them; otherwise they are computed.
   if (!totals.all_normals || mesh.normal_triangles.size() != mesh.triangles.size()) {
     mesh.normals.clear();
@@ -406,8 +427,8 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const Limit
   if (totals.any_material) mesh.face_colors = std::move(face_colors);
   meter.check();
   check_references(mesh);
-  if (mesh.triangles.empty() && mesh.segments.empty())
-    model_error(0, "the model has no faces or lines to draw");
+  if (mesh.triangles.empty() && mesh.segments.empty() && mesh.points.empty())
+    model_error(0, "the model has no faces, lines or points to draw");
   return mesh;
 }
 

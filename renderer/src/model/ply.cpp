@@ -308,8 +308,15 @@ Layout check_elements(const Header& h, std::size_t data_bytes, const Limits& lim
   for (const Property& p : l.vertex->properties) has[static_cast<int>(p.role)] = true;
   if (!has[int(Role::x)] || !has[int(Role::y)] || !has[int(Role::z)])
     ply_error("the vertex element has no x, y and z properties", l.vertex->line);
-  if (!l.face || l.face->count == 0)
-    ply_error("the model has no faces (no \"element face\"); rasterd draws faces");
+  if (!l.face || l.face->count == 0) {
+    // A point cloud (what scanners and photogrammetry write): every vertex is drawn as a point.
+    l.face = nullptr;
+    if (l.vertex->count > static_cast<std::uint64_t>(limits.max_model_points))
+      throw SceneError(ErrorKind::limit,
+                       "the model has more than " + std::to_string(limits.max_model_points) + " points");
+    l.colours = has[int(Role::red)] && has[int(Role::green)] && has[int(Role::blue)];
+    return l;
+  }
   if (l.face->count > static_cast<std::uint64_t>(limits.max_model_faces))
     throw SceneError(ErrorKind::limit,
                      "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
@@ -505,11 +512,12 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
   const Layout l = check_elements(h, bytes.size() - h.data, limits);
   // The header counts what the mesh will hold (faces of more than three corners become more triangles,
   // each of which the limit counts, so at most max_model_faces of them).
+  const std::uint64_t face_count = l.face ? l.face->count : 0;
   detail::reserve(limits,
-                  cost::kPlyPerFace * static_cast<std::int64_t>(l.face->count) +
+                  cost::kPlyPerFace * static_cast<std::int64_t>(face_count) +
                       cost::kPlyPerVertex * static_cast<std::int64_t>(l.vertex->count),
                   [&] {
-                    return "the model's " + std::to_string(l.face->count) + " faces and " +
+                    return "the model's " + std::to_string(face_count) + " faces and " +
                            std::to_string(l.vertex->count) + " vertices";
                   });
 
@@ -535,6 +543,12 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       read_values(e, l, in, mesh, faces);
   }
   faces.add_early();
+  if (!l.face) {  // a point cloud: its vertices are its points; they carry no normal (points are unlit)
+    mesh.normals.clear();
+    mesh.points.resize(mesh.positions.size());
+    for (std::uint32_t i = 0; i < mesh.points.size(); ++i) mesh.points[i] = i;
+    return mesh;
+  }
   if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");
   // A face's corners are vertices, so normals are indexed as positions are.
   if (l.normals) mesh.normal_triangles = mesh.triangles;

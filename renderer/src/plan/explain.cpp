@@ -38,10 +38,10 @@ std::string explain_json(const RenderPlan& p) {
   j["antialias"] = p.coverage == Coverage::area      ? "area"
                    : p.coverage == Coverage::samples ? "multisample"
                                                      : "none";
-  j["primitives"] = {{"flat", p.flat_count},        {"smooth", p.smooth_count},
-                     {"blend", p.blend_count},      {"culled", p.culled_count},
-                     {"lit", p.lit_count},          {"triangles_3d", p.triangles_3d},
-                     {"textured", p.textured_count}};
+  j["primitives"] = {{"flat", p.flat_count},     {"smooth", p.smooth_count},
+                     {"blend", p.blend_count},   {"culled", p.culled_count},
+                     {"lit", p.lit_count},       {"triangles_3d", p.triangles_3d},
+                     {"points_3d", p.points_3d}, {"textured", p.textured_count}};
   if (p.depth_buffer) {
     const ViewPlan& v = p.view;
     j["camera"] = {{"projection", v.projection == Projection::perspective ? "perspective" : "orthographic"},

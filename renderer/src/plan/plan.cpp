@@ -123,7 +123,7 @@ void plan_textures(const Mesh& mesh, PrimitivePlan& pp, RenderPlan& out, Tally& 
 // A mesh's draw: its triangles' mode (lighting, colours, textures), its lines' and its feature edges'.
 // False when it has nothing to draw (then it is culled).
 bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, RenderPlan& out, Tally& tally) {
-  if (mesh.triangles.empty() && mesh.segments.empty()) return false;
+  if (mesh.triangles.empty() && mesh.segments.empty() && mesh.points.empty()) return false;
   PrimitivePlan& pp = draw.mode;
   const bool draws_triangles = !mesh.triangles.empty() && !mesh.wireframe;
   tally.any_3d = true;
@@ -167,8 +167,19 @@ bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, Rende
     draw.edge_mode.varyings.add(Varying::depth, Interpolation::affine);
     tally.grey &= mesh.edges.color.is_grey();
   }
+  if (!mesh.points.empty()) {
+    // Points are unlit (they carry no normal) and take their vertex's colour, one a point: a flat colour per
+    // record, depth-tested like the faces.
+    draw.point_mode.depth = true;
+    for (const Rgba8& c : mesh.colors) {
+      draw.point_mode.blend |= !c.is_opaque();
+      tally.grey &= c.is_grey();
+    }
+    draw.point_mode.varyings.add(Varying::depth, Interpolation::affine);
+    out.points_3d += static_cast<std::int64_t>(mesh.points.size());
+  }
   (pp.smooth ? out.smooth_count : out.flat_count) += 1;
-  out.blend_count += pp.blend ? 1 : 0;
+  out.blend_count += pp.blend || draw.point_mode.blend ? 1 : 0;
   out.lit_count += pp.lit ? 1 : 0;
   out.triangles_3d += draws_triangles ? static_cast<std::int64_t>(mesh.triangles.size()) : 0;
   tally.vertices_3d += static_cast<std::int64_t>(mesh.positions.size() + mesh.segments.size() * 2);
@@ -305,7 +316,7 @@ void check_memory(const Limits& limits, const RenderPlan& out, std::int64_t vert
                                            std::to_string(limits.max_buffer_bytes));
   detail::reserve(limits,
                   out.memory.total() + out.memory.color_bytes + cost::kRenderPerTriangle * out.triangles_3d +
-                      cost::kRenderPerVertex * vertices_3d +
+                      cost::kRenderPerPoint * out.points_3d + cost::kRenderPerVertex * vertices_3d +
                       cost::kRenderPerPrimitive * static_cast<std::int64_t>(out.draws.size()),
                   [&] {
                     return "rendering " + std::to_string(out.draws.size()) + " primitives (" +

@@ -37,6 +37,7 @@ inline constexpr std::string_view kAntialiasRule =
 inline constexpr Range kLineWidth{0, 4096, true, false,
                                   "line \"width\" is in pixels, more than 0 and at most 4096"};
 inline constexpr Range kEdgeWidth{0, 64, true, false, "edge width is in (0, 64] pixels"};
+inline constexpr Range kPointSize{0, 64, true, false, "\"point_size\" is in (0, 64] pixels"};
 inline constexpr Range kCreaseAngle{0, 180, false, false, "the crease angle is in 0..180 degrees"};
 inline constexpr Range kFov{0, 180, true, true,
                             "\"fov\" is the vertical field of view in degrees, strictly between 0 and 180"};

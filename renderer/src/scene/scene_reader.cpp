@@ -69,6 +69,10 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
      [](Reader& r, PrimitiveState& s, const Path& at) { s.mesh.edges = r.edges(at); }},
     {"transform", format::kObject, "a transform object",
      [](Reader& r, PrimitiveState& s, const Path& at) { s.mesh.transform = r.transform(at); }},
+    {"point_size", format::kNumber, "a number",
+     [](Reader& r, PrimitiveState& s, const Path& at) {
+       s.mesh.point_size = static_cast<float>(r.ranged(at, format::kPointSize));
+     }},
     {"data", format::kString, "text",
      [](Reader& r, PrimitiveState& s, const Path&) { s.obj = r.in.string(); }},
     {"source", format::kString, "the name of an uploaded part",
@@ -117,11 +121,12 @@ constexpr PrimitiveType kTypes[] = {
     // A model file in any format (model.h), its format told by its bytes, else by "format"; "obj" is the
     // same with OBJ as the format to fall back on (rasterd 0.1's name, kept).
     {"model", PrimitiveKind::mesh, 0, 0,
-     format::mask_of(kPrimitiveFields, {"type", "data", "source", "format", "mtl", "mtl_source", "textures",
-                                        "color", "shading", "wireframe", "edges", "cull", "transform"})},
+     format::mask_of(kPrimitiveFields,
+                     {"type", "data", "source", "format", "mtl", "mtl_source", "textures", "color", "shading",
+                      "wireframe", "edges", "cull", "transform", "point_size"})},
     {"obj", PrimitiveKind::mesh, 0, 0,
      format::mask_of(kPrimitiveFields, {"type", "data", "source", "mtl", "mtl_source", "textures", "color",
-                                        "shading", "wireframe", "edges", "cull", "transform"})},
+                                        "shading", "wireframe", "edges", "cull", "transform", "point_size"})},
 };
 constexpr const char* kTypeNames = "\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\"";
 
@@ -265,6 +270,7 @@ void Reader::finish_model(PrimitiveState& s, const Path& at) {
   if (s.seen & bit("wireframe")) mesh.wireframe = s.mesh.wireframe;
   if (s.seen & bit("edges")) mesh.edges = s.mesh.edges;
   if (s.seen & bit("transform")) mesh.transform = s.mesh.transform;
+  if (s.seen & bit("point_size")) mesh.point_size = s.mesh.point_size;
   s.mesh = std::move(mesh);
 }
 

@@ -37,12 +37,16 @@ void check_references(const Scene& scene) {
       throw SceneError(ErrorKind::invalid,
                        std::string(format::kEdgeWidth.rule) + "; " + format::kCreaseAngle.rule,
                        {where + "/edges", 0, 0});
+    if (!format::kPointSize.contains(m.point_size))
+      throw SceneError(ErrorKind::invalid, std::string(format::kPointSize.rule),
+                       {where + "/point_size", 0, 0});
     const std::size_t n = m.positions.size();
     bool ok = (m.colors.size() == 1 || m.colors.size() == n) &&
               (m.face_colors.empty() || m.face_colors.size() == m.triangles.size()) &&
               (m.normal_triangles.empty() || m.normal_triangles.size() == m.triangles.size());
     for (const auto& t : m.triangles) ok = ok && t[0] < n && t[1] < n && t[2] < n;
     for (const auto& s : m.segments) ok = ok && s[0] < n && s[1] < n;
+    for (const std::uint32_t q : m.points) ok = ok && q < n;
     for (const auto& t : m.normal_triangles)
       ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
     ok = ok && (m.uv_triangles.empty() || m.uv_triangles.size() == m.triangles.size()) &&

@@ -125,6 +125,27 @@ void Setup::add_line(LineRecord line) {
   part.lines.push_back(line);
 }
 
+void Setup::add_point(Records& part, PointRecord point) const {
+  // The pixels whose square (or, with centre coverage, whose centre) holds a point of the disc's square, in
+  // integers as fast_record's box is.
+  const std::int64_t lo[2] = {point.x - point.radius, point.y - point.radius};
+  const std::int64_t hi[2] = {point.x + point.radius, point.y + point.radius};
+  const std::int64_t size[2] = {width, height};
+  int first[2], end[2];
+  for (int d = 0; d < 2; ++d) {
+    const std::int64_t f =
+        centre_samples ? (lo[d] + kSubpixelScale / 2 - 1) >> kSubpixelBits : lo[d] >> kSubpixelBits;
+    const std::int64_t l =
+        centre_samples ? (hi[d] - kSubpixelScale / 2) >> kSubpixelBits : hi[d] >> kSubpixelBits;
+    first[d] = static_cast<int>(std::clamp<std::int64_t>(f, 0, size[d]));
+    end[d] = static_cast<int>(std::clamp<std::int64_t>(l + 1, 0, size[d]));
+  }
+  point.box = {first[0], first[1], end[0], end[1]};
+  if (point.box.empty()) return;
+  part.order.push_back({RecordRef::kPointBit | static_cast<std::uint32_t>(part.points.size())});
+  part.points.push_back(point);
+}
+
 Rect Bins::tile_rect(int index, int width, int height) const {
   const int tx = index % columns, ty = index / columns;
   return {tx * tile, ty * tile, std::min(width, (tx + 1) * tile), std::min(height, (ty + 1) * tile)};
@@ -151,12 +172,14 @@ Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, S
   std::vector<std::uint32_t> count(tiles + 1, 0);
   // Calls visit(tile index) for every tile record `ref` may touch.
   auto for_each_tile = [&](RecordRef ref, auto&& visit) {
-    const bool line = ref.value & RecordRef::kLineBit;
-    const std::uint32_t index = ref.value & ~RecordRef::kLineBit;
-    const Rect box = line ? part.lines[index].box : part.triangles[index].box;
+    const std::uint32_t kind = ref.value & RecordRef::kKindBits;
+    const std::uint32_t index = ref.value & ~RecordRef::kKindBits;
+    const Rect box = kind == RecordRef::kLineBit    ? part.lines[index].box
+                     : kind == RecordRef::kPointBit ? part.points[index].box
+                                                    : part.triangles[index].box;
     const int tx0 = box.x0 / tile, tx1 = (box.x1 - 1) / tile, ty0 = box.y0 / tile, ty1 = (box.y1 - 1) / tile;
     if (tx0 == tx1 && ty0 == ty1) return visit(ty0 * grid.columns + tx0);  // one tile: no test
-    const TriangleRecord* t = line ? nullptr : &part.triangles[index];
+    const TriangleRecord* t = kind ? nullptr : &part.triangles[index];
     const bool test = t && t->wide == TriangleRecord::kFast;
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) {

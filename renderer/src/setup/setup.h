@@ -94,10 +94,27 @@ struct LineRecord {
   Rect box;                      ///< pixels it may touch, clipped to the image
 };
 
+/// A round point of a model (Mesh::points): a disc at the projected vertex, at one depth. A sample is covered
+/// when its distance from the centre is at most the radius, decided exactly on the 1/256 px grid: the same
+/// pixels in every tile and at every thread count.
+struct PointRecord {
+  std::int32_t x = 0, y = 0;  ///< the centre, 1/256 px, origin top-left, y down (inside the guard band)
+  std::int64_t radius = 0;    ///< 1/256 px, >= 0 (at most 64 px / 2)
+  float depth = 0;            ///< z / w, reversed (larger is nearer), the same over the whole disc
+  Rgba8 color;                ///< straight RGBA: the vertex colour, unlit
+  std::uint32_t call = 0;     ///< index into Setup::calls (depth test and blending)
+  Rect box;                   ///< pixels it may touch, clipped to the image
+};
+
 /// A record in scene order: which kind and its index in that kind's array.
 struct RecordRef {
   static constexpr std::uint32_t kLineBit = 1u << 31;
-  std::uint32_t value = 0;  ///< index into its part's triangles, or kLineBit | index into its part's lines
+  static constexpr std::uint32_t kPointBit = 1u << 30;
+  static constexpr std::uint32_t kKindBits = kLineBit | kPointBit;
+  /// Index into its part's triangles, or kLineBit | index into its part's lines, or kPointBit | index into
+  /// its part's points (a part holds fewer than 2^30 records of a kind: a model's faces and points are
+  /// limited far below that).
+  std::uint32_t value = 0;
 };
 
 /// A run of records in scene order, with the storage they index. A setup is a sequence of parts so that the
@@ -108,6 +125,7 @@ struct Records {
   std::vector<EdgeFunctions<Wide>> wide_edges;  ///< TriangleRecord::wide indexes these
   PodArray<float> attributes;                   ///< TriangleRecord::attributes indexes these
   std::vector<LineRecord> lines;
+  PodArray<PointRecord> points;
   PodArray<RecordRef> order;  ///< every record of the part once, in the order the scene draws them
 
   /// Room for one more triangle record, made in place; drop_triangle() takes it back if it is not kept.
@@ -155,6 +173,10 @@ struct Setup {
   void finish(Records& part, std::uint32_t call, const SetupVertex* const (&v)[3], bool back_facing) const;
   /// Adds a 1-px line record (its box is computed here).
   void add_line(LineRecord line);
+  /// Adds a point record to `part` (its box is computed here from its centre and radius; a point that can
+  /// cover no sample of the image is not added). Reads only the setup's image and coverage: threads may fill
+  /// different parts at once.
+  void add_point(Records& part, PointRecord point) const;
   /// Records of every part.
   std::size_t record_count() const;
 };
