@@ -158,25 +158,14 @@ class MeshBuilder {
         const auto pos = p.attributes.find("POSITION");
         if (pos == p.attributes.end()) continue;
         const std::uint64_t v = count_of(pos->second), n = p.indices >= 0 ? count_of(p.indices) : v;
-        vertices += v;     // POINTS build their vertices and nothing else
-        switch (p.mode) {  // as add_faces makes them
-          case TINYGLTF_MODE_TRIANGLES:
-            faces += n / 3;
-            break;
-          case TINYGLTF_MODE_TRIANGLE_STRIP:
-          case TINYGLTF_MODE_TRIANGLE_FAN:
-            faces += n < 2 ? 0 : n - 2;
-            break;
-          case TINYGLTF_MODE_LINE:
-            faces += n / 2;
-            break;
-          case TINYGLTF_MODE_LINE_STRIP:
-          case TINYGLTF_MODE_LINE_LOOP:
-            faces += n < 2 ? 0 : n - 1 + (p.mode == TINYGLTF_MODE_LINE_LOOP && n > 2);
-            break;
-          default:
-            break;
-        }
+        vertices += v;  // POINTS build their vertices and nothing else
+        // Faces and segments as add_faces makes them.
+        if (p.mode == TINYGLTF_MODE_TRIANGLES) faces += n / 3;
+        if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP || p.mode == TINYGLTF_MODE_TRIANGLE_FAN)
+          faces += n < 2 ? 0 : n - 2;
+        if (p.mode == TINYGLTF_MODE_LINE) faces += n / 2;
+        if (p.mode == TINYGLTF_MODE_LINE_STRIP || p.mode == TINYGLTF_MODE_LINE_LOOP)
+          faces += n < 2 ? 0 : n - 1 + (p.mode == TINYGLTF_MODE_LINE_LOOP && n > 2);
       }
     };
     if (every_mesh) {
