@@ -103,6 +103,7 @@ inline constexpr std::uint64_t kModelBuiltFloor = std::uint64_t{1} << 20;
 /// looked up there the same way (a missing one is SceneError(model) naming it and the names there are);
 /// `limits.max_texture_pixels` bounds them all together. Faces of more than three corners are split as
 /// parse_ply splits them: quads on their shorter diagonal, larger polygons by ear clipping in their plane.
+/// A material's Kd colours its faces; its Ks above 0 (with Ns) makes a Blinn-Phong Mesh::materials entry.
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const Limits& limits = {},
                const Uploads& files = {});
 
@@ -138,11 +139,13 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits = {});
 /// type; POSITION, NORMAL (a primitive without normals is flat, as glTF says: face normals beside others'
 /// given ones, Shading::flat when none has any), COLOR_0, TEXCOORD_n; a material's baseColorFactor and
 /// baseColorTexture with its alphaMode (OPAQUE: texel alpha 255; MASK: 255 or 0 at alphaCutoff, and
-/// the renderer draws a texel of alpha 0 as a hole: neither colour nor depth; BLEND: kept), and
-/// KHR_materials_unlit (the mesh is unlit when all its materials are). Every accessor is checked to lie
-/// within its buffer view and buffer before it is read; what tinygltf would build from the document is
-/// bounded before it runs, and so are the primitives drawn (nodes x their meshes' primitives) and the
-/// vertices and faces they build (kModelBuiltPerByte). Nothing is read from disk or the network.
+/// the renderer draws a texel of alpha 0 as a hole: neither colour nor depth; BLEND: kept),
+/// metallicFactor, roughnessFactor and metallicRoughnessTexture (Mesh::materials, metallic_roughness; a
+/// material that gives none of the three stays Lambert), and KHR_materials_unlit (the mesh is unlit when
+/// all its materials are). Every accessor is checked to lie within its buffer view and buffer before it is
+/// read; what tinygltf would build from the document is bounded before it runs, and so are the primitives
+/// drawn (nodes x their meshes' primitives) and the vertices and faces they build (kModelBuiltPerByte).
+/// Nothing is read from disk or the network.
 Mesh parse_gltf(std::string_view bytes, const Limits& limits = {}, const Uploads& files = {});
 
 /// The files a glTF document (or a GLB's JSON chunk) names: the URIs of its buffers and images that are not

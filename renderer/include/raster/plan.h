@@ -22,7 +22,7 @@ enum class Varying : std::uint8_t {
   color,     ///< straight RGBA, 0..255 (3D flat lighting already applied)
   normal,    ///< world-space unit normal (per-pixel lighting)
   uv,        ///< texture coordinates (scene.h: Mesh::uvs)
-  position,  ///< world position (per-pixel lighting by a point light)
+  position,  ///< world position (per-pixel lighting by a point light; the view direction of specular faces)
   depth,     ///< z / w in [0, 1], 1 at the near plane (reversed); written by the viewport, not clipped
   inv_w,     ///< 1 / w, for perspective-correct interpolation; written by the viewport, not clipped
 };
@@ -94,6 +94,12 @@ struct PrimitivePlan {
   /// is drawn later behind a cut-out shows through it. Found once per texture by the plan; meshes without
   /// such texels keep the path that writes depth first.
   bool cut_outs = false;
+  /// 3D: some face has a specular material (scene.h: Material::is_specular): lit per pixel, with the world
+  /// position row for the view direction, and a draw call per material. False: Lambert alone, as before.
+  bool specular = false;
+  /// Specular faces of a flat-shaded mesh: the normal row holds each face's own normal at its three
+  /// corners (faceted, while the highlight still moves across the face with the view direction).
+  bool face_normals = false;
   bool line_rectangles =
       false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
   /// Area coverage: the primitive's triangles (a line's two, a polyline's segments) add up their coverage

@@ -72,6 +72,34 @@ struct Edges {
   friend bool operator==(const Edges&, const Edges&) = default;
 };
 
+/// How a surface reflects light beyond Lambert's diffuse term, as its file format defines it. A mesh
+/// without materials (or a face of material -1) is lit by Lambert alone, exactly as before materials were
+/// read. Shaded in the convention of Light: on the sRGB-encoded colour, lights scaled so that a white
+/// Lambert surface facing a light of intensity 1 is white (the BRDF times pi).
+struct Material {
+  enum class Model : std::uint8_t {
+    lambert,             ///< diffuse only (the other fields are not read)
+    metallic_roughness,  ///< glTF 2.0: the BRDF of the spec's appendix B (GGX, Smith, Schlick), plus ambient
+                         ///< x (diffuse colour + F0), which keeps metals readable without an environment
+    blinn_phong,         ///< OBJ/MTL: Lambert plus Ks x max(0, n . h)^Ns for each light facing the surface
+  };
+  Model model = Model::lambert;
+  float metallic = 1;   ///< metallic_roughness: 0 dielectric (F0 0.04) .. 1 metal (F0 = the base colour)
+  float roughness = 1;  ///< metallic_roughness: perceptual, 0 smooth .. 1 rough; alpha = roughness^2,
+                        ///< roughness clamped to >= 0.05 when shaded (a mirror's highlight has no area)
+  /// metallic_roughness: index into Mesh::textures whose B (metallic) and G (roughness) channels, linear,
+  /// multiply the factors, read at the face's texture coordinates; -1: none.
+  std::int32_t metallic_roughness_texture = -1;
+  std::array<float, 3> specular{0, 0, 0};  ///< blinn_phong: Ks, per channel 0..1
+  float shininess = 1;                     ///< blinn_phong: Ns, 0..1000, rounded to an integer when shaded
+  /// Whether the material adds anything to Lambert (a Ks of zero does not): what makes a draw specular.
+  bool is_specular() const {
+    return model == Model::metallic_roughness ||
+           (model == Model::blinn_phong && (specular[0] > 0 || specular[1] > 0 || specular[2] > 0));
+  }
+  friend bool operator==(const Material&, const Material&) = default;
+};
+
 /// The diameter, in pixels, of a model's points when nothing says otherwise. 2.5: the smallest size (in
 /// steps of 0.5 px) at which a 100,000-point scan at 512x512 reads as a surface, with fewer than 1% of its
 /// silhouette's pixels left as holes (bench/micro.cpp's point_size rows measure it).
@@ -97,6 +125,11 @@ struct Mesh {
   std::vector<Texture> textures;  ///< multiply the faces' colour (MTL: Kd x map_Kd); empty: untextured
   /// Per triangle, an index into textures or -1 for none; empty: every triangle takes textures[0].
   std::vector<std::int32_t> face_textures;
+  std::vector<Material>
+      materials;  ///< specular materials (glTF metallic-roughness, MTL Ks/Ns); empty: Lambert
+  /// Per triangle, an index into materials or -1 for Lambert; empty: every triangle takes materials[0] (when
+  /// there is one).
+  std::vector<std::int32_t> face_materials;
   Shading shading = Shading::smooth;
   Cull cull = Cull::none;
   bool wireframe = false;  ///< draw the triangles' edges (each once) instead of filling them
@@ -137,7 +170,7 @@ enum class LightKind : std::uint8_t { ambient, directional, point };
 /// the unit normal of the side seen. Sums above 1 saturate. Lighting multiplies the sRGB-encoded colour, as
 /// the 8-bit output stores it (the convention of rasterd 0.1's single light, kept so its pictures stay).
 /// Point lights do not fall off with distance (as a viewer's lamps do not), so a model's scale never darkens
-/// it.
+/// it. A mesh's specular materials (Material) are lit by the same lights with their own BRDF.
 struct Light {
   LightKind kind = LightKind::directional;
   bool camera_space = false;  ///< direction / position in view space (x right, y up, z toward the viewer),

@@ -34,10 +34,13 @@ constexpr auto fields(T& s) {
     return std::tie(s.width, s.height, s.rgba, s.clamp, s.scale, s.offset, s.name);
   else if constexpr (std::is_same_v<U, Edges>)
     return std::tie(s.enabled, s.color, s.width, s.crease_deg);
+  else if constexpr (std::is_same_v<U, Material>)
+    return std::tie(s.model, s.metallic, s.roughness, s.metallic_roughness_texture, s.specular, s.shininess);
   else if constexpr (std::is_same_v<U, Mesh>)
     return std::tie(s.positions, s.triangles, s.segments, s.points, s.point_size, s.normals,
                     s.normal_triangles, s.colors, s.face_colors, s.uvs, s.uv_triangles, s.textures,
-                    s.face_textures, s.shading, s.cull, s.wireframe, s.edges, s.transform);
+                    s.face_textures, s.materials, s.face_materials, s.shading, s.cull, s.wireframe, s.edges,
+                    s.transform);
   else if constexpr (std::is_same_v<U, Camera>)
     return std::tie(s.projection, s.view, s.has_eye, s.has_target, s.has_near, s.has_far, s.has_height,
                     s.has_view, s.has_up, s.eye, s.target, s.up, s.fov_deg, s.near, s.far, s.height);
@@ -73,8 +76,8 @@ consteval bool complete() {
   return std::tuple_size_v<decltype(fields(std::declval<T&>()))> == count<T>();
 }
 static_assert(complete<Rgba8>() && complete<Point2>() && complete<Vec3>() && complete<Mat4>() &&
-                  complete<Texture>() && complete<Edges>() && complete<Mesh>() && complete<Camera>() &&
-                  complete<Light>() && complete<Primitive>() && complete<Scene>(),
+                  complete<Texture>() && complete<Edges>() && complete<Material>() && complete<Mesh>() &&
+                  complete<Camera>() && complete<Light>() && complete<Primitive>() && complete<Scene>(),
               "a struct of scene.h has a field that raster::fields() does not list");
 
 // Values whose bytes are their whole content: numbers, enums, and structs or arrays of them without padding.

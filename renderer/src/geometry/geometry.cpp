@@ -1,7 +1,10 @@
 #include "geometry/geometry.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+
+#include "base/vecmath.h"
 
 namespace raster::detail {
 namespace {
@@ -96,6 +99,36 @@ Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) 
       add_polyline(scene, prim, prim.kind == PrimitiveKind::triangle || prim.closed, draw.mode, call, setup);
   }
   return setup;
+}
+
+MaterialCalls add_material_calls(const Mesh& mesh, const ViewPlan& view, bool textured,
+                                 const std::vector<const MipChain*>& chains, DrawCall call, Setup& setup) {
+  MaterialCalls calls;
+  const Vec3 toward = normalize(view.eye - view.target);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::int32_t texture = !textured ? -1 : mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
+    const auto [it, is_new] = calls.try_emplace(material_key(mesh, t, texture), 0);
+    if (!is_new) continue;
+    const auto material = static_cast<std::int32_t>(it->first & 0xffffffff) - 1;
+    call.texture = texture >= 0 ? chains[static_cast<std::size_t>(texture)] : nullptr;
+    call.specular = Specular{};  // a face without a material: Lambert, per pixel
+    if (material >= 0) {
+      const Material& m = mesh.materials[static_cast<std::size_t>(material)];
+      Specular& s = call.specular;
+      if (m.is_specular()) s.model = m.model;
+      s.metallic = m.metallic, s.roughness = m.roughness;
+      if (m.metallic_roughness_texture >= 0 && textured)
+        s.metallic_roughness = chains[static_cast<std::size_t>(m.metallic_roughness_texture)];
+      for (int c = 0; c < 3; ++c) s.specular[c] = m.specular[c];
+      s.shininess = static_cast<int>(std::lround(std::clamp(m.shininess, 0.0f, 1000.0f)));
+      s.orthographic = view.projection == Projection::orthographic;
+      const double eye[3] = {view.eye.x, view.eye.y, view.eye.z}, to[3] = {toward.x, toward.y, toward.z};
+      for (int c = 0; c < 3; ++c)
+        s.eye[c] = static_cast<float>(eye[c]), s.toward_eye[c] = static_cast<float>(to[c]);
+    }
+    it->second = setup.add_call(call);
+  }
+  return calls;
 }
 
 }  // namespace raster::detail

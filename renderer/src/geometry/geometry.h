@@ -6,7 +6,10 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
+#include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "base/parallel.h"
 #include "base/stop.h"
@@ -48,5 +51,22 @@ Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter);
 /// clipped in homogeneous space (near, far and a guard band) so that w > 0 everywhere and every snapped
 /// coordinate stays in the fast range.
 void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Setup& setup, StopMeter& meter);
+
+/// A specular mesh's draw calls (PrimitivePlan::specular), one for each (texture, material) pair its faces
+/// use, by material_key.
+using MaterialCalls = std::unordered_map<std::uint64_t, std::uint32_t>;
+
+/// Triangle `t`'s pair as MaterialCalls keys it: (texture + 1) << 32 | (material + 1), -1 meaning none.
+inline std::uint64_t material_key(const Mesh& mesh, std::size_t t, std::int32_t texture) {
+  const std::int32_t material =
+      mesh.face_materials.empty() ? (mesh.materials.empty() ? -1 : 0) : mesh.face_materials[t];
+  return static_cast<std::uint64_t>(texture + 1) << 32 | static_cast<std::uint32_t>(material + 1);
+}
+
+/// Adds the calls of a specular mesh's pairs to `setup`, found in one pass over its faces (a mesh of many
+/// materials and textures makes only the pairs it has), each `call` with its texture (`chains`: the mip
+/// chain of each of the mesh's textures, when `textured`), its material as shading reads it and the eye.
+MaterialCalls add_material_calls(const Mesh& mesh, const ViewPlan& view, bool textured,
+                                 const std::vector<const MipChain*>& chains, DrawCall call, Setup& setup);
 
 }  // namespace raster::detail

@@ -253,6 +253,7 @@ struct TriangleJob {
   std::vector<std::uint32_t> texture_calls;  ///< textured: the call of each of the mesh's textures
   PodArray<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
   Vec3 forward;            ///< unit view direction
+  MaterialCalls material_calls;  ///< specular meshes: the call of each (texture, material) pair
 
   // Triangles [begin, end) into `part`, in order.
   void run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const;
@@ -278,8 +279,9 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
     light_lanes<3>(setup.calls[call].lights, normal, centre, shade);
   }
   std::uint32_t triangle_call = call;
+  std::int32_t texture = -1;
   if (with.has(Varying::uv)) {
-    const std::int32_t texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
+    texture = mesh.face_textures.empty() ? 0 : mesh.face_textures[t];
     if (texture >= 0) triangle_call = texture_calls[static_cast<std::size_t>(texture)];
     for (int k = 0; k < 3; ++k) {
       const auto& uv = mesh.uvs[mesh.uv_triangles[t][k]];
@@ -295,11 +297,14 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
       float* to = dv[k].at(with, name);
       to[0] = static_cast<float>(v.x), to[1] = static_cast<float>(v.y), to[2] = static_cast<float>(v.z);
     };
-    if (with.has(Varying::normal))
+    if (mode.face_normals)  // flat specular: the face's own normal at each corner (flipped when shaded)
+      put(Varying::normal, normalize(face));
+    else if (with.has(Varying::normal))
       put(Varying::normal,
           mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]]);
     if (with.has(Varying::position)) put(Varying::position, world[tri[k]]);
   }
+  if (mode.specular) triangle_call = material_calls.at(material_key(mesh, t, texture));
   return triangle_call;
 }
 
@@ -362,7 +367,7 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
 void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup, StopMeter& meter) {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
-  TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye)};
+  TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye), {}};
   if (mode.varyings.has(Varying::normal)) {
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
     if (mode.compute_normals)
@@ -378,12 +383,17 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
   if (mode.lit) call.lights = LightRig::of(camera.lights);
   job.call = setup.add_call(call);
   // Textured: one call per texture, the same mode; faces without a texture keep `job.call` (no texture).
+  std::vector<const MipChain*> chains;
   if (mode.varyings.has(Varying::uv))
     for (const Texture& texture : mesh.textures) {
       call.texture = &setup.textures.emplace_back(build_mips(texture, &meter));
       if (meter.stopped()) return;
+      chains.push_back(call.texture);
       job.texture_calls.push_back(setup.add_call(call));
     }
+  if (mode.specular)
+    job.material_calls =
+        add_material_calls(mesh, view.plan.view, mode.varyings.has(Varying::uv), chains, call, setup);
   in_parts(mesh.triangles.size(), kPiece, view.plan.threads, setup, meter,
            [&](std::size_t begin, std::size_t end, Records& part, StopMeter& own) {
              job.run(begin, end, part, own);

@@ -44,6 +44,13 @@ const std::string* find_upload(const Uploads& files, const std::string& uri);
 // The uploads' names, quoted, for an error that says what was sent.
 std::string upload_names(const Uploads& files);
 
+// What drawing the nodes from `roots` (or, `every_mesh`, each mesh once) would build, counted from the
+// accessors' declared counts before anything is built, against what the `sent` bytes allow (model.h:
+// kModelBuiltPerByte); more than `max_primitives` drawn primitives is refused too. Throws SceneError(limit).
+// Only a count: the walk that builds checks each node, accessor and limit itself.
+void check_what_it_builds(const tinygltf::Model& model, const std::vector<int>& roots, bool every_mesh,
+                          std::uint64_t sent, std::size_t max_primitives);
+
 // One accessor's elements as doubles, after checking that every byte it names lies in its buffer.
 class AccessorView {
  public:

@@ -96,7 +96,8 @@ class MeshBuilder {
       for (std::size_t i = 0; i < child.size(); ++i)
         if (!child[i]) roots.push_back(static_cast<int>(i));
     }
-    check_what_it_builds(roots, model_.scenes.empty() && model_.nodes.empty());
+    check_what_it_builds(model_, roots, model_.scenes.empty() && model_.nodes.empty(), sent_,
+                         kMaxDrawnPrimitives);
     visited_.assign(model_.nodes.size(), false);
     // Depth first without recursion: a document's nesting cannot exhaust the stack.
     std::vector<std::pair<int, Mat>> stack;
@@ -118,6 +119,7 @@ class MeshBuilder {
       gltf_error("the default scene has no triangles, lines or points to draw");
     if (!textured_) {
       mesh_.textures.clear(), mesh_.uvs.clear(), mesh_.face_textures.clear();
+      for (raster::Material& m : mesh_.materials) m.metallic_roughness_texture = -1;
     } else {
       mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
       mesh_.uv_triangles = mesh_.triangles;
@@ -132,78 +134,6 @@ class MeshBuilder {
   }
 
  private:
-  // What drawing the nodes from `roots` (or, `every_mesh`, each mesh once) would build, counted from the
-  // accessors' declared counts before anything is built, against what the bytes sent allow (model.h:
-  // kModelBuiltPerByte). Only a count: the walk that builds checks each node, accessor and limit itself.
-  void check_what_it_builds(const std::vector<int>& roots, bool every_mesh) const {
-    // A declared count, where its buffer view could hold that many elements (else 0: AccessorView refuses
-    // the accessor, naming it, when the walk reaches it); at most 2^32, so a million primitives' sum cannot
-    // overflow.
-    auto count_of = [&](int accessor) -> std::uint64_t {
-      if (accessor < 0 || static_cast<std::size_t>(accessor) >= model_.accessors.size()) return 0;
-      const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(accessor)];
-      if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size()) return 0;
-      const int component = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType)),
-                components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
-      if (component <= 0 || components <= 0) return 0;
-      const std::uint64_t view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)].byteLength;
-      const auto size = static_cast<std::uint64_t>(component) * static_cast<std::uint64_t>(components);
-      return a.count <= view / size ? std::min<std::uint64_t>(a.count, 1ull << 32) : 0;
-    };
-    std::uint64_t vertices = 0, faces = 0, primitives = 0;
-    auto add = [&](int mesh) {
-      if (mesh < 0 || static_cast<std::size_t>(mesh) >= model_.meshes.size()) return;
-      for (const tinygltf::Primitive& p : model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
-        ++primitives;
-        const auto pos = p.attributes.find("POSITION");
-        if (pos == p.attributes.end()) continue;
-        const std::uint64_t v = count_of(pos->second), n = p.indices >= 0 ? count_of(p.indices) : v;
-        vertices += v;  // POINTS build their vertices and nothing else
-        // Faces and segments as add_faces makes them.
-        if (p.mode == TINYGLTF_MODE_TRIANGLES) faces += n / 3;
-        if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP || p.mode == TINYGLTF_MODE_TRIANGLE_FAN)
-          faces += n < 2 ? 0 : n - 2;
-        if (p.mode == TINYGLTF_MODE_LINE) faces += n / 2;
-        if (p.mode == TINYGLTF_MODE_LINE_STRIP || p.mode == TINYGLTF_MODE_LINE_LOOP)
-          faces += n < 2 ? 0 : n - 1 + (p.mode == TINYGLTF_MODE_LINE_LOOP && n > 2);
-      }
-    };
-    if (every_mesh) {
-      for (std::size_t i = 0; i < model_.meshes.size(); ++i) add(static_cast<int>(i));
-    } else {
-      std::vector<bool> seen(model_.nodes.size(), false);
-      std::vector<int> stack(roots.rbegin(), roots.rend());
-      // Stops past kMaxDrawnPrimitives, which is refused below.
-      while (!stack.empty() && primitives <= kMaxDrawnPrimitives) {
-        const int index = stack.back();
-        stack.pop_back();
-        if (index < 0 || static_cast<std::size_t>(index) >= seen.size() ||
-            seen[static_cast<std::size_t>(index)])
-          continue;
-        seen[static_cast<std::size_t>(index)] = true;
-        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
-        add(node.mesh);
-        stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
-      }
-    }
-    // Every primitive is drawn (POINTS too): a document of many nodes naming a mesh of many primitives is
-    // refused before the first is read.
-    if (primitives > kMaxDrawnPrimitives)
-      throw SceneError(ErrorKind::limit,
-                       "glTF: the default scene draws more than " + std::to_string(kMaxDrawnPrimitives) +
-                           " mesh primitives (each node draws every primitive of its mesh)");
-    const std::uint64_t allowed = std::max(kModelBuiltFloor, kModelBuiltPerByte * sent_);
-    auto refuse = [&](std::uint64_t n, const char* what) {
-      throw SceneError(ErrorKind::limit,
-                       "glTF: the model would build " + std::to_string(n) + " " + what + " from " +
-                           std::to_string(sent_) + " bytes; at most " + std::to_string(kModelBuiltPerByte) +
-                           " per byte sent (or " + std::to_string(kModelBuiltFloor) +
-                           " for any model). Its nodes draw its meshes more often than its bytes allow");
-    };
-    if (vertices > allowed) refuse(vertices, "vertices");
-    if (faces > allowed) refuse(faces, "triangles and lines");
-  }
-
   void add_mesh(int index, const Mat& m) {
     if (static_cast<std::size_t>(index) >= model_.meshes.size())
       gltf_error("a node names mesh " + std::to_string(index) + ", which does not exist");
@@ -240,6 +170,9 @@ class MeshBuilder {
       const Material material = material_of(p.material, where);
       add_colours(p, where, count, material.colour, material.blend);
       add_uvs(p, where, count, material);
+      primitive_surface_ = material.surface;
+      if (material.surface >= 0 && mesh_.face_materials.empty())  // the first: earlier faces are Lambert
+        mesh_.face_materials.assign(mesh_.triangles.size(), -1);
 
       // Its faces: straight from a triangle list's indices, else through its corner order.
       const std::size_t first_triangle = mesh_.triangles.size();
@@ -391,6 +324,11 @@ class MeshBuilder {
     std::int32_t texture = -1;                       ///< index into mesh_.textures, or -1
     int texcoord = 0;                                ///< which TEXCOORD_n the texture reads
     bool blend = false;                              ///< alphaMode BLEND: alpha is kept; else opaque
+    /// Index into mesh_.materials, or -1: Lambert (no material, or one that gives none of metallicFactor,
+    /// roughnessFactor and metallicRoughnessTexture).
+    std::int32_t surface = -1;
+    std::int32_t metal_rough_texture = -1;  ///< its metallic-roughness texture in mesh_.textures, or -1
+    int metal_rough_texcoord = 0;           ///< which TEXCOORD_n that texture reads
   };
 
   /// What a material does with its texture's alpha: OPAQUE ignores it, MASK keeps a texel where its alpha
@@ -426,7 +364,44 @@ class MeshBuilder {
       out.texture = texture_of(pbr.baseColorTexture.index, alpha, where);
       out.texcoord = pbr.baseColorTexture.texCoord;
     }
+    surface_of(index, mat, out, where);
     return out;
+  }
+
+  // The material's metallic-roughness, when it gives any of it. glTF's defaults (metallic 1, roughness 1)
+  // apply to a field left out of a material that gives another; a material that gives none of the three
+  // (as most exporters of plain colours write, and as rasterd drew every glTF model before) stays Lambert,
+  // so that a model's picture changes only where its file asks for metal or gloss. tinygltf fills in the
+  // defaults; its `values` map holds only the fields the document wrote.
+  void surface_of(int index, const tinygltf::Material& mat, Material& out, const std::string& where) {
+    if (KHR_unlit(mat)) return;
+    const auto& pbr = mat.pbrMetallicRoughness;
+    const bool given = mat.values.count("metallicFactor") || mat.values.count("roughnessFactor") ||
+                       mat.values.count("metallicRoughnessTexture");
+    if (!given) return;
+    if (pbr.metallicRoughnessTexture.index >= 0) {
+      out.metal_rough_texture = texture_of(pbr.metallicRoughnessTexture.index, {}, where);
+      out.metal_rough_texcoord = pbr.metallicRoughnessTexture.texCoord;
+    }
+    const auto [cached, is_new] = surfaces_.try_emplace(index, -1);
+    if (!is_new) {
+      out.surface = cached->second;
+      return;
+    }
+    raster::Material m;
+    m.model = raster::Material::Model::metallic_roughness;
+    // Out-of-range factors (the spec says 0..1) are clamped rather than refused: the picture stays close to
+    // what the author meant. NaN cannot come from JSON.
+    m.metallic = static_cast<float>(std::clamp(pbr.metallicFactor, 0.0, 1.0));
+    m.roughness = static_cast<float>(std::clamp(pbr.roughnessFactor, 0.0, 1.0));
+    m.metallic_roughness_texture = out.metal_rough_texture;
+    cached->second = static_cast<std::int32_t>(mesh_.materials.size());
+    mesh_.materials.push_back(m);
+    out.surface = cached->second;
+  }
+
+  static bool KHR_unlit(const tinygltf::Material& mat) {
+    return mat.extensions.count("KHR_materials_unlit") != 0;
   }
 
   // The texture's index in mesh_.textures, decoded once for each way a material takes its alpha.
@@ -470,17 +445,22 @@ class MeshBuilder {
                const Material& material) {
     // Once a primitive is textured, one uv per position and a texture per triangle: (0, 0) and -1 where a
     // primitive has none. Before that, neither is kept.
+    // The metallic-roughness texture reads the base colour's coordinates when the material has both (a
+    // mesh holds one set of texture coordinates), its own otherwise.
     const std::size_t base = mesh_.positions.size() - count;
     primitive_texture_ = material.texture;
-    const auto it = p.attributes.find("TEXCOORD_" + std::to_string(material.texcoord));
+    const int texcoord = material.texture >= 0 ? material.texcoord : material.metal_rough_texcoord;
+    const auto it = p.attributes.find("TEXCOORD_" + std::to_string(texcoord));
     if (material.texture >= 0 && it == p.attributes.end()) primitive_texture_ = -1;
-    if (primitive_texture_ >= 0 && !textured_) {
+    const bool reads_uvs =
+        it != p.attributes.end() && (primitive_texture_ >= 0 || material.metal_rough_texture >= 0);
+    if (reads_uvs && !textured_) {
       textured_ = true;
       mesh_.face_textures.assign(mesh_.triangles.size(), -1);
     }
     if (textured_) mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
-    if (primitive_texture_ < 0) return;
-    const AccessorView uv(model_, it->second, where + " TEXCOORD_" + std::to_string(material.texcoord));
+    if (!reads_uvs) return;
+    const AccessorView uv(model_, it->second, where + " TEXCOORD_" + std::to_string(texcoord));
     if (uv.components() != 2 || uv.count() != count) gltf_error(uv.what() + " is not one VEC2 per vertex");
     for (std::size_t i = 0; i < count; ++i) {
       const double u = uv.get(i, 0), v = uv.get(i, 1);
@@ -500,6 +480,7 @@ class MeshBuilder {
                     [&] { return std::to_string(more) + " more triangles"; });
     make_room(mesh_.triangles, more);
     if (textured_) make_room(mesh_.face_textures, more);
+    if (!mesh_.materials.empty()) make_room(mesh_.face_materials, more);
   }
 
   // `count` triangles that `fill` writes at once (the common case, in straight loops rather than one call a
@@ -514,11 +495,14 @@ class MeshBuilder {
     if (mirrored)
       for (std::size_t i = 0; i < count; ++i) std::swap(t[i][1], t[i][2]);
     if (textured_) mesh_.face_textures.insert(mesh_.face_textures.end(), count, primitive_texture_);
+    if (!mesh_.materials.empty())
+      mesh_.face_materials.insert(mesh_.face_materials.end(), count, primitive_surface_);
   }
 
   void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, bool mirrored) {
     mesh_.triangles.push_back(mirrored ? std::array{a, c, b} : std::array{a, b, c});
     if (textured_) mesh_.face_textures.push_back(primitive_texture_);
+    if (!mesh_.materials.empty()) mesh_.face_materials.push_back(primitive_surface_);
   }
 
   void add_faces(int mode, const std::vector<std::uint32_t>& v, bool mirrored, const std::string& where) {
@@ -573,6 +557,8 @@ class MeshBuilder {
       textures_;  ///< (image, alpha) -> index into mesh_.textures
   std::int64_t texel_budget_ = limits_.max_texture_pixels;
   std::int32_t primitive_texture_ = -1;
+  std::int32_t primitive_surface_ = -1;   ///< the current primitive's index into mesh_.materials
+  std::map<int, std::int32_t> surfaces_;  ///< glTF material -> index into mesh_.materials
   bool any_lit_ = false, any_unlit_ = false;
   /// Triangles [first, end) of the primitives that had no NORMAL, for finish_normals.
   std::vector<std::pair<std::size_t, std::size_t>> without_normals_;

@@ -247,6 +247,30 @@ struct FaceTotals {
   bool all_normals = true;    ///< every triangle's corners have normals: the model's normals are kept
 };
 
+// The MTL materials with a specular colour (Ks above 0) into mesh.materials (Blinn-Phong), and each
+// material's index there, -1 for the others (Lambert): a model without any keeps exactly the picture it had
+// before Ks was read.
+std::vector<std::int32_t> specular_materials(const std::vector<tinyobj::material_t>& materials,
+                                             const MaterialTextures& textures, Mesh& mesh) {
+  std::vector<std::int32_t> surface(materials.size(), -1);
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    if (!textures.extras[m]) continue;
+    Material look;
+    look.model = Material::Model::blinn_phong;
+    for (int c = 0; c < 3; ++c) {  // within 0..1, NaN as 0
+      const float ks = static_cast<float>(materials[m].specular[c]);
+      look.specular[c] = ks > 0 ? std::min(ks, 1.0f) : 0.0f;
+    }
+    // NaN (from "Ns nan") is no exponent: the MTL's range's end, like any value above it.
+    const float ns = static_cast<float>(materials[m].shininess);
+    look.shininess = ns >= 0 ? std::min(ns, 1000.0f) : ns < 0 ? 0.0f : 1000.0f;
+    if (!look.is_specular()) continue;
+    surface[m] = static_cast<std::int32_t>(mesh.materials.size());
+    mesh.materials.push_back(look);
+  }
+  return surface;
+}
+
 // Every face's triangles, in file order, into the mesh with their normal and texture-coordinate
 // references, texture and colour (into `face_colors`, one per triangle). `no_uv` is the (0, 0) coordinate
 // of faces without their own.
@@ -255,6 +279,9 @@ FaceTotals add_faces(const Parsed& model, const Counts& counts, const MaterialTe
                      detail::ReadMeter& meter) {
   const auto& materials = model.materials;
   FaceTotals totals;
+  // Each material's index into mesh.materials (-1: Lambert).
+  const std::vector<std::int32_t> surface = specular_materials(materials, textures, mesh);
+  if (!mesh.materials.empty()) mesh.face_materials.reserve(mesh.triangles.capacity());
   // Each face's corners: tinyobjloader's count, but the prescan's for faces of 256 and more (tinyobjloader
   // keeps faces in file order, every 'f' line one face).
   std::size_t long_face = 0;
@@ -306,6 +333,7 @@ FaceTotals add_faces(const Parsed& model, const Counts& counts, const MaterialTe
                                            static_cast<std::uint32_t>(c[1].normal_index),
                                            static_cast<std::uint32_t>(c[2].normal_index)});
         face_colors.push_back(face_color);
+        if (!mesh.materials.empty()) mesh.face_materials.push_back(material ? surface[m] : -1);
         if (!mesh.textures.empty()) {
           const bool has_uv =
               c[0].texcoord_index >= 0 && c[1].texcoord_index >= 0 && c[2].texcoord_index >= 0;

@@ -104,7 +104,27 @@ struct Tally {
 
 // The textures of a textured mesh: whether they blend or break grey, and their bytes with the mipmaps.
 void plan_textures(const Mesh& mesh, PrimitivePlan& pp, RenderPlan& out, Tally& tally) {
-  for (const Texture& t : mesh.textures) {
+  // A texture only a material reads (metallic-roughness) holds numbers, not colours: its texels neither
+  // blend nor colour. Found once, and only for meshes with such a material.
+  std::vector<bool> numbers_only;
+  for (const Material& m : mesh.materials)
+    if (m.metallic_roughness_texture >= 0) {
+      if (numbers_only.empty()) {
+        numbers_only.assign(mesh.textures.size(), false);
+        for (const Material& n : mesh.materials)
+          if (n.metallic_roughness_texture >= 0)
+            numbers_only[static_cast<std::size_t>(n.metallic_roughness_texture)] = true;
+        if (mesh.face_textures.empty()) numbers_only[0] = false;
+        for (std::int32_t f : mesh.face_textures)
+          if (f >= 0) numbers_only[static_cast<std::size_t>(f)] = false;
+      }
+      break;
+    }
+  for (std::size_t i = 0; i < mesh.textures.size(); ++i) {
+    const Texture& t = mesh.textures[i];
+    out.memory.texture_bytes +=
+        static_cast<std::int64_t>(t.rgba.size()) + detail::mip_bytes(t.width, t.height);
+    if (!numbers_only.empty() && numbers_only[i]) continue;
     bool opaque = true, grey_texels = true, cut_outs = false;
     for (std::size_t k = 0; k + 3 < t.rgba.size(); k += 4) {
       opaque &= t.rgba[k + 3] == 255;
@@ -114,8 +134,6 @@ void plan_textures(const Mesh& mesh, PrimitivePlan& pp, RenderPlan& out, Tally& 
     pp.blend |= !opaque;
     pp.cut_outs |= cut_outs;
     tally.grey &= grey_texels;
-    out.memory.texture_bytes +=
-        static_cast<std::int64_t>(t.rgba.size()) + detail::mip_bytes(t.width, t.height);
   }
   ++out.textured_count;
 }
@@ -129,8 +147,19 @@ bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, Rende
   tally.any_3d = true;
   pp.depth = true;
   pp.lit = draws_triangles && mesh.shading != Shading::unlit;
-  const bool light_per_pixel = pp.lit && mesh.shading == Shading::smooth;
-  pp.compute_normals = light_per_pixel && mesh.normals.empty();
+  // Specular: some face's material adds to Lambert. Such a mesh is lit per pixel (the highlight moves with
+  // the view direction across a face), flat-shaded ones with each face's own normal.
+  bool any_specular = false;
+  for (const Material& m : mesh.materials) {
+    any_specular |= m.is_specular();
+    // A coloured Ks makes colours that are not grey (a metal's F0 is its grey or coloured base colour).
+    if (m.model == Material::Model::blinn_phong && m.is_specular())
+      tally.grey &= m.specular[0] == m.specular[1] && m.specular[1] == m.specular[2];
+  }
+  pp.specular = pp.lit && any_specular;
+  pp.face_normals = pp.specular && mesh.shading == Shading::flat;
+  const bool light_per_pixel = pp.lit && (mesh.shading == Shading::smooth || pp.specular);
+  pp.compute_normals = light_per_pixel && !pp.face_normals && mesh.normals.empty();
   tally.grey &= lights.grey || !pp.lit;
   const auto& colors = mesh.face_colors.empty() ? mesh.colors : mesh.face_colors;
   bool varied = false;
@@ -150,7 +179,7 @@ bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, Rende
   if (varying_color) v.add(Varying::color, Interpolation::perspective);
   if (light_per_pixel) v.add(Varying::normal, Interpolation::perspective);
   if (textured) v.add(Varying::uv, Interpolation::perspective);
-  if (light_per_pixel && lights.point) v.add(Varying::position, Interpolation::perspective);
+  if (light_per_pixel && (lights.point || pp.specular)) v.add(Varying::position, Interpolation::perspective);
   v.add(Varying::depth, Interpolation::affine);
   if (pp.smooth) v.add(Varying::inv_w, Interpolation::affine);
   // Lines (segments, wireframe edges) are unlit; their endpoint colours differ when the colours vary.

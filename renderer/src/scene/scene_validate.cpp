@@ -56,6 +56,16 @@ void check_references(const Scene& scene) {
     for (const auto& uv : m.uvs) ok = ok && std::isfinite(uv[0]) && std::isfinite(uv[1]);
     for (std::int32_t f : m.face_textures)
       ok = ok && f >= -1 && f < static_cast<std::int32_t>(m.textures.size());
+    // Materials: within their ranges (NaN fails every comparison), and their indices in range.
+    ok = ok && (m.face_materials.empty() || m.face_materials.size() == m.triangles.size());
+    for (std::int32_t f : m.face_materials)
+      ok = ok && f >= -1 && f < static_cast<std::int32_t>(m.materials.size());
+    for (const Material& mat : m.materials)
+      ok = ok && mat.metallic >= 0 && mat.metallic <= 1 && mat.roughness >= 0 && mat.roughness <= 1 &&
+           mat.shininess >= 0 && mat.shininess <= 1000 && mat.metallic_roughness_texture >= -1 &&
+           mat.metallic_roughness_texture < static_cast<std::int32_t>(m.textures.size()) &&
+           mat.specular[0] >= 0 && mat.specular[0] <= 1 && mat.specular[1] >= 0 && mat.specular[1] <= 1 &&
+           mat.specular[2] >= 0 && mat.specular[2] <= 1;
     for (const Texture& t : m.textures)
       ok = ok && t.width >= 1 && t.height >= 1 && t.width <= kMaxTextureSide && t.height <= kMaxTextureSide &&
            t.rgba.size() == std::size_t(t.width) * std::size_t(t.height) * 4 && std::isfinite(t.scale[0]) &&
@@ -66,8 +76,8 @@ void check_references(const Scene& scene) {
     if (!ok)
       throw SceneError(
           ErrorKind::invalid,
-          "mesh has indices, colours, normals, texture coordinates or textures that do not match its "
-          "positions",
+          "mesh has indices, colours, normals, texture coordinates, textures or materials that do not "
+          "match its positions (or materials out of their ranges)",
           {where, 0, 0});
   }
   // Scenes built in code skip the parser's checks; coverage relies on these bounds.

@@ -34,6 +34,8 @@ struct DrawCall {
   LightRig lights;
   /// Textured modes: the texture its triangles sample (in Setup::textures), or nullptr for faces without one.
   const MipChain* texture = nullptr;
+  /// Specular modes (PrimitivePlan::specular): its triangles' material; model lambert for faces without one.
+  Specular specular;
 };
 
 /// A draw call for `mode`, lighting at its defaults.

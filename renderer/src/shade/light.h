@@ -1,7 +1,8 @@
 // Light: a surface's unit normal and world position + the view's resolved lights (ViewPlan::lights) -> the
 // Lambert factor per colour channel. The one lighting routine, written over lanes (lanes.h): the triangle
 // shader calls it for eight pixels at a time (smooth shading), and geometry for one face at a time (flat
-// shading), so a face lit either way is lit by the same arithmetic.
+// shading), so a face lit either way is lit by the same arithmetic. Specular materials (scene.h: Material)
+// add specular_lanes, per pixel only, taken by the draw calls whose plan says so.
 #pragma once
 
 #include <span>
@@ -9,6 +10,7 @@
 
 #include "raster/plan.h"
 #include "shade/lanes.h"
+#include "shade/texture.h"
 
 namespace raster::detail {
 
@@ -71,6 +73,121 @@ template <int channels, class F>
     }
     for (int c = 0; c < channels; ++c) out[c] += s.rgb[c] * f;
   }
+}
+
+/// A specular material (scene.h: Material) as shading reads it, with the view it is seen from: one per draw
+/// call, so that which BRDF a pixel takes is decided per draw, never per pixel.
+struct Specular {
+  Material::Model model = Material::Model::lambert;  ///< metallic_roughness or blinn_phong
+  float metallic = 1, roughness = 1;                 ///< metallic_roughness: factors, 0..1
+  const MipChain* metallic_roughness = nullptr;      ///< its texture (B metallic, G roughness), or none
+  float specular[3] = {};                            ///< blinn_phong: Ks per channel, 0..1
+  int shininess = 1;                                 ///< blinn_phong: Ns rounded, 0..1000
+  bool orthographic = false;                         ///< the view direction is the same everywhere:
+  float toward_eye[3] = {};                          ///< orthographic: unit world vector toward the eye
+  float eye[3] = {};                                 ///< perspective: the eye's world position
+};
+
+/// x^n for a whole n >= 0 by squaring: multiplications only, so every lane width rounds alike (a pow through
+/// exp and log would be a library call whose vector and scalar forms may differ).
+/// (Values in and out by reference: eight lanes cannot be passed by value between AVX and other code.)
+template <class F>
+[[gnu::always_inline]] inline void pow_whole(const F& base, int n, F& out) {
+  F x = base;
+  out = F{} + 1.0f;
+  for (; n > 0; n >>= 1, x *= x)
+    if (n & 1) out *= x;
+}
+
+/// The unit vector of `d` in place, and its length before in `len` (0 leaves it zero, not NaN).
+template <class F>
+[[gnu::always_inline]] inline void normalize_lanes(F (&d)[3], F& len) {
+  len = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  sqrt_lanes(len);
+  const F scale = len > 0.0f ? 1.0f / len : F{};
+  for (F& c : d) c *= scale;
+}
+
+/// A specular surface's colour under `rig`: `rgb` (0..255, sRGB-encoded, the base colour with its texture)
+/// in, lit colour (0..255, unclamped) out, for the unit normal n of the side seen at world point p, with the
+/// material's metallic and roughness at the pixel (`mr`: factors times the texture's, metallic_roughness
+/// only). metallic_roughness is glTF 2.0's appendix B BRDF times pi (the lights' convention, scene.h: Light):
+///   ambient x (c_diff + F0) + sum over lights of light x (n.l) x ((1 - F) c_diff + pi F D V),
+/// c_diff = base (1 - metallic), F0 = 0.04 (1 - metallic) + base metallic, F Schlick's Fresnel at v.h,
+/// D Trowbridge-Reitz (GGX) and V the height-correlated Smith visibility at alpha = roughness^2.
+/// blinn_phong is Lambert (light_lanes) plus sum over lights facing the surface of light x Ks x (n.h)^Ns.
+template <int channels, class F>
+[[gnu::always_inline]] inline void specular_lanes(const LightRig& rig, const Specular& look, const F (&n)[3],
+                                                  const F (&p)[3], const F (&mr)[2], F (&rgb)[4]) {
+  constexpr float kPi = 3.14159265358979f;
+  F v[3];
+  if (look.orthographic) {
+    for (int c = 0; c < 3; ++c) v[c] = F{} + look.toward_eye[c];
+  } else {
+    for (int c = 0; c < 3; ++c) v[c] = look.eye[c] - p[c];
+    F len;
+    normalize_lanes(v, len);
+  }
+  // metallic_roughness: the base colour in 0..1, and the light each channel reflects summed into `out`.
+  F base[3], out[3];
+  for (int c = 0; c < channels; ++c) base[c] = rgb[c] * (1.0f / 255.0f);
+  const bool pbr = look.model == Material::Model::metallic_roughness;
+  F c_diff[3] = {}, f0[3] = {}, alpha2{}, n_v{};
+  if (pbr) {
+    const F metallic = mr[0], rough = mr[1] > 0.05f ? mr[1] : F{} + 0.05f;
+    const F alpha = rough * rough;
+    alpha2 = alpha * alpha;
+    for (int c = 0; c < channels; ++c) {
+      c_diff[c] = base[c] * (1.0f - metallic);
+      f0[c] = 0.04f * (1.0f - metallic) + base[c] * metallic;
+      out[c] = rig.ambient[c] * (c_diff[c] + f0[c]);
+    }
+    n_v = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+    n_v = n_v > 1e-4f ? n_v : F{} + 1e-4f;  // a normal turned from the eye (interpolated): grazing
+  } else {  // Lambert as light_lanes gives it (and as the colour is multiplied by it without materials)
+    light_lanes<channels>(rig, n, p, out);
+    for (int c = 0; c < channels; ++c) out[c] *= rgb[c];
+  }
+  F extra[3] = {};  // blinn_phong: the lobes' sum, 0..1
+  for (const LightRig::Source& s : rig.sources) {
+    F l[3];
+    if (s.kind == LightKind::directional) {
+      for (int c = 0; c < 3; ++c) l[c] = F{} + s.to_light[c];
+    } else {
+      for (int c = 0; c < 3; ++c) l[c] = s.position[c] - p[c];
+      F len;
+      normalize_lanes(l, len);
+      for (int c = 0; c < 3; ++c) l[c] = len > 0.0f ? l[c] : n[c];  // at the lamp: lit head-on
+    }
+    F n_l = n[0] * l[0] + n[1] * l[1] + n[2] * l[2];
+    n_l = n_l > 0.0f ? n_l : F{};  // also NaN
+    F h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
+    F h_len;
+    normalize_lanes(h, h_len);
+    F n_h = n[0] * h[0] + n[1] * h[1] + n[2] * h[2];
+    n_h = n_h > 0.0f ? n_h : F{};
+    if (!pbr) {
+      F lobe;
+      pow_whole(n_h, look.shininess, lobe);
+      const F facing = n_l > 0.0f ? lobe : F{};
+      for (int c = 0; c < channels; ++c) extra[c] += s.rgb[c] * look.specular[c] * facing;
+      continue;
+    }
+    F v_h = v[0] * h[0] + v[1] * h[1] + v[2] * h[2];
+    v_h = v_h > 0.0f ? v_h : F{};
+    const F m = 1.0f - v_h, m2 = m * m, schlick = m2 * m2 * m;
+    const F t = n_h * n_h * (alpha2 - 1.0f) + 1.0f;
+    const F d = alpha2 / (kPi * t * t);
+    F root_l = alpha2 + (1.0f - alpha2) * n_l * n_l, root_v = alpha2 + (1.0f - alpha2) * n_v * n_v;
+    sqrt_lanes(root_l), sqrt_lanes(root_v);
+    const F vis = 1.0f / ((n_l + root_l) * (n_v + root_v));
+    const F spec = kPi * d * vis;
+    for (int c = 0; c < channels; ++c) {
+      const F fresnel = f0[c] + (1.0f - f0[c]) * schlick;
+      out[c] += s.rgb[c] * n_l * ((1.0f - fresnel) * c_diff[c] + fresnel * spec);
+    }
+  }
+  for (int c = 0; c < channels; ++c) rgb[c] = pbr ? out[c] * 255.0f : out[c] + extra[c] * 255.0f;
 }
 
 }  // namespace raster::detail

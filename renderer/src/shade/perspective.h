@@ -31,15 +31,18 @@ class PerspectiveColor {
     // Pointers into the record, not copies: a dense mesh's record covers a pixel or two, so what is set up
     // per record must cost less than a pixel's shading; the lanes broadcast from the record as cheaply.
     auto row = [&](Varying v) { return at[static_cast<int>(v)]; };
+    if (call.specular.model != Material::Model::lambert) specular_ = &call.specular;
     for (int k = 0; k < 3; ++k) {
       inv_w_[k] = row(Varying::inv_w)[k];
       color_[k] = row(Varying::color)[k];
       normal_at_[k] = row(Varying::normal)[k];
-      position_at_[k] = rig_->any_point ? row(Varying::position)[k] : nullptr;
+      position_at_[k] = rig_->any_point || specular_ ? row(Varying::position)[k] : nullptr;
     }
     flat_color_ = call.mode.varyings.how(Varying::color) == Interpolation::flat;
-    if (const float* const* uv = row(Varying::uv); uv[0] && call.texture) {
+    const MipChain* metal_rough = specular_ ? specular_->metallic_roughness : nullptr;
+    if (const float* const* uv = row(Varying::uv); uv[0] && (call.texture || metal_rough)) {
       texture_ = call.texture;
+      metal_rough_ = metal_rough;
       // Screen derivatives of u / w, v / w and 1 / w: constants of the record (exact inputs, in doubles).
       double d[6] = {};
       for (int k = 0; k < 3; ++k) {
@@ -66,7 +69,11 @@ class PerspectiveColor {
       rgba[c] =
           flat_color_ ? F{} + color_[0][c] : q[0] * color_[0][c] + q[1] * color_[1][c] + q[2] * color_[2][c];
     }
-    if (texture_) sample(q, inv_sum, lanes, rgba);
+    F texel[4];
+    if (texture_) {
+      sample(*texture_, q, inv_sum, lanes, texel);
+      for (int c = 0; c < 4; ++c) rgba[c] *= texel[c];
+    }
     if (!normal_at_[0]) return;
     F n[3], p[3] = {}, shade[3];
     for (int c = 0; c < 3; ++c)
@@ -79,35 +86,43 @@ class PerspectiveColor {
     if (position_at_[0])
       for (int c = 0; c < 3; ++c)
         p[c] = q[0] * position_at_[0][c] + q[1] * position_at_[1][c] + q[2] * position_at_[2][c];
+    if (specular_) {  // decided per draw call: a mesh without specular materials never comes here
+      F mr[2] = {F{} + specular_->metallic, F{} + specular_->roughness};
+      if (metal_rough_) {  // glTF: B is metallic, G roughness (linear values, read as they are stored)
+        sample(*metal_rough_, q, inv_sum, lanes, texel);
+        mr[0] *= texel[2], mr[1] *= texel[1];
+      }
+      specular_lanes<colours>(*rig_, *specular_, n, p, mr, rgba);
+      return;
+    }
     light_lanes<colours>(*rig_, n, p, shade);
     for (int c = 0; c < colours; ++c) rgba[c] *= shade[c];
   }
 
  private:
-  // Multiplies rgba by the texture at the perspective-correct coordinates, lane by lane (texels are fetched
-  // one pixel at a time). The level of detail comes from the screen derivatives of u / w and v / w over 1 /
-  // w.
+  // `chain` at the perspective-correct coordinates into texel (0..1), lane by lane (texels are fetched one
+  // pixel at a time; lanes not in `lanes` are 1). The level of detail comes from the screen derivatives of
+  // u / w and v / w over 1 / w.
   template <class F>
-  [[gnu::always_inline]] inline void sample(const F (&q)[3], const F& inv_sum, unsigned lanes,
-                                            F (&rgba)[4]) const {
+  [[gnu::always_inline]] inline void sample(const MipChain& chain, const F (&q)[3], const F& inv_sum,
+                                            unsigned lanes, F (&texel)[4]) const {
     const F u = q[0] * uv_[0][0] + q[1] * uv_[1][0] + q[2] * uv_[2][0];
     const F v = q[0] * uv_[0][1] + q[1] * uv_[1][1] + q[2] * uv_[2][1];
     const float* d = uv_slopes_;
-    const float sx = static_cast<float>(texture_->texture->scale[0]),
-                sy = static_cast<float>(texture_->texture->scale[1]);
+    const float sx = static_cast<float>(chain.texture->scale[0]),
+                sy = static_cast<float>(chain.texture->scale[1]);
     const F du_dx = (d[0] - u * d[2]) * inv_sum * sx, dv_dx = (d[1] - v * d[2]) * inv_sum * sy;
     const F du_dy = (d[3] - u * d[5]) * inv_sum * sx, dv_dy = (d[4] - v * d[5]) * inv_sum * sy;
-    F texel[4] = {F{} + 1.0f, F{} + 1.0f, F{} + 1.0f, F{} + 1.0f};
-    const MipLevel& base = texture_->levels[0];
+    for (F& t : texel) t = F{} + 1.0f;
+    const MipLevel& base = chain.levels[0];
     for (unsigned m = lanes; m; m &= m - 1) {
       const int i = __builtin_ctz(m);
       const double lod =
           mip_lod(lane(du_dx, i), lane(dv_dx, i), lane(du_dy, i), lane(dv_dy, i), base.width, base.height);
       float t[4];
-      texture_->sample(lane(u, i), lane(v, i), lod, t);
+      chain.sample(lane(u, i), lane(v, i), lod, t);
       for (int c = 0; c < 4; ++c) set_lane(texel[c], i, t[c]);
     }
-    for (int c = 0; c < 4; ++c) rgba[c] *= texel[c];
   }
   static void set_lane(float& v, int, float x) { v = x; }
   static void set_lane(FloatLanes& v, int i, float x) { v[i] = x; }
@@ -118,9 +133,11 @@ class PerspectiveColor {
   const float* inv_w_[3] = {};
   const float* color_[3] = {};
   bool flat_color_ = true;
-  const float* normal_at_[3] = {};     // lit per pixel
-  const float* position_at_[3] = {};   // lit per pixel by a point light
-  const MipChain* texture_ = nullptr;  // textured faces with a texture
+  const float* normal_at_[3] = {};         // lit per pixel
+  const float* position_at_[3] = {};       // lit per pixel by a point light
+  const MipChain* texture_ = nullptr;      // textured faces with a texture
+  const Specular* specular_ = nullptr;     // faces of a specular material (else Lambert)
+  const MipChain* metal_rough_ = nullptr;  // specular faces with a metallic-roughness texture
   const float* uv_[3] = {};
   float uv_slopes_[6] = {};  // d(u/w)/dx, d(v/w)/dx, d(1/w)/dx, then the same per pixel down
 };
