@@ -39,8 +39,9 @@ bool looks_like_flattened_obj(std::string_view body) {
 }
 
 // The query parameters of a bare model's default scene ("explain" is the route's).
-constexpr std::string_view kModelParams[] = {"width", "height", "background", "view",   "projection", "fov",
-                                             "eye",   "target", "up",         "format", "antialias"};
+constexpr std::string_view kModelParams[] = {"width",      "height", "background", "view",
+                                             "projection", "fov",    "eye",        "target",
+                                             "up",         "format", "antialias",  "point_size"};
 
 }  // namespace
 
@@ -179,6 +180,9 @@ bool set_field(raster::Scene& scene, const std::string& name, const std::string&
     camera.has_up = true;
   } else if (name == "antialias") {
     scene.antialias = raster::checks::antialias(value);
+  } else if (name == "point_size") {  // kept through the model's reading (default_scene)
+    const Number n = number_param(name, value);
+    scene.meshes[0].point_size = raster::checks::point_size(n.value, n.text);
   } else {
     return false;
   }
@@ -220,10 +224,12 @@ raster::Scene default_scene(const Params& params, std::optional<raster::ModelFor
   try {
     raster::checks::camera(scene.camera, "/camera", 0);
     raster::checks::image_size(scene.width, scene.height, limits);
-    const auto mtl = uploads.find("mtl");  // an MTL uploaded as part "mtl" goes with the model
+    const auto mtl = uploads.find("mtl");                 // an MTL uploaded as part "mtl" goes with the model
+    const float point_size = scene.meshes[0].point_size;  // ?point_size= or the default
     scene.meshes[0] = raster::checks::model_mesh(bytes, hint, limits, uploads,
                                                  mtl == uploads.end() ? std::string_view() : mtl->second,
                                                  "/primitives/0", 0, format);
+    scene.meshes[0].point_size = point_size;
     raster::validate(scene);
   } catch (const raster::SceneError& e) {
     const std::string param = param_of_pointer(e.where().pointer, params);

@@ -16,8 +16,8 @@
 namespace rasterd {
 
 /// Query parameters (HTTP) or --key=value options (CLI) that shape the default scene of a bare model:
-/// width, height, background, projection, fov, eye, target, up (vectors as "x,y,z"), and format (the
-/// model's, when its bytes do not tell it: obj, stl, ply, gltf or glb).
+/// width, height, background, projection, fov, eye, target, up (vectors as "x,y,z", or an axis), antialias,
+/// point_size, and format (the model's, when its bytes do not tell it: obj, stl, ply, gltf or glb).
 using Params = std::map<std::string, std::string, std::less<>>;
 
 /// A query parameter (HTTP) or option (CLI) that is wrong: unknown, or a value that is not what it takes.

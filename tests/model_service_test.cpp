@@ -141,6 +141,34 @@ TEST(ModelService, AntialiasIsAQueryParameterOfABareModel) {
       << detail;
 }
 
+// Issue 42: a bare point cloud takes ?point_size= (pixels, the scene field's range): larger points cover
+// more of the picture; a size out of range is a 400 naming the parameter.
+TEST(ModelService, PointSizeIsAQueryParameterOfABareModel) {
+  test::TestServer server;
+  std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 9\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n";
+  for (int i = 0; i < 9; ++i) ply += std::to_string(i % 3) + " " + std::to_string(i / 3) + " 0\n";
+  auto covered = [&](const std::string& query) {
+    auto r = server.client().Post("/render?width=64&height=64&antialias=1" + query, ply, "model/ply");
+    EXPECT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << r->body;
+    const test::Decoded image = test::decode_png(r->body);
+    int n = 0;
+    for (int i = 0; i < image.width * image.height; ++i)
+      n += std::memcmp(&image.pixels[i * image.channels], image.pixels.data(), image.channels) != 0;
+    return n;
+  };
+  const int by_default = covered(""), large = covered("&point_size=8");
+  EXPECT_GT(by_default, 0);
+  EXPECT_GT(large, 4 * by_default) << "9 discs 8 px across against 2.5";
+  auto bad = server.client().Post("/render?point_size=0", ply, "model/ply");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_NE(problem_detail(bad).find("query parameter \"point_size\""), std::string::npos)
+      << problem_detail(bad);
+}
+
 // Issue 42: ?up= takes an axis by name, its '+' written as is (a URL's '+' arrives as a space) or as %2B,
 // and the default view turns with it: the picture of the vector's.
 TEST(ModelService, UpTakesAnAxisName) {

@@ -32,6 +32,8 @@ View view(std::string_view name);
 
 /// A camera's "fov", in degrees.
 double fov(double degrees, std::string_view text);
+/// A model's "point_size", in pixels (format::kPointSize).
+float point_size(double pixels, std::string_view text);
 
 /// One coordinate of a point or direction: within +-kMaxCoordinate.
 double coordinate(double value, std::string_view text);

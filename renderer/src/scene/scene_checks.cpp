@@ -65,6 +65,11 @@ View view(std::string_view name) {
   return static_cast<View>(choice(format::kViewNames, name));
 }
 
+float point_size(double pixels, std::string_view text) {
+  if (!format::kPointSize.contains(pixels)) invalid(format::out_of_range(format::kPointSize, text));
+  return static_cast<float>(pixels);
+}
+
 double fov(double degrees, std::string_view text) {
   if (!format::kFov.contains(degrees)) invalid(format::out_of_range(format::kFov, text));
   return degrees;
