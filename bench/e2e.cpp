@@ -31,8 +31,9 @@ constexpr const char* kScenes[] = {"small", "large", "grid"};          // the in
 constexpr const char* kServed[] = {"small", "large", "grid", "flat"};  // 2D through the service
 constexpr const char* kModels[] = {"sphere", "bunny"};
 
-// A model scene's mesh as OBJ text (what a client would POST) and the query giving its size; throws when
-// the model cannot be made (the bunny without its file).
+// A model scene's mesh as OBJ text (what a client would POST) and the query giving its size and the scene's
+// picture (aliased, on black: what llvmpipe draws, not a bare model's smoother default); throws when the
+// model cannot be made (the bunny without its file).
 std::string model_obj(const std::string& model, std::string& query) {
   const raster::Scene scene = bench::mesh_scene(model);
   const raster::Mesh& mesh = scene.meshes[0];
@@ -47,7 +48,8 @@ std::string model_obj(const std::string& model, std::string& query) {
     const int n = std::snprintf(line, sizeof line, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
     obj.append(line, static_cast<std::size_t>(n));
   }
-  query = "width=" + std::to_string(scene.width) + "&height=" + std::to_string(scene.height);
+  query = "width=" + std::to_string(scene.width) + "&height=" + std::to_string(scene.height) +
+          "&antialias=1&background=000000";
   return obj;
 }
 
