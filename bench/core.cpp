@@ -12,8 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <random>
 #include <sstream>
@@ -61,22 +59,21 @@ raster::Scene target_scene(const std::string& kind) {
 
 // The bare models whose default anti-aliasing is held to <= kModelAntialiasCost x the aliased render
 // (issue 42), as the service draws them: raster::model_scene of the file, 512x512.
-struct ModelFile {
+struct PictureFile {
   const char* name;
   const char* path;  // from the repository's root; the bunny's $RASTERD_BUNNY wins
 };
-constexpr ModelFile kModelFiles[] = {{"bunny", "../shared/models/bunny.obj"},
-                                     {"knot", "examples/models/knot.obj"}};
+constexpr PictureFile kModelFiles[] = {{"bunny", "../shared/models/bunny.obj"},
+                                       {"knot", "examples/models/knot.obj"}};
 constexpr double kModelAntialiasCost = 1.5;
 
-raster::Scene model_picture(const ModelFile& file) {
+raster::Scene model_picture(const PictureFile& file) {
   const char* env = std::getenv("RASTERD_BUNNY");
-  const std::string path = std::string(file.name) == "bunny" && env && *env ? env : file.path;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
-  const raster::ModelFormat format = raster::model_format_of(bytes, raster::format_of_file_name(path));
-  return raster::model_scene(raster::checks::model_mesh(bytes, format, {}, {}, "", "", 0, format), format);
+  const bench::ModelFile model =
+      bench::read_model_file(std::string(file.name) == "bunny" && env && *env ? env : file.path);
+  return raster::model_scene(
+      raster::checks::model_mesh(model.bytes, model.format, {}, model.files, "", "", 0, model.format),
+      model.format);
 }
 
 // The hidden mode: plan + render of every target scene (or of the `only` ones, when named) at 1 and 2
@@ -105,7 +102,7 @@ void measure(int runs, const std::vector<std::string>& only) {
       std::fflush(stdout);
     }
   }
-  for (const ModelFile& file : kModelFiles) {
+  for (const PictureFile& file : kModelFiles) {
     if (!only.empty()) break;
     raster::Scene scene;
     try {
@@ -317,7 +314,7 @@ int main(int argc, char** argv) {
       "| model | threads | aliased ms | default ms | × aliased | target | verdict |\n"
       "|---|---:|---:|---:|---:|---:|---|\n",
       raster::sample_count(raster::kModelPicture.antialias), kProcesses);
-  for (const ModelFile& file : kModelFiles)
+  for (const PictureFile& file : kModelFiles)
     for (int threads : {1, 2}) {
       const std::string name = file.name;
       if (!raster_ms[name + "-model-1"].count(threads) ||

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "raster/raster.h"
+#include "scenes.h"
 
 namespace {
 
@@ -104,21 +105,11 @@ double luma(const raster::Image& image, int x, int y) {
   return image.channels() < 3 ? p[0] : 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
 }
 
-// A model as the CLI reads it: the files it names gathered from its folder (as bench/model_defaults.cpp
-// does), then its reader. Throws what the reader throws.
+// A model as the CLI reads it (bench::read_model_file), then its reader. Throws what the reader throws.
 raster::Mesh read_model(const fs::path& path, raster::ModelFormat& format) {
-  const std::optional<raster::ModelFormat> hint = raster::format_of_file_name(path.filename().string());
-  const std::string bytes = read(path.string());
-  format = raster::model_format_of(bytes, hint);
-  const raster::ModelFormatInfo& info = raster::model_format(format);
-  raster::Uploads files;
-  for (int round = 0; round < info.file_rounds; ++round)
-    for (const std::string& file : info.files(bytes, "", files)) {
-      std::error_code error;
-      if (!files.contains(file) && fs::is_regular_file(path.parent_path() / file, error))
-        files.emplace(file, read((path.parent_path() / file).string()));
-    }
-  return raster::parse_model(bytes, format, {}, files);
+  const bench::ModelFile file = bench::read_model_file(path.string());
+  format = file.format;
+  return raster::parse_model(file.bytes, format, {}, file.files);
 }
 
 raster::Image draw_model(raster::Mesh mesh, raster::ModelFormat format, const raster::Rgba8* background) {

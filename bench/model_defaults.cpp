@@ -24,6 +24,7 @@
 
 #include "raster/raster.h"
 #include "raster/scene_checks.h"
+#include "scenes.h"
 #include "timing.h"
 
 namespace {
@@ -50,23 +51,15 @@ std::string read_file(const fs::path& path) {
   return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
-// A model as the CLI reads it: the files it names gathered from its folder, then raster::model_scene.
+// A model as the CLI reads it (bench::read_model_file), then raster::model_scene; false, and said, for a
+// file in no format rasterd reads or one its reader or the plan refuses.
 bool load(const fs::path& path, const std::string& name, std::vector<Model>& out) {
-  const std::optional<raster::ModelFormat> hint = raster::format_of_file_name(path.filename().string());
-  if (!hint) return false;
-  const std::string bytes = read_file(path);
+  if (!raster::format_of_file_name(path.filename().string())) return false;
   try {
-    const raster::ModelFormat format = raster::model_format_of(bytes, hint);
-    const raster::ModelFormatInfo& info = raster::model_format(format);
-    raster::Uploads files;
-    for (int round = 0; round < info.file_rounds; ++round)
-      for (const std::string& file : info.files(bytes, "", files)) {
-        std::error_code error;
-        if (!files.contains(file) && fs::is_regular_file(path.parent_path() / file, error))
-          files.emplace(file, read_file(path.parent_path() / file));
-      }
-    raster::Mesh mesh = raster::checks::model_mesh(bytes, hint, {}, files, "", "", 0, format);
-    Model m{name, raster::model_scene(std::move(mesh), format)};
+    const bench::ModelFile file = bench::read_model_file(path.string());
+    raster::Mesh mesh =
+        raster::checks::model_mesh(file.bytes, file.format, {}, file.files, "", "", 0, file.format);
+    Model m{name, raster::model_scene(std::move(mesh), file.format)};
     m.scene.width = m.scene.height = kSize;
     raster::validate(m.scene);
     raster::plan(m.scene);  // a model the plan refuses is not in the corpus either

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <stdexcept>
 
@@ -10,6 +13,33 @@
 
 namespace bench {
 namespace {
+
+// A UV sphere of radius 1 at the origin: `n` rings and segments, 2 n^2 triangles (the poles' degenerate
+// ones included), in the benchmarks' warm grey.
+raster::Mesh uv_sphere(int n) {
+  raster::Mesh mesh;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double theta = pi * i / n, phi = 2 * pi * j / n;
+      mesh.positions.push_back(
+          {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+    }
+  auto at = [n](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
+      mesh.triangles.push_back({at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
+    }
+  mesh.colors = {{220, 200, 180, 255}};
+  return mesh;
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
 
 raster::Rgba8 random_color(std::mt19937& rng) {
   return {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
@@ -157,21 +187,7 @@ raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path)
   raster::Mesh mesh;
   if (kind == "triangles_1m") {  // issue 42's yardstick for points: a sphere of 999,698 triangles
     s.width = s.height = 1024;
-    constexpr int n = 707;
-    const double pi = std::acos(-1.0);
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j) {
-        const double theta = pi * i / n, phi = 2 * pi * j / n;
-        mesh.positions.push_back(
-            {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
-      }
-    auto at = [](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
-        mesh.triangles.push_back({at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
-      }
-    mesh.colors = {{220, 200, 180, 255}};
+    mesh = uv_sphere(707);
   } else if (kind == "points_1m") {  // the same sphere as 1,000,000 points, evenly spread (a Fibonacci
                                      // lattice), at the default point size
     s.width = s.height = 1024;
@@ -185,21 +201,7 @@ raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path)
     mesh.colors = {{220, 200, 180, 255}};
   } else if (kind == "sphere") {
     s.width = s.height = 1024;
-    constexpr int n = 548;  // rings and segments: 2 n^2 triangles, the poles' degenerate ones included
-    const double pi = std::acos(-1.0);
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j) {
-        const double theta = pi * i / n, phi = 2 * pi * j / n;
-        mesh.positions.push_back(
-            {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
-      }
-    auto at = [](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
-        mesh.triangles.push_back({at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
-      }
-    mesh.colors = {{220, 200, 180, 255}};
+    mesh = uv_sphere(548);
   } else if (kind == "bunny") {
     s.width = s.height = 512;
     const char* env = std::getenv("RASTERD_BUNNY");
@@ -223,6 +225,23 @@ raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path)
   p.kind = raster::PrimitiveKind::mesh;
   s.primitives.push_back(p);
   return s;
+}
+
+ModelFile read_model_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  ModelFile model;
+  model.bytes = read_bytes(path);
+  model.format =
+      raster::model_format_of(model.bytes, raster::format_of_file_name(fs::path(path).filename().string()));
+  const raster::ModelFormatInfo& info = raster::model_format(model.format);
+  const fs::path folder = fs::path(path).parent_path();
+  for (int round = 0; round < info.file_rounds; ++round)  // OBJ: the libraries, then the textures they name
+    for (const std::string& name : info.files(model.bytes, "", model.files)) {
+      std::error_code error;
+      if (!model.files.contains(name) && fs::is_regular_file(folder / name, error))
+        model.files.emplace(name, read_bytes(folder / name));
+    }
+  return model;
 }
 
 }  // namespace bench

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "raster/model.h"
 #include "raster/scene.h"
 
 namespace bench {
@@ -43,5 +44,16 @@ namespace bench {
 /// be read.
 raster::Scene mesh_scene(const std::string& kind,
                          const std::string& bunny_path = "../shared/models/bunny.obj");
+
+/// A model file as the CLI reads it, before its reader runs: its bytes, its format (by its bytes, else its
+/// extension: raster::model_format_of) and the files it names, gathered from its folder (OBJ's libraries
+/// and textures, glTF's buffers and images; as server/main.cpp gathers them). Throws std::runtime_error
+/// when the file cannot be read, raster::SceneError when it is in no format rasterd reads.
+struct ModelFile {
+  std::string bytes;
+  raster::ModelFormat format = raster::ModelFormat::obj;
+  raster::Uploads files;  ///< by file name, as the readers look them up
+};
+ModelFile read_model_file(const std::string& path);
 
 }  // namespace bench

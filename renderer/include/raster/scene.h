@@ -102,7 +102,7 @@ struct Material {
 
 /// The diameter, in pixels, of a model's points when nothing says otherwise. 2.5: the smallest size (in
 /// steps of 0.5 px) at which a 100,000-point scan at 512x512 reads as a surface, with fewer than 1% of its
-/// silhouette's pixels left as holes (bench/micro.cpp's point_size rows measure it).
+/// silhouette's pixels left as holes (bench/core.cpp's point-size table in docs/performance.md measures it).
 inline constexpr float kDefaultPointSize = 2.5f;
 
 /// Triangles, segments and points in model space, drawn through the camera with a depth test.

@@ -126,21 +126,10 @@ void Setup::add_line(LineRecord line) {
 }
 
 void Setup::add_point(Records& part, PointRecord point) const {
-  // The pixels whose square (or, with centre coverage, whose centre) holds a point of the disc's square, in
-  // integers as fast_record's box is.
+  // The pixels whose square (or, with centre coverage, whose centre) holds a point of the disc's square.
   const std::int64_t lo[2] = {point.x - point.radius, point.y - point.radius};
   const std::int64_t hi[2] = {point.x + point.radius, point.y + point.radius};
-  const std::int64_t size[2] = {width, height};
-  int first[2], end[2];
-  for (int d = 0; d < 2; ++d) {
-    const std::int64_t f =
-        centre_samples ? (lo[d] + kSubpixelScale / 2 - 1) >> kSubpixelBits : lo[d] >> kSubpixelBits;
-    const std::int64_t l =
-        centre_samples ? (hi[d] - kSubpixelScale / 2) >> kSubpixelBits : hi[d] >> kSubpixelBits;
-    first[d] = static_cast<int>(std::clamp<std::int64_t>(f, 0, size[d]));
-    end[d] = static_cast<int>(std::clamp<std::int64_t>(l + 1, 0, size[d]));
-  }
-  point.box = {first[0], first[1], end[0], end[1]};
+  point.box = pixel_box(lo, hi);
   if (point.box.empty()) return;
   part.order.push_back({RecordRef::kPointBit | static_cast<std::uint32_t>(part.points.size())});
   part.points.push_back(point);

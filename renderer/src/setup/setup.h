@@ -179,6 +179,9 @@ struct Setup {
   /// cover no sample of the image is not added). Reads only the setup's image and coverage: threads may fill
   /// different parts at once.
   void add_point(Records& part, PointRecord point) const;
+  /// The pixels whose square, or with centre coverage whose centre, holds a point of the range [lo, hi]
+  /// (1/256 px, x then y), clamped to the image: a triangle's box from its vertices, a point's from its disc.
+  Rect pixel_box(const std::int64_t (&lo)[2], const std::int64_t (&hi)[2]) const;
   /// Records of every part.
   std::size_t record_count() const;
 };
@@ -228,13 +231,8 @@ inline bool covers_a_centre(const EdgeFunctions<std::int64_t>& e, Rect box) {
 
 }  // namespace setup_detail
 
-[[gnu::always_inline]] inline bool Setup::fast_record(const FastTriangle& t, TriangleRecord& r,
-                                                      int (&order)[3]) const {
-  std::int64_t x[3] = {t.x[0], t.x[1], t.x[2]}, y[3] = {t.y[0], t.y[1], t.y[2]};
-  // The box in integers (the same pixels as pixel_span / centre_span give for these values): the pixels
-  // whose square, or with centre coverage whose centre, holds a point of the vertices' range.
-  const std::int64_t lo[2] = {std::min({x[0], x[1], x[2]}), std::min({y[0], y[1], y[2]})};
-  const std::int64_t hi[2] = {std::max({x[0], x[1], x[2]}), std::max({y[0], y[1], y[2]})};
+[[gnu::always_inline]] inline Rect Setup::pixel_box(const std::int64_t (&lo)[2],
+                                                    const std::int64_t (&hi)[2]) const {
   const std::int64_t size[2] = {width, height};
   int first[2], end[2];
   for (int d = 0; d < 2; ++d) {
@@ -245,7 +243,17 @@ inline bool covers_a_centre(const EdgeFunctions<std::int64_t>& e, Rect box) {
     first[d] = static_cast<int>(std::clamp<std::int64_t>(f, 0, size[d]));
     end[d] = static_cast<int>(std::clamp<std::int64_t>(l + 1, 0, size[d]));
   }
-  r.box = {first[0], first[1], end[0], end[1]};
+  return {first[0], first[1], end[0], end[1]};
+}
+
+[[gnu::always_inline]] inline bool Setup::fast_record(const FastTriangle& t, TriangleRecord& r,
+                                                      int (&order)[3]) const {
+  std::int64_t x[3] = {t.x[0], t.x[1], t.x[2]}, y[3] = {t.y[0], t.y[1], t.y[2]};
+  // The box in integers (the same pixels as pixel_span / centre_span give for these values): the pixels
+  // whose square, or with centre coverage whose centre, holds a point of the vertices' range.
+  const std::int64_t lo[2] = {std::min({x[0], x[1], x[2]}), std::min({y[0], y[1], y[2]})};
+  const std::int64_t hi[2] = {std::max({x[0], x[1], x[2]}), std::max({y[0], y[1], y[2]})};
+  r.box = pixel_box(lo, hi);
   if (r.box.empty()) return false;
   std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
   if (area == 0) return false;  // degenerate: covers nothing
