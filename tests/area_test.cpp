@@ -92,6 +92,34 @@ TEST(Area, RandomTrianglesAreWithinOneLevelOfTheExactShareAtEveryPixel) {
   EXPECT_GT(exact, cut_pixels * 0.99);  // and nearly all are the rounded exact share itself
 }
 
+TEST(Area, SliversAtEveryOrientationAreWithinOneLevelOfTheExactShare) {
+  // Triangles far thinner than a pixel: along them every cut pixel is crossed by the two long edges, which
+  // take the two-edge closed form; near the tips they meet inside a pixel and are clipped. Some reach a
+  // million pixels beyond the image, where the edges need the wide integers.
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> unit(0, 1);
+  constexpr int kSide = 40;
+  int cut_pixels = 0;
+  for (int n = 0; n < 160; ++n) {
+    const double angle = n * M_PI / 80 + unit(rng) * 0.01, thick = std::pow(10.0, -2 + unit(rng) * 2),
+                 length = n % 8 == 7 ? 2e6 : 4 + unit(rng) * 40;
+    const double dx = std::cos(angle), dy = std::sin(angle);
+    const Point2 a{on_grid(4 + unit(rng) * 32 - (n % 8 == 7 ? 1e6 * dx : 0)),
+                   on_grid(4 + unit(rng) * 32 - (n % 8 == 7 ? 1e6 * dy : 0))};
+    const Point2 b{on_grid(a.x + length * dx), on_grid(a.y + length * dy)};
+    const Point2 c{on_grid(b.x - thick * dy), on_grid(b.y + thick * dx)};
+    const raster::Image img = render_area(SceneBuilder(kSide, kSide, kBlack).triangle(a, b, c, kWhite).scene);
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x) {
+        const double want = 255 * share({a, b, c}, x, y);
+        ASSERT_LE(std::abs(test::pixel(img, x, y).r - want), 1.0)
+            << "sliver " << n << " pixel " << x << "," << y;
+        cut_pixels += want > 0 && want < 255;
+      }
+  }
+  EXPECT_GT(cut_pixels, 2000);  // the test reached many cut pixels
+}
+
 TEST(Area, HugeTrianglesTakeTheExactWidePathToTheSameShares) {
   // Vertices far outside the fast range (1e12 px): edges are 384-bit integers; the shares stay exact.
   std::mt19937 rng(15);

@@ -232,6 +232,28 @@ inline double clipped_share(int n, const double* t, const double* A, const doubl
   return std::fabs(twice) / 2;
 }
 
+/// The share of the unit square inside two half-planes whose lines both cross it (each as in
+/// half_plane_share), in closed form unless the lines meet inside the square. Lines that do not meet there
+/// cut it into three strips, and the half-planes either face each other (their intersection is the middle
+/// strip: a0 + a1 - 1 of the square) or nest (the smaller one: min(a0, a1)). That is every pixel along a
+/// sliver or a line's diagonal but the few at a vertex, which are clipped.
+inline double two_edge_share(const double* t, const double* A, const double* B) {
+  // The lines meet at (nx, ny) / det from the pixel centre (Cramer's rule), inside the square when both
+  // coordinates are within 1/2: compared without dividing, so parallel lines (det 0) never meet.
+  const double det = A[0] * B[1] - A[1] * B[0];
+  const double nx = t[1] * B[0] - t[0] * B[1], ny = A[1] * t[0] - A[0] * t[1];
+  if (std::fabs(nx) <= 0.5 * std::fabs(det) && std::fabs(ny) <= 0.5 * std::fabs(det))
+    return clipped_share(2, t, A, B);
+  // Nested when the corner deepest outside one line is outside the other too.
+  auto deepest_outside = [&](int k, int other) {
+    const double x = A[k] > 0 ? -0.5 : 0.5, y = B[k] > 0 ? -0.5 : 0.5;
+    return t[other] + A[other] * x + B[other] * y < 0;
+  };
+  const double a0 = half_plane_share(t[0], A[0], B[0]), a1 = half_plane_share(t[1], A[1], B[1]);
+  if (deepest_outside(0, 1) || deepest_outside(1, 0)) return std::min(a0, a1);
+  return std::max(0.0, a0 + a1 - 1);
+}
+
 /// The top-left bias folded into c (1 for edges that are neither top nor left, see setup.cpp): area
 /// coverage measures the triangle itself, so it adds the bias back.
 template <typename C>
@@ -385,8 +407,9 @@ void cover(const EdgeFunctions<T>& edges, Rect clip, SamplePoint sample, Lanes l
 /// t_k - h_k >= 0 for every k and touches the triangle's interior only when t_k + h_k > 0 for every k:
 /// the walker's accept and reject offsets, and two masks from the same lanes as the aliased one. Whole
 /// pixels go to shade(block) exactly as aliased coverage would send them (and rectangles to shade.rect);
-/// cut pixels to shade.area(block, cover) with their exact share: one edge by a closed form, several by
-/// clipping the square. The values shading reads are the aliased ones (top-left bias included).
+/// cut pixels to shade.area(block, cover) with their exact share: one edge, or two that do not meet inside
+/// the pixel, by a closed form; otherwise by clipping the square. The values shading reads are the aliased
+/// ones (top-left bias included).
 template <typename T, typename Shade>
 void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
@@ -423,8 +446,9 @@ void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter
                     if (value >= 0.5 * (std::fabs(block.dx[k]) + std::fabs(block.dy[k]))) continue;  // inside
                     t[n] = value, A[n] = block.dx[k], B[n] = block.dy[k], ++n;
                   }
-                  const double share =
-                      n == 1 ? half_plane_share(t[0], A[0], B[0]) : clipped_share(n, t, A, B);
+                  const double share = n == 1   ? half_plane_share(t[0], A[0], B[0])
+                                       : n == 2 ? two_edge_share(t, A, B)
+                                                : clipped_share(n, t, A, B);
                   if (!(share > 0)) continue;  // touches only where two edges meet outside the square
                   cut.share[bit] = static_cast<float>(std::min(share, 1.0));
                   cut.partial |= std::uint64_t{1} << bit;
