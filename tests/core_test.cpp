@@ -125,8 +125,8 @@ raster::Scene large_smooth_scene(unsigned seed, bool transparent) {
   return s.scene;
 }
 
-// Each instruction set the machine has gives the bytes of the SSE2 kernels, aliased, multisampled and with
-// area coverage.
+// Each instruction set the machine has gives the bytes of the SSE2 kernels, aliased, multisampled (4 and 16)
+// and with area coverage.
 TEST(Core, EverySimdTargetGivesTheBytesOfSse2) {
   if (raster::best_simd() == raster::Simd::sse2) GTEST_SKIP() << "no AVX2 on this machine";
   auto render_at = [](const raster::Scene& scene, raster::Simd simd, int tile) {
@@ -138,7 +138,7 @@ TEST(Core, EverySimdTargetGivesTheBytesOfSse2) {
     return raster::render(scene, plan);
   };
   for (unsigned seed = 1; seed <= 4; ++seed)
-    for (int aa : {1, 4, 0}) {  // 0: area
+    for (int aa : {1, 4, 16, 0}) {  // 0: area; 4 and 16: the fused sample masks of each width
       std::vector<raster::Scene> scenes = {mixed_scene(seed, 200), large_smooth_scene(seed, false),
                                            large_smooth_scene(seed, true)};
       for (raster::Scene& scene : scenes) {

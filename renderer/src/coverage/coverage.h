@@ -149,6 +149,37 @@ __attribute__((target("avx2"))) inline std::uint64_t edge_mask_avx2(std::int32_t
 }
 #endif
 
+#if defined(__x86_64__)
+/// Multisampling: every sample's mask of a block in one pass, N samples. Each edge of `crossing` has its
+/// row of values stepped once and compared at each sample's offset (`offset[k][s]`: E_k's change from the
+/// pixel centre to sample s), where per-sample masks would set the edge up and step it once per sample.
+/// Sample s's pixels of rows [r0, r1) go to masks[s]. Every value e + i dx + r dy + offset must fit int32.
+template <int N>
+__attribute__((target("avx2"))) inline void sample_masks_avx2(const std::int32_t (&e)[3],
+                                                              const std::int32_t (&dx)[3],
+                                                              const std::int32_t (&dy)[3], unsigned crossing,
+                                                              const std::int32_t (&offset)[3][16], int r0,
+                                                              int r1, std::uint64_t* masks) {
+  std::uint64_t out[N];
+  const std::uint64_t rows = row_mask(r0, r1);
+  for (int s = 0; s < N; ++s) out[s] = rows;
+  for (int k = 0; k < 3; ++k) {
+    if (!(crossing & (1u << k))) continue;
+    __m256i row = _mm256_add_epi32(
+        _mm256_set1_epi32(e[k] + r0 * dy[k]),
+        _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(dx[k])));
+    const __m256i down = _mm256_set1_epi32(dy[k]);
+    for (int r = r0; r < r1; ++r, row = _mm256_add_epi32(row, down))
+      for (int s = 0; s < N; ++s) {
+        const __m256i at = _mm256_add_epi32(row, _mm256_set1_epi32(offset[k][s]));
+        const auto negative = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(at)));
+        out[s] &= ~(static_cast<std::uint64_t>(negative) << (8 * r));
+      }
+  }
+  for (int s = 0; s < N; ++s) masks[s] = out[s];
+}
+#endif
+
 /// A partial block's mask from its crossing edges (bit k of `crossing`), in int32 lanes where the values
 /// fit (an edge crossing a block has |e| <= 7 (|dx| + |dy|) there), else one pixel at a time in int64.
 inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::int64_t (&step_x)[3],
@@ -481,9 +512,57 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
     }
   }
   std::uint64_t masks[16];
+#if defined(__x86_64__)
+  // AVX2 masks every sample in one pass (sample_masks_avx2) where the values fit int32: an edge crossing a
+  // block has |E| below its reach over the block there, and the offsets add at most `spread`.
+  constexpr std::int64_t kLimit = std::int64_t{1} << 30;
+  std::int32_t offset32[3][16] = {}, dx32[3] = {}, dy32[3] = {};
+  std::int64_t fits_below[3] = {};  // |E| at a block's first pixel below which its samples' values fit
+  bool fused = false;
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    fused = lanes == Lanes::avx2 && (count == 4 || count == 8 || count == 16);
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t reach = 8 * (std::abs(g.step_x[k]) + std::abs(g.step_y[k])),
+                         spread = std::max(std::abs(least[k]), std::abs(most[k]));
+      fits_below[k] = kLimit - reach - spread;
+      fused = fused && fits_below[k] > 0;
+      if (!fused) break;
+      dx32[k] = static_cast<std::int32_t>(g.step_x[k]), dy32[k] = static_cast<std::int32_t>(g.step_y[k]);
+      for (int s = 0; s < count; ++s) offset32[k][s] = static_cast<std::int32_t>(offset[s][k]);
+    }
+  }
+#endif
   walk_blocks(g, edges.area, clip, least, most, meter, shade,
               [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
                 std::uint64_t any = 0;
+#if defined(__x86_64__)
+                if constexpr (std::is_same_v<T, std::int64_t>) {
+                  unsigned crossing = 0;
+                  bool fits = fused;
+                  for (int k = 0; k < 3; ++k)
+                    if (e[k] + least[k] + g.low[k] < 0) {
+                      crossing |= 1u << k;
+                      fits = fits && std::abs(e[k]) < fits_below[k];
+                    }
+                  if (fits) {
+                    const std::int32_t e32[3] = {static_cast<std::int32_t>(crossing & 1 ? e[0] : 0),
+                                                 static_cast<std::int32_t>(crossing & 2 ? e[1] : 0),
+                                                 static_cast<std::int32_t>(crossing & 4 ? e[2] : 0)};
+                    if (count == 4)
+                      sample_masks_avx2<4>(e32, dx32, dy32, crossing, offset32, r0, r1, masks);
+                    else if (count == 8)
+                      sample_masks_avx2<8>(e32, dx32, dy32, crossing, offset32, r0, r1, masks);
+                    else  // 16 (`fused` holds only for the three)
+                      sample_masks_avx2<16>(e32, dx32, dy32, crossing, offset32, r0, r1, masks);
+                    for (int s = 0; s < count; ++s) any |= masks[s] &= clipped;
+                    if (any) {
+                      block.mask = any;
+                      shade.samples(block, masks);
+                    }
+                    return;
+                  }
+                }
+#endif
                 for (int s = 0; s < count; ++s) {
                   const T es[3] = {e[0] + offset[s][0], e[1] + offset[s][1], e[2] + offset[s][2]};
                   masks[s] = clipped & inside_mask(es, g, lanes, r0, r1);
