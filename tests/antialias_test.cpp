@@ -400,6 +400,33 @@ TEST(Multisample, MeshesAreShadedOncePerPixelPerVisibleTriangle) {
   EXPECT_GT(stats.shaded_pixels, 500);
 }
 
+// A multisampled pixel whose centre is outside a triangle is shaded at the centroid of its covered samples,
+// inside the triangle, not at the centre, where the colours would extrapolate. The triangle's red runs from
+// 20 at its base to 235 at its apex over a few pixels, and red + green is 255 everywhere, so a resolved
+// pixel's share of red, R / (R + G), is its shading point's red whatever the share of samples covered: within
+// [20, 235] up to the rounding of R and G. Shaded at the centre, pixels below the base would come out near 0.
+TEST(Multisample, MeshEdgePixelsAreShadedInsideTheTriangle) {
+  for (int samples : {4, 8, 16}) {
+    const raster::Scene scene = raster::parse_scene(R"({"width": 64, "height": 64, "antialias": )" +
+                                                    std::to_string(samples) + R"(, "primitives": [
+      {"type": "mesh", "positions": [[-1, -0.1, 0], [1, -0.25, 0], [0.1, 0.2, 0]], "indices": [[0, 1, 2]],
+       "colors": ["#14eb00", "#14eb00", "#eb1400"], "shading": "unlit"}]})");
+    const raster::Image img = test::render(scene);
+    int edge = 0;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const raster::Rgba8 p = test::pixel(img, x, y);
+        const double sum = p.r + p.g;
+        if (sum < 16 || sum > 250) continue;  // untouched, or every sample covered
+        ++edge;
+        const double red = 255 * p.r / sum, slack = 255 / sum + 1;
+        ASSERT_GE(red, 20 - slack) << samples << " samples, pixel " << x << "," << y;
+        ASSERT_LE(red, 235 + slack) << samples << " samples, pixel " << x << "," << y;
+      }
+    EXPECT_GT(edge, 60) << samples << " samples";
+  }
+}
+
 }  // namespace
 
 namespace {

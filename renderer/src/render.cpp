@@ -165,7 +165,8 @@ void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::S
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::SamplePoint* pattern =
       f.plan.coverage == Coverage::samples ? detail::sample_pattern(f.plan.samples).data() : nullptr;
-  const detail::Surface surface = detail::open_tile<C>(storage, f.plan, pattern, rect, f.image);
+  detail::Surface surface = detail::open_tile<C>(storage, f.plan, pattern, rect, f.image);
+  if (pattern) surface.centroids = detail::centroid_offsets(f.plan.samples);
   draw_bin<C>(f, tile, surface, meter);
   if (meter.stopped()) return;
   if (f.plan.coverage == Coverage::samples) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -28,6 +29,12 @@ namespace raster::detail {
 /// The standard (Direct3D) sample pattern for each count of kSampleCounts (scene.h), on the 1/256 px grid.
 /// Throws std::logic_error for any other count.
 const std::vector<SamplePoint>& sample_pattern(int samples);
+
+/// For 4 and 8 samples a pixel, the centroid of each set of a pixel's samples (entry m: the samples of m's
+/// set bits) as {x, y} pixels from the pixel centre; nullptr for other counts (16 would take 65,536 entries).
+/// Multisampling shades a pixel whose centre is not covered at the centroid of its covered samples: looked
+/// up here once per pattern rather than summed and divided per pixel.
+const std::array<double, 2>* centroid_offsets(int samples);
 
 /// One block of coverage. Bit (8 r + i) of `mask` is set when pixel (x0 + i, y0 + r) is covered. The edge
 /// values E_k at that pixel's sample point are e[k] + i dx[k] + r dy[k]: exact integers for int64 edges

@@ -3,6 +3,7 @@
 // coverage and shading addresses pixels, depth and samples only through it.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -29,8 +30,11 @@ struct Surface {
   // its bit in `expanded` says when they differ, and then `samples` holds one colour per sample.
   int sample_count = 1;
   const SamplePoint* pattern = nullptr;  ///< the sample positions, sample_count of them
-  std::size_t plane = 0;                 ///< pixels per sample plane (width x the tile's rows in blocks)
-  std::uint8_t* samples = nullptr;       ///< sample_count planes of colour, each laid out like `color`
+  /// The centroid of each set of samples (bit s: sample s), {x, y} pixels from the pixel centre, for 4 and
+  /// 8 samples (coverage.h's centroid_offsets); nullptr otherwise.
+  const std::array<double, 2>* centroids = nullptr;
+  std::size_t plane = 0;            ///< pixels per sample plane (width x the tile's rows in blocks)
+  std::uint8_t* samples = nullptr;  ///< sample_count planes of colour, each laid out like `color`
   /// One word per 8x8 block, row-major, bit 8 r + i per pixel: multisampling, the pixels whose samples
   /// differ; area coverage, the pixels a union primitive has accumulated coverage in.
   std::uint64_t* expanded = nullptr;

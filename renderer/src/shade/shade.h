@@ -135,8 +135,7 @@ class TriangleShader {
     std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
     for (std::uint64_t m = b.mask & ~all; m; m &= m - 1) {
       const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
-      unsigned covered = 0;
-      for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
+      const unsigned covered = covered_samples(masks, bit);
       const Rgba8 c = color_at(b, i, r, covered);
       const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
       if (!((expanded >> bit) & 1)) expand(index), expanded |= std::uint64_t{1} << bit;
@@ -260,7 +259,7 @@ class TriangleShader {
         // covered, so the colours are those the other path gives); alpha 0 drops the pixel from each sample.
         unsigned visible = flat_.a ? 0xffu : 0u;
         if (mode_.smooth) {
-          shade_row(b, masks, r, l0, any, any, rgba);
+          shade_row(masks, r, l0, any, any, rgba);
           visible = lane_bits(rgba[3] >= 1.0f);  // byte_lanes: the alpha byte is 0 below 1
         }
         if (!(any = keep_visible(centre, at, visible, pass))) continue;
@@ -273,7 +272,7 @@ class TriangleShader {
       std::uint8_t* p = surface_.color + at * C;
       std::uint64_t r8 = 0, g8 = 0, b8 = 0, a8 = 0;  // the pixels' colours, byte i for lane i
       if (mode_.smooth) {
-        if constexpr (!kCutOuts) shade_row(b, masks, r, l0, any, any & ~whole, rgba);
+        if constexpr (!kCutOuts) shade_row(masks, r, l0, any, any & ~whole, rgba);
         if (whole) write(p, whole, rgba);
         r8 = lane_bytes(rgba[0]), a8 = lane_bytes(rgba[3]);
         g8 = kColours == 3 ? lane_bytes(rgba[1]) : r8, b8 = kColours == 3 ? lane_bytes(rgba[2]) : r8;
@@ -310,12 +309,11 @@ class TriangleShader {
 
   // The colours (byte_lanes values) of the lanes `lanes` of block row r, each shaded at its pixel's centre,
   // or for those of `moved` at the centroid of its covered samples where the centre is not covered.
-  [[gnu::always_inline]] inline void shade_row(const Block& b, const std::uint64_t* masks, int r,
-                                               const float (&l0)[3], unsigned lanes, unsigned moved,
-                                               FloatLanes (&rgba)[4]) const {
+  [[gnu::always_inline]] inline void shade_row(const std::uint64_t* masks, int r, const float (&l0)[3],
+                                               unsigned lanes, unsigned moved, FloatLanes (&rgba)[4]) const {
     FloatLanes l[3];
     for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
-    for (unsigned m = moved; m; m &= m - 1) centroid(b, std::countr_zero(m), r, masks, l);
+    if (moved) centroids(r, masks, moved, l);
     kernel_.color.template shade<kColours>(l, lanes, rgba);
     for (FloatLanes& v : rgba) byte_lanes(v);
   }
@@ -384,32 +382,69 @@ class TriangleShader {
     depth = __builtin_shufflevector(left, right, 0, 1, 2, 3, 4, 5, 6, 7);
   }
 
-  // Multisampling moves lane i's shading point from the pixel centre to the centroid of its covered
-  // samples when the triangle does not cover the centre (see shading_point).
-  void centroid(const Block& b, int i, int r, const std::uint64_t* masks, FloatLanes (&l)[3]) const {
-    const int n = surface_.sample_count, bit = 8 * r + i;
-    unsigned covered = 0;
-    for (int s = 0; s < n; ++s) covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
-    double moved[3] = {0, 0, 0};
-    shading_point(b, i, r, covered, moved);
-    for (int k = 0; k < 3; ++k) l[k][i] += static_cast<float>(moved[k]);
+  // 3D multisampling moves the shading point of the lanes of `moved` whose pixel centre is outside the
+  // triangle (and not every sample covered) to the centroid of their covered samples, for the whole row in
+  // lanes: the centre is outside where a barycentric of `l` (the centre's, on entry) is negative; the
+  // centroid is in floats (sums of sample offsets, one division), times the barycentrics' float steps per
+  // pixel (those the lanes step by), added to the centre's values. (The 2D path decides the same on the
+  // exact edge values: shading_offset.)
+  [[gnu::always_inline]] inline void centroids(int r, const std::uint64_t* masks, unsigned moved,
+                                               FloatLanes (&l)[3]) const {
+    const IntLanes outside = (l[0] < 0.0f) | (l[1] < 0.0f) | (l[2] < 0.0f);
+    if (!(moved &= lane_bits(outside))) return;
+    const int n = surface_.sample_count;
+    FloatLanes sx = {}, sy = {}, count = {};  // covered samples' offsets from the centre (1/256 px), number
+    for (int s = 0; s < n; ++s) {
+      const IntLanes in = (kLaneBit & static_cast<std::int32_t>((masks[s] >> (8 * r)) & 0xff)) != 0;
+      const SamplePoint p = surface_.pattern[s];
+      sx += in ? FloatLanes{} + static_cast<float>(p.x - 128) : FloatLanes{};
+      sy += in ? FloatLanes{} + static_cast<float>(p.y - 128) : FloatLanes{};
+      count += in ? FloatLanes{} + 1.0f : FloatLanes{};
+    }
+    const IntLanes shift =
+        ((kLaneBit & static_cast<std::int32_t>(moved)) != 0) & (count < static_cast<float>(n));
+    const FloatLanes scale = 256.0f * (count > 0.0f ? count : FloatLanes{} + 1.0f);
+    const FloatLanes cx = shift ? sx / scale : FloatLanes{}, cy = shift ? sy / scale : FloatLanes{};
+    for (int k = 0; k < 3; ++k) l[k] += cx * l_columns_[k][1] + cy * dl_dy_[k];
   }
 
-  // Barycentric weights where a pixel is shaded: its centre when the triangle covers the centre (or every
-  // sample), else the centroid of its covered samples. `l` holds the centre's on entry.
-  void shading_point(const Block& b, int i, int r, unsigned covered, double (&l)[3]) const {
+  // The samples of pixel `bit` of a block that the triangle covers: bit s for sample s.
+  [[gnu::always_inline]] inline unsigned covered_samples(const std::uint64_t* masks, int bit) const {
+    unsigned covered = 0;
+    for (int s = 0; s < surface_.sample_count; ++s)
+      covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
+    return covered;
+  }
+
+  // Where a pixel whose samples `covered` are covered is shaded: false for its centre, when the triangle
+  // covers the centre (or every sample); else true, with the centroid of the covered samples as (x, y)
+  // pixels from the centre.
+  [[gnu::always_inline]] inline bool shading_offset(const Block& b, int i, int r, unsigned covered, double& x,
+                                                    double& y) const {
     const unsigned all = (1u << surface_.sample_count) - 1;
     if (covered == all ||
         (!(b.e[0] + i * b.dx[0] + r * b.dy[0] < 0) && !(b.e[1] + i * b.dx[1] + r * b.dy[1] < 0) &&
          !(b.e[2] + i * b.dx[2] + r * b.dy[2] < 0)))
-      return;
-    double cx = 0, cy = 0;
+      return false;
+    if (surface_.centroids) {
+      x = surface_.centroids[covered][0], y = surface_.centroids[covered][1];
+      return true;
+    }
+    x = 0, y = 0;
     for (unsigned k = covered; k; k &= k - 1) {
       const SamplePoint p = surface_.pattern[std::countr_zero(k)];
-      cx += p.x - 128, cy += p.y - 128;
+      x += p.x - 128, y += p.y - 128;
     }
     const double count = std::popcount(covered) * 256.0;
-    cx /= count, cy /= count;  // pixels from the centre
+    x /= count, y /= count;
+    return true;
+  }
+
+  // Barycentric weights where a pixel is shaded (see shading_offset), in doubles: the 2D path's. `l` holds
+  // the centre's on entry.
+  void shading_point(const Block& b, int i, int r, unsigned covered, double (&l)[3]) const {
+    double cx, cy;
+    if (!shading_offset(b, i, r, covered, cx, cy)) return;
     for (int k = 0; k < 3; ++k) l[k] += (cx * b.dx[k] + cy * b.dy[k]) / b.area;
   }
 
