@@ -160,30 +160,33 @@ __attribute__((target("avx2"))) inline std::uint64_t edge_mask_avx2(std::int32_t
 /// Multisampling: every sample's mask of a block in one pass, N samples. Each edge of `crossing` has its
 /// row of values stepped once and compared at each sample's offset (`offset[k][s]`: E_k's change from the
 /// pixel centre to sample s), where per-sample masks would set the edge up and step it once per sample.
-/// Sample s's pixels of rows [r0, r1) go to masks[s]. Every value e + i dx + r dy + offset must fit int32.
+/// Sample s's pixels of rows [r0, r1) go to masks[s], and the pixels whose centre is covered to masks[N].
+/// Every value e + i dx + r dy + offset must fit int32.
 template <int N>
 __attribute__((target("avx2"))) inline void sample_masks_avx2(const std::int32_t (&e)[3],
                                                               const std::int32_t (&dx)[3],
                                                               const std::int32_t (&dy)[3], unsigned crossing,
                                                               const std::int32_t (&offset)[3][16], int r0,
                                                               int r1, std::uint64_t* masks) {
-  std::uint64_t out[N];
+  std::uint64_t out[N + 1];
   const std::uint64_t rows = row_mask(r0, r1);
-  for (int s = 0; s < N; ++s) out[s] = rows;
+  for (int s = 0; s <= N; ++s) out[s] = rows;
   for (int k = 0; k < 3; ++k) {
     if (!(crossing & (1u << k))) continue;
     __m256i row = _mm256_add_epi32(
         _mm256_set1_epi32(e[k] + r0 * dy[k]),
         _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(dx[k])));
     const __m256i down = _mm256_set1_epi32(dy[k]);
-    for (int r = r0; r < r1; ++r, row = _mm256_add_epi32(row, down))
+    for (int r = r0; r < r1; ++r, row = _mm256_add_epi32(row, down)) {
       for (int s = 0; s < N; ++s) {
         const __m256i at = _mm256_add_epi32(row, _mm256_set1_epi32(offset[k][s]));
         const auto negative = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(at)));
         out[s] &= ~(static_cast<std::uint64_t>(negative) << (8 * r));
       }
+      out[N] &= ~(static_cast<std::uint64_t>(_mm256_movemask_ps(_mm256_castsi256_ps(row))) << (8 * r));
+    }
   }
-  for (int s = 0; s < N; ++s) masks[s] = out[s];
+  for (int s = 0; s <= N; ++s) masks[s] = out[s];
 }
 #endif
 
@@ -501,8 +504,8 @@ void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter
 /// Multisampled coverage of `edges` over the pixels of `clip`: per block, a mask for each of the `count`
 /// sample positions of `pattern`. Blocks whose every sample is inside go to shade(block) (all samples
 /// covered) and rectangles to shade.rect; others to shade.samples(block, masks), block.mask being the pixels
-/// with any sample covered. The values in a Block are at the pixel centres (where shading is evaluated),
-/// whatever the pattern.
+/// with any sample covered and masks[count] those whose centre is covered. The values in a Block are at the
+/// pixel centres (where shading is evaluated), whatever the pattern.
 template <typename T, typename Shade>
 void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* pattern, int count,
                    Lanes lanes, StopMeter& meter, Shade&& shade) {
@@ -518,7 +521,7 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
       most[k] = s == 0 ? offset[s][k] : std::max(most[k], offset[s][k]);
     }
   }
-  std::uint64_t masks[16];
+  std::uint64_t masks[17];  // each sample's, then the pixel centres' (which shading's centroid asks for)
 #if defined(__x86_64__)
   // AVX2 masks every sample in one pass (sample_masks_avx2) where the values fit int32: an edge crossing a
   // block has |E| below its reach over the block there, and the offsets add at most `spread`.
@@ -547,7 +550,7 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
                   unsigned crossing = 0;
                   bool fits = fused;
                   for (int k = 0; k < 3; ++k)
-                    if (e[k] + least[k] + g.low[k] < 0) {
+                    if (e[k] + std::min(least[k], T(0)) + g.low[k] < 0) {  // some sample or centre
                       crossing |= 1u << k;
                       fits = fits && std::abs(e[k]) < fits_below[k];
                     }
@@ -562,6 +565,7 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
                     else  // 16 (`fused` holds only for the three)
                       sample_masks_avx2<16>(e32, dx32, dy32, crossing, offset32, r0, r1, masks);
                     for (int s = 0; s < count; ++s) any |= masks[s] &= clipped;
+                    masks[count] &= clipped;
                     if (any) {
                       block.mask = any;
                       shade.samples(block, masks);
@@ -575,6 +579,7 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
                   masks[s] = clipped & inside_mask(es, g, lanes, r0, r1);
                   any |= masks[s];
                 }
+                if (any) masks[count] = clipped & inside_mask(e, g, lanes, r0, r1);
                 if (any) {
                   block.mask = any;
                   shade.samples(block, masks);

@@ -119,7 +119,8 @@ class TriangleShader {
     shade_aliased(b);
   }
 
-  /// Multisampling: `masks[s]` are the pixels whose sample s is covered, `b.mask` their union. Each pixel
+  /// Multisampling: `masks[s]` are the pixels whose sample s is covered, `b.mask` their union, and
+  /// masks[sample_count] the pixels whose centre is covered. Each pixel
   /// is shaded once (at its centre, or at the centroid of its covered samples when the centre is outside)
   /// and the colour goes to the covered samples; whole pixels take the aliased path.
   void samples(const Block& b, const std::uint64_t* masks) {
@@ -182,8 +183,8 @@ class TriangleShader {
   // again; blending keeps them apart, each sample blended.
   void whole(const Block& b) {
     if (kind_ == Kind::perspective) {
-      std::uint64_t masks[16];
-      std::fill_n(masks, surface_.sample_count, b.mask);
+      std::uint64_t masks[17];  // every sample and every centre covered
+      std::fill_n(masks, surface_.sample_count + 1, b.mask);
       return depth_samples(b, masks);
     }
     std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
@@ -259,7 +260,7 @@ class TriangleShader {
         // covered, so the colours are those the other path gives); alpha 0 drops the pixel from each sample.
         unsigned visible = flat_.a ? 0xffu : 0u;
         if (mode_.smooth) {
-          shade_row(masks, r, l0, any, any, rgba);
+          shade_row(b, masks, r, l0, any, any, rgba);
           visible = lane_bits(rgba[3] >= 1.0f);  // byte_lanes: the alpha byte is 0 below 1
         }
         if (!(any = keep_visible(centre, at, visible, pass))) continue;
@@ -272,7 +273,7 @@ class TriangleShader {
       std::uint8_t* p = surface_.color + at * C;
       std::uint64_t r8 = 0, g8 = 0, b8 = 0, a8 = 0;  // the pixels' colours, byte i for lane i
       if (mode_.smooth) {
-        if constexpr (!kCutOuts) shade_row(masks, r, l0, any, any & ~whole, rgba);
+        if constexpr (!kCutOuts) shade_row(b, masks, r, l0, any, any & ~whole, rgba);
         if (whole) write(p, whole, rgba);
         r8 = lane_bytes(rgba[0]), a8 = lane_bytes(rgba[3]);
         g8 = kColours == 3 ? lane_bytes(rgba[1]) : r8, b8 = kColours == 3 ? lane_bytes(rgba[2]) : r8;
@@ -309,11 +310,12 @@ class TriangleShader {
 
   // The colours (byte_lanes values) of the lanes `lanes` of block row r, each shaded at its pixel's centre,
   // or for those of `moved` at the centroid of its covered samples where the centre is not covered.
-  [[gnu::always_inline]] inline void shade_row(const std::uint64_t* masks, int r, const float (&l0)[3],
-                                               unsigned lanes, unsigned moved, FloatLanes (&rgba)[4]) const {
+  [[gnu::always_inline]] inline void shade_row(const Block& b, const std::uint64_t* masks, int r,
+                                               const float (&l0)[3], unsigned lanes, unsigned moved,
+                                               FloatLanes (&rgba)[4]) const {
     FloatLanes l[3];
     for (int k = 0; k < 3; ++k) l[k] = (l0[k] + static_cast<float>(r) * dl_dy_[k]) + l_columns_[k];
-    if (moved) centroids(r, masks, moved, l);
+    if (moved) centroids(b, r, masks, moved, l);
     kernel_.color.template shade<kColours>(l, lanes, rgba);
     for (FloatLanes& v : rgba) byte_lanes(v);
   }
@@ -382,30 +384,24 @@ class TriangleShader {
     depth = __builtin_shufflevector(left, right, 0, 1, 2, 3, 4, 5, 6, 7);
   }
 
-  // 3D multisampling moves the shading point of the lanes of `moved` whose pixel centre is outside the
-  // triangle (and not every sample covered) to the centroid of their covered samples, for the whole row in
-  // lanes: the centre is outside where a barycentric of `l` (the centre's, on entry) is negative; the
-  // centroid is in floats (sums of sample offsets, one division), times the barycentrics' float steps per
-  // pixel (those the lanes step by), added to the centre's values. (The 2D path decides the same on the
-  // exact edge values: shading_offset.)
-  [[gnu::always_inline]] inline void centroids(int r, const std::uint64_t* masks, unsigned moved,
-                                               FloatLanes (&l)[3]) const {
-    const IntLanes outside = (l[0] < 0.0f) | (l[1] < 0.0f) | (l[2] < 0.0f);
-    if (!(moved &= lane_bits(outside))) return;
+  // 3D multisampling moves the shading point of the lanes of `moved` whose pixel centre the triangle does
+  // not cover (masks[n], the centres' mask) to the centroid of their covered samples, to the bits
+  // shading_point gives: the offsets from the pattern's table, the three divisions in one vector.
+  [[gnu::always_inline]] inline void centroids(const Block& b, int r, const std::uint64_t* masks,
+                                               unsigned moved, FloatLanes (&l)[3]) const {
     const int n = surface_.sample_count;
-    FloatLanes sx = {}, sy = {}, count = {};  // covered samples' offsets from the centre (1/256 px), number
-    for (int s = 0; s < n; ++s) {
-      const IntLanes in = (kLaneBit & static_cast<std::int32_t>((masks[s] >> (8 * r)) & 0xff)) != 0;
-      const SamplePoint p = surface_.pattern[s];
-      sx += in ? FloatLanes{} + static_cast<float>(p.x - 128) : FloatLanes{};
-      sy += in ? FloatLanes{} + static_cast<float>(p.y - 128) : FloatLanes{};
-      count += in ? FloatLanes{} + 1.0f : FloatLanes{};
+    const unsigned all = (1u << n) - 1;
+    for (unsigned m = moved & ~static_cast<unsigned>(masks[n] >> (8 * r)) & 0xffu; m; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      const unsigned covered = covered_samples(masks, 8 * r + i);
+      if (covered == all) continue;
+      double cx, cy;
+      centroid_offset(covered, cx, cy);
+      const DoubleHalf change = DoubleHalf{cx * b.dx[0] + cy * b.dy[0], cx * b.dx[1] + cy * b.dy[1],
+                                           cx * b.dx[2] + cy * b.dy[2], 0} /
+                                b.area;
+      for (int k = 0; k < 3; ++k) l[k][i] += static_cast<float>(change[k]);
     }
-    const IntLanes shift =
-        ((kLaneBit & static_cast<std::int32_t>(moved)) != 0) & (count < static_cast<float>(n));
-    const FloatLanes scale = 256.0f * (count > 0.0f ? count : FloatLanes{} + 1.0f);
-    const FloatLanes cx = shift ? sx / scale : FloatLanes{}, cy = shift ? sy / scale : FloatLanes{};
-    for (int k = 0; k < 3; ++k) l[k] += cx * l_columns_[k][1] + cy * dl_dy_[k];
   }
 
   // The samples of pixel `bit` of a block that the triangle covers: bit s for sample s.
@@ -414,6 +410,21 @@ class TriangleShader {
     for (int s = 0; s < surface_.sample_count; ++s)
       covered |= static_cast<unsigned>((masks[s] >> bit) & 1) << s;
     return covered;
+  }
+
+  // The centroid of the samples `covered` as (x, y) pixels from the pixel centre.
+  [[gnu::always_inline]] inline void centroid_offset(unsigned covered, double& x, double& y) const {
+    if (surface_.centroids) {
+      x = surface_.centroids[covered][0], y = surface_.centroids[covered][1];
+      return;
+    }
+    x = 0, y = 0;
+    for (unsigned k = covered; k; k &= k - 1) {
+      const SamplePoint p = surface_.pattern[std::countr_zero(k)];
+      x += p.x - 128, y += p.y - 128;
+    }
+    const double count = std::popcount(covered) * 256.0;
+    x /= count, y /= count;
   }
 
   // Where a pixel whose samples `covered` are covered is shaded: false for its centre, when the triangle
@@ -426,17 +437,7 @@ class TriangleShader {
         (!(b.e[0] + i * b.dx[0] + r * b.dy[0] < 0) && !(b.e[1] + i * b.dx[1] + r * b.dy[1] < 0) &&
          !(b.e[2] + i * b.dx[2] + r * b.dy[2] < 0)))
       return false;
-    if (surface_.centroids) {
-      x = surface_.centroids[covered][0], y = surface_.centroids[covered][1];
-      return true;
-    }
-    x = 0, y = 0;
-    for (unsigned k = covered; k; k &= k - 1) {
-      const SamplePoint p = surface_.pattern[std::countr_zero(k)];
-      x += p.x - 128, y += p.y - 128;
-    }
-    const double count = std::popcount(covered) * 256.0;
-    x /= count, y /= count;
+    centroid_offset(covered, x, y);
     return true;
   }
 
