@@ -299,15 +299,23 @@ TEST(Area, TheSimdMasksMatchTheScalarPath) {
 
 TEST(Area, ThePlanKeepsAreaFor2DAndMultisamples3D) {
   raster::Scene flat = raster::parse_scene(R"({"width": 8, "height": 8, "antialias": "area", "primitives": [
-      {"type": "line", "points": [[0, 0], [8, 8]], "color": "#ffffff"}]})");
+      {"type": "polyline", "points": [[0, 0], [4, 6], [8, 0]], "color": "#ffffff"}]})");
   EXPECT_EQ(flat.antialias, raster::Antialias::area);
   const raster::RenderPlan p = raster::plan(flat);
   EXPECT_EQ(p.coverage, raster::Coverage::area);
   EXPECT_EQ(p.samples, 1);
-  EXPECT_TRUE(p.draws[0].mode.union_coverage);
+  EXPECT_TRUE(p.draws[0].mode.union_coverage);  // its segments overlap at the joint: one shape
+  EXPECT_TRUE(p.draws[0].mode.line_quads);
   EXPECT_EQ(p.memory.sample_bytes, 0);
   EXPECT_GT(p.memory.coverage_bytes, 0);
   EXPECT_NE(raster::explain_line(p).find(" samples=area "), std::string::npos) << raster::explain_line(p);
+  // A single flat segment is one quad, one shape by itself: no accumulation, so none of its storage.
+  raster::Scene line = raster::parse_scene(R"({"width": 8, "height": 8, "antialias": "area", "primitives": [
+      {"type": "line", "points": [[0, 0], [8, 8]], "color": "#ffffff"}]})");
+  const raster::RenderPlan one = raster::plan(line);
+  EXPECT_TRUE(one.draws[0].mode.line_quads);
+  EXPECT_FALSE(one.draws[0].mode.union_coverage);
+  EXPECT_EQ(one.memory.coverage_bytes, 0);
 
   raster::Scene mesh = raster::parse_scene(R"({"width": 8, "height": 8, "antialias": "area", "primitives": [
       {"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [[0, 1, 2]]}]})");

@@ -2,6 +2,8 @@
 // clipped to the image before stepping; polylines draw their joints once.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <random>
 
 #include "reference.h"
@@ -129,6 +131,64 @@ TEST(Line, TriangleOutlineUsesTheLineRule) {
   }
   EXPECT_EQ(outline, expect);
   EXPECT_FALSE(outline[15 * 40 + 14]) << "an outline leaves the inside empty";
+}
+
+}  // namespace
+
+namespace {
+
+using raster::Rgba8;
+
+// The rectangle a line of `width` is drawn as, corner for corner as geometry makes it (before snapping).
+std::array<Point2, 4> rectangle_of(Point2 a, Point2 b, double width) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy), half = width * 0.5,
+               nx = -dy / len * half, ny = dx / len * half;
+  return {Point2{a.x + nx, a.y + ny}, Point2{b.x + nx, b.y + ny}, Point2{b.x - nx, b.y - ny},
+          Point2{a.x - nx, a.y - ny}};
+}
+
+// A flat line drawn as rectangles is one four-edge record per segment (a quad). Its edges are those of the
+// two triangles it was drawn as before, so aliased and multisampled it must give their bytes: seeded lines
+// of every orientation and width, translucent and opaque, some reaching far beyond the image (within the
+// fast range, and beyond it, where lines stay triangles), against the same rectangles given as triangles.
+TEST(Line, AQuadGivesTheBytesOfItsTwoTriangles) {
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int compared = 0;
+  for (int n = 0; n < 96; ++n) {
+    const double angle = n * M_PI / 48 + unit(rng) * 0.05, length = n % 6 == 5 ? 3e4 : 2 + unit(rng) * 50;
+    double width = n % 4 == 0 ? 1 : 0.2 + unit(rng) * 9;
+    const Point2 mid{4 + unit(rng) * 40, 4 + unit(rng) * 40};
+    Point2 a{mid.x - length * std::cos(angle), mid.y - length * std::sin(angle)},
+        b{mid.x + length * std::cos(angle) * (n % 12 == 11 ? 100 : 1),
+          mid.y + length * std::sin(angle) * (n % 12 == 11 ? 100 : 1)};
+    if (n % 8 == 2) {  // on the grid: edges through pixel centres, where the top-left rule decides
+      const double c = 5.5 + n % 5;
+      a = n % 16 == 2 ? Point2{c, 3} : Point2{3, 3}, b = n % 16 == 2 ? Point2{c, 40} : Point2{40, 40};
+      width = n % 16 == 2 ? 2 + n % 3 : std::sqrt(2.0) * (1 + n % 3);
+    }
+    const Rgba8 color{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 200,
+                      static_cast<std::uint8_t>(n % 3 == 0 ? 140 : 255)};
+    for (int samples : {1, 4, 16}) {
+      SceneBuilder line(48, 48, Rgba8{30, 30, 30, 255});
+      line.line(a, b, color);
+      line.line({40, 2}, {3, 30}, color);  // a second line over it: the blending order holds too
+      for (raster::Primitive& p : line.scene.primitives) p.width = static_cast<float>(width);
+      line.scene.antialias = test::multisample(samples);
+      if (samples == 1 && width == 1) continue;  // Bresenham, not a rectangle
+      SceneBuilder triangles(48, 48, Rgba8{30, 30, 30, 255});
+      for (const auto& [p, q] : {std::pair{a, b}, std::pair{Point2{40, 2}, Point2{3, 30}}}) {
+        const std::array<Point2, 4> r = rectangle_of(p, q, width);
+        triangles.triangle(r[0], r[1], r[2], color).triangle(r[0], r[2], r[3], color);
+      }
+      triangles.scene.antialias = line.scene.antialias;
+      EXPECT_TRUE(raster::plan(line.scene).draws[0].mode.line_quads || n % 12 == 11);
+      ASSERT_EQ(test::render(line.scene).pixels, test::render(triangles.scene).pixels)
+          << "line " << n << " width " << width << " at " << samples << " samples";
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 250);
 }
 
 }  // namespace

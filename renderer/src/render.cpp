@@ -33,8 +33,8 @@ struct Frame {
 };
 
 // The coverage routine the plan's anti-aliasing asks for.
-template <typename T, typename Shader>
-void cover(const detail::EdgeFunctions<T>& e, Rect clip, Coverage coverage, const detail::Surface& surface,
+template <typename T, int N, typename Shader>
+void cover(const detail::EdgeFunctions<T, N>& e, Rect clip, Coverage coverage, const detail::Surface& surface,
            detail::Lanes lanes, detail::StopMeter& meter, Shader& shader) {
   switch (coverage) {
     case Coverage::centre:
@@ -61,7 +61,8 @@ template <int C>
                           (e.a[2] * scale).to_double()};
     const double dy[3] = {(e.b[0] * scale).to_double(), (e.b[1] * scale).to_double(),
                           (e.b[2] * scale).to_double()};
-    detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, e.area.to_double());
+    detail::TriangleShader<C> shader(setup.calls[t.call], t.back_facing, attributes, surface, dx, dy,
+                                     e.area.to_double());
     cover(e, clip, coverage, surface, lanes, meter, shader);
   } else {
     const detail::EdgeFunctions<std::int64_t>& e = t.edges;
@@ -69,7 +70,8 @@ template <int C>
                           double(e.a[2] * detail::kSubpixelScale)};
     const double dy[3] = {double(e.b[0] * detail::kSubpixelScale), double(e.b[1] * detail::kSubpixelScale),
                           double(e.b[2] * detail::kSubpixelScale)};
-    detail::TriangleShader<C> shader(setup.calls[t.call], t, attributes, surface, dx, dy, double(e.area));
+    detail::TriangleShader<C> shader(setup.calls[t.call], t.back_facing, attributes, surface, dx, dy,
+                                     double(e.area));
     cover(e, clip, coverage, surface, lanes, meter, shader);
   }
 }
@@ -127,6 +129,30 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
       if (meter.add(detail::StopMeter::kPrimitiveWork)) return;
       prefetch(part, bins, i, end);
       const std::uint32_t ref = bins.records[i].value;
+      // A union primitive stays open over its consecutive triangles and quads (`clip`, the pixels they
+      // reach): opened by the first, composited when another call's record comes.
+      auto join = [&](std::uint32_t call, Rect clip) {
+        if (call != open) {
+          close();
+          if (coverage == Coverage::area && f.setup.calls[call].mode.union_coverage)
+            open = call, reached = clip;
+        } else {
+          reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0),
+                     std::max(reached.x1, clip.x1), std::max(reached.y1, clip.y1)};
+        }
+      };
+      if ((ref & detail::RecordRef::kKindBits) == detail::RecordRef::kQuadBits) {
+        const detail::QuadRecord& q = part.quads[ref & ~detail::RecordRef::kKindBits];
+        const Rect clip{std::max(rect.x0, q.box.x0), std::max(rect.y0, q.box.y0), std::min(rect.x1, q.box.x1),
+                        std::min(rect.y1, q.box.y1)};
+        join(q.call, clip);
+        // Flat: the shader reads the colour row only, never the barycentric steps.
+        const double none[3] = {0, 0, 0};
+        detail::TriangleShader<C> shader(f.setup.calls[q.call], false, part.attributes.data() + q.attributes,
+                                         surface, none, none, 1.0);
+        cover(q.edges, clip, coverage, surface, lanes, meter, shader);
+        continue;
+      }
       if (ref & detail::RecordRef::kLineBit) {
         close();
         const detail::LineRecord& line = part.lines[ref & ~detail::RecordRef::kKindBits];
@@ -142,14 +168,7 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
       const detail::TriangleRecord& t = part.triangles[ref];
       const Rect clip{std::max(rect.x0, t.box.x0), std::max(rect.y0, t.box.y0), std::min(rect.x1, t.box.x1),
                       std::min(rect.y1, t.box.y1)};
-      if (t.call != open) {
-        close();
-        if (coverage == Coverage::area && f.setup.calls[t.call].mode.union_coverage)
-          open = t.call, reached = clip;
-      } else {
-        reached = {std::min(reached.x0, clip.x0), std::min(reached.y0, clip.y0),
-                   std::max(reached.x1, clip.x1), std::max(reached.y1, clip.y1)};
-      }
+      join(t.call, clip);
       draw_triangle<C>(f.setup, part, t, surface, clip, coverage, lanes, meter);
     }
   }

@@ -102,9 +102,13 @@ struct PrimitivePlan {
   bool face_normals = false;
   bool line_rectangles =
       false;  ///< 2D lines: drawn as rectangles of their width (anti-aliased or width != 1)
-  /// Area coverage: the primitive's triangles (a line's two, a polyline's segments) add up their coverage
-  /// of each pixel, at most 1, and the primitive is composited once: no seam along a rectangle's diagonal,
-  /// no darker joints where translucent segments overlap.
+  /// 2D lines drawn as rectangles in one colour, every corner within the fast range (setup.h): each segment
+  /// is one four-edge record, not two triangles sharing a diagonal.
+  bool line_quads = false;
+  /// Area coverage: the primitive's triangles and quads (a line's two triangles, a polyline's segments) add
+  /// up their coverage of each pixel, at most 1, and the primitive is composited once: no seam along a
+  /// rectangle's diagonal, no darker joints where translucent segments overlap. Not needed, so not planned,
+  /// for a single segment drawn as one quad.
   bool union_coverage = false;
   /// What its vertices carry (colour always; normals, texture coordinates, positions, depth as it needs).
   /// Colours vary (2D: affine; 3D: perspective) or are flat; lit per pixel means a normal row.

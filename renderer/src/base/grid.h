@@ -12,6 +12,11 @@ namespace raster::detail {
 inline constexpr int kSubpixelBits = 8;                             ///< GPU-style 8 sub-pixel bits
 inline constexpr std::int64_t kSubpixelScale = 1 << kSubpixelBits;  ///< fixed-point units per pixel
 
+/// Triangles (and line quads) whose vertices all lie within +-kFastRangePx take the int64 records: snapped
+/// coordinates fit in 24 bits, so every edge value at a pixel of the image fits in 50 bits (exact in a
+/// double, too). Others take the exact wide records (wide.h). The plan reads it to choose line quads.
+inline constexpr double kFastRangePx = 32768.0;
+
 /// Coverage works on square blocks of this many pixels a side; tiles are whole blocks.
 inline constexpr int kBlock = 8;
 

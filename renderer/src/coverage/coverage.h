@@ -82,10 +82,10 @@ inline std::uint64_t row_mask(int r0, int r1) {
 
 /// Whether edge values `at_origin` (at the sample point of pixel (bx, by), the clip's block-grid origin)
 /// stay >= 0 over every pixel of `clip`: its nearest corner decides. Then the clip is accepted whole.
-template <typename T>
-bool clip_inside(const T (&at_origin)[3], const T (&step_x)[3], const T (&step_y)[3], Rect clip, int bx,
+template <typename T, int N>
+bool clip_inside(const T (&at_origin)[N], const T (&step_x)[N], const T (&step_y)[N], Rect clip, int bx,
                  int by) {
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < N; ++k) {
     const T first = at_origin[k] + step_x[k] * T(clip.x0 - bx) + step_y[k] * T(clip.y0 - by);
     const T w = step_x[k] * T(clip.x1 - clip.x0 - 1), h = step_y[k] * T(clip.y1 - clip.y0 - 1);
     if (first + std::min(w, T(0)) + std::min(h, T(0)) < T(0)) return false;
@@ -94,20 +94,25 @@ bool clip_inside(const T (&at_origin)[3], const T (&step_x)[3], const T (&step_y
 }
 
 /// A block's mask one pixel at a time, in T: the reference the lanes are tested against.
-template <typename T>
-std::uint64_t partial_mask_scalar(const T (&e)[3], const T (&step_x)[3], const T (&step_y)[3], int r0 = 0,
+template <typename T, int N>
+std::uint64_t partial_mask_scalar(const T (&e)[N], const T (&step_x)[N], const T (&step_y)[N], int r0 = 0,
                                   int r1 = kBlock) {
   std::uint64_t mask = 0;
-  T row[3] = {e[0], e[1], e[2]};
-  for (int k = 0; k < 3; ++k)
+  T row[N];
+  for (int k = 0; k < N; ++k) {
+    row[k] = e[k];
     for (int r = 0; r < r0; ++r) row[k] += step_y[k];
+  }
   for (int r = r0; r < r1; ++r) {
-    T v[3] = {row[0], row[1], row[2]};
+    T v[N];
+    for (int k = 0; k < N; ++k) v[k] = row[k];
     for (int i = 0; i < kBlock; ++i) {
-      if (!(v[0] < T(0)) && !(v[1] < T(0)) && !(v[2] < T(0))) mask |= 1ull << (8 * r + i);
-      for (int k = 0; k < 3; ++k) v[k] += step_x[k];
+      bool inside = true;
+      for (int k = 0; k < N; ++k) inside = inside && !(v[k] < T(0));
+      if (inside) mask |= 1ull << (8 * r + i);
+      for (int k = 0; k < N; ++k) v[k] += step_x[k];
     }
-    for (int k = 0; k < 3; ++k) row[k] += step_y[k];
+    for (int k = 0; k < N; ++k) row[k] += step_y[k];
   }
   return mask;
 }
@@ -162,16 +167,14 @@ __attribute__((target("avx2"))) inline std::uint64_t edge_mask_avx2(std::int32_t
 /// pixel centre to sample s), where per-sample masks would set the edge up and step it once per sample.
 /// Sample s's pixels of rows [r0, r1) go to masks[s], and the pixels whose centre is covered to masks[N].
 /// Every value e + i dx + r dy + offset must fit int32.
-template <int N>
-__attribute__((target("avx2"))) inline void sample_masks_avx2(const std::int32_t (&e)[3],
-                                                              const std::int32_t (&dx)[3],
-                                                              const std::int32_t (&dy)[3], unsigned crossing,
-                                                              const std::int32_t (&offset)[3][16], int r0,
-                                                              int r1, std::uint64_t* masks) {
+template <int N, int kEdges>
+__attribute__((target("avx2"))) inline void sample_masks_avx2(
+    const std::int32_t (&e)[kEdges], const std::int32_t (&dx)[kEdges], const std::int32_t (&dy)[kEdges],
+    unsigned crossing, const std::int32_t (&offset)[kEdges][16], int r0, int r1, std::uint64_t* masks) {
   std::uint64_t out[N + 1];
   const std::uint64_t rows = row_mask(r0, r1);
   for (int s = 0; s <= N; ++s) out[s] = rows;
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < kEdges; ++k) {
     if (!(crossing & (1u << k))) continue;
     __m256i row = _mm256_add_epi32(
         _mm256_set1_epi32(e[k] + r0 * dy[k]),
@@ -192,12 +195,13 @@ __attribute__((target("avx2"))) inline void sample_masks_avx2(const std::int32_t
 
 /// A partial block's mask from its crossing edges (bit k of `crossing`), in int32 lanes where the values
 /// fit (an edge crossing a block has |e| <= 7 (|dx| + |dy|) there), else one pixel at a time in int64.
-inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::int64_t (&step_x)[3],
-                                        const std::int64_t (&step_y)[3], unsigned crossing, int r0, int r1,
-                                        Lanes lanes = Lanes::sse2) {
+template <int N>
+std::uint64_t partial_mask_lanes(const std::int64_t (&e)[N], const std::int64_t (&step_x)[N],
+                                 const std::int64_t (&step_y)[N], unsigned crossing, int r0, int r1,
+                                 Lanes lanes = Lanes::sse2) {
   constexpr std::int64_t kLimit = std::int64_t{1} << 30;
   std::uint64_t mask = ~0ull;
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < N; ++k) {
     if (!(crossing & (1u << k))) continue;
     const std::int64_t reach = 8 * (std::abs(step_x[k]) + std::abs(step_y[k]));
     if (std::abs(e[k]) + reach < kLimit) {
@@ -211,7 +215,7 @@ inline std::uint64_t partial_mask_lanes(const std::int64_t (&e)[3], const std::i
 #endif
       mask &= edge_mask_lanes(e32, dx, dy, r0, r1);
     } else {
-      const std::int64_t one[3] = {e[k], 0, 0}, sx[3] = {step_x[k], 0, 0}, sy[3] = {step_y[k], 0, 0};
+      const std::int64_t one[1] = {e[k]}, sx[1] = {step_x[k]}, sy[1] = {step_y[k]};
       mask &= partial_mask_scalar(one, sx, sy, r0, r1);
     }
   }
@@ -304,18 +308,18 @@ bool biased(const C& a, const C& b) {
 
 /// A clip's blocks and how the edge values step over them: E_k at a point `at` of each pixel (1/256 px from
 /// its corner), exact in T.
-template <typename T>
+template <typename T, int N = 3>
 struct BlockGrid {
   int bx0 = 0, by0 = 0;      ///< the clip's first block, image pixels (multiples of kBlock)
-  T origin[3];               ///< E_k at `at` of pixel (bx0, by0)
-  T step_x[3], step_y[3];    ///< E_k's change a pixel right, a pixel down
-  T block_x[3], block_y[3];  ///< ... a block right, a block down
-  T low[3], high[3];         ///< the least and the most E_k changes across a block's 8x8 pixels
+  T origin[N];               ///< E_k at `at` of pixel (bx0, by0)
+  T step_x[N], step_y[N];    ///< E_k's change a pixel right, a pixel down
+  T block_x[N], block_y[N];  ///< ... a block right, a block down
+  T low[N], high[N];         ///< the least and the most E_k changes across a block's 8x8 pixels
 
-  BlockGrid(const EdgeFunctions<T>& edges, Rect clip, SamplePoint at)
+  BlockGrid(const EdgeFunctions<T, N>& edges, Rect clip, SamplePoint at)
       : bx0(clip.x0 - clip.x0 % kBlock), by0(clip.y0 - clip.y0 % kBlock) {  // clip >= 0
     const T sx(std::int64_t{bx0} * kSubpixelScale + at.x), sy(std::int64_t{by0} * kSubpixelScale + at.y);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < N; ++k) {
       step_x[k] = edges.a[k] * T(kSubpixelScale), step_y[k] = edges.b[k] * T(kSubpixelScale);
       block_x[k] = step_x[k] * T(kBlock), block_y[k] = step_y[k] * T(kBlock);
       origin[k] = edges.a[k] * sx + edges.b[k] * sy + edges.c[k];
@@ -329,14 +333,14 @@ struct BlockGrid {
 /// The pixels of rows [r0, r1) of a block where every E_k >= 0, from its values `e` at the block's first
 /// pixel: edges that stay >= 0 over the block are skipped, the others tested in lanes (or, `Lanes::scalar`
 /// and wide edges, one pixel at a time).
-template <typename T>
-std::uint64_t inside_mask(const T (&e)[3], const BlockGrid<T>& g, Lanes lanes, int r0, int r1) {
+template <typename T, int N>
+std::uint64_t inside_mask(const T (&e)[N], const BlockGrid<T, N>& g, Lanes lanes, int r0, int r1) {
   if constexpr (std::is_same_v<T, std::int64_t>) {
     if (lanes != Lanes::scalar) {
       unsigned crossing = 0;
       // Not `crossing |= (cond ? 1u : 0u) << k`: GCC 12 with -fsanitize=bounds,shift miscompiles that
       // form (a wrong index at -O0, a wrong mask at -O2), which made make test-asan fail.
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; k < N; ++k)
         if (e[k] + g.low[k] < T(0)) crossing |= 1u << k;
       return partial_mask_lanes(e, g.step_x, g.step_y, crossing, r0, r1, lanes);
     }
@@ -352,23 +356,26 @@ std::uint64_t inside_mask(const T (&e)[3], const BlockGrid<T>& g, Lanes lanes, i
 /// and `e` exact. Rectangles need exact doubles, so only int64 edges make them; wide edges' accepted blocks
 /// go one by one to shade(block). Returns early once `meter` says the render must stop (a block is kBlock^2
 /// units of work).
-template <typename T, typename Shade, typename Partial>
-void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&accept)[3], const T (&reject)[3],
-                 StopMeter& meter, Shade& shade, Partial&& partial) {
+template <typename T, int N, typename Shade, typename Partial>
+void walk_blocks(const BlockGrid<T, N>& g, const T& area, Rect clip, const T (&accept)[N],
+                 const T (&reject)[N], StopMeter& meter, Shade& shade, Partial&& partial) {
   constexpr bool kExact = std::is_same_v<T, std::int64_t>;
-  T accept_low[3], reject_high[3], row_start[3];
+  constexpr int kShaded = 3;  // a Block carries the first three edges' values: a triangle's weights
+  T accept_low[N], reject_high[N], row_start[N];
   Block block;
   block.area = to_double(area);
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < N; ++k) {
     accept_low[k] = accept[k] + g.low[k], reject_high[k] = reject[k] + g.high[k];
     row_start[k] = g.origin[k];
-    block.dx[k] = to_double(g.step_x[k]), block.dy[k] = to_double(g.step_y[k]);
   }
+  for (int k = 0; k < kShaded; ++k)
+    block.dx[k] = to_double(g.step_x[k]), block.dy[k] = to_double(g.step_y[k]);
   if constexpr (kExact) {
-    const T lowest[3] = {g.origin[0] + accept[0], g.origin[1] + accept[1], g.origin[2] + accept[2]};
+    T lowest[N];
+    for (int k = 0; k < N; ++k) lowest[k] = g.origin[k] + accept[k];
     if (clip_inside(lowest, g.step_x, g.step_y, clip, g.bx0, g.by0)) {
       block.x0 = g.bx0, block.y0 = g.by0, block.mask = ~0ull;
-      for (int k = 0; k < 3; ++k) block.e[k] = to_double(g.origin[k]);
+      for (int k = 0; k < kShaded; ++k) block.e[k] = to_double(g.origin[k]);
       shade.rect(clip, block);
       meter.add(std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0));
       return;
@@ -385,19 +392,20 @@ void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&acce
       shade.rect(rect, run);
       run_blocks = 0;
     };
-    T e[3] = {row_start[0], row_start[1], row_start[2]};
+    T e[N];
+    for (int k = 0; k < N; ++k) e[k] = row_start[k];
     for (int x0 = g.bx0; x0 < clip.x1; x0 += kBlock) {
       bool skip = false, whole = true;
-      for (int k = 0; k < 3; ++k) {
+      for (int k = 0; k < N; ++k) {
         skip = skip || e[k] + reject_high[k] < T(0);
         whole = whole && !(e[k] + accept_low[k] < T(0));
       }
       if (kExact && whole) {
         if (run_blocks++ == 0) {
           run.x0 = x0, run.y0 = y0, run.mask = ~0ull;
-          for (int k = 0; k < 3; ++k) run.e[k] = to_double(e[k]);
+          for (int k = 0; k < kShaded; ++k) run.e[k] = to_double(e[k]);
           run.area = block.area;
-          for (int k = 0; k < 3; ++k) run.dx[k] = block.dx[k], run.dy[k] = block.dy[k];
+          for (int k = 0; k < kShaded; ++k) run.dx[k] = block.dx[k], run.dy[k] = block.dy[k];
         }
         if (meter.add(kBlock * kBlock)) return;
       } else {
@@ -406,7 +414,7 @@ void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&acce
           const std::uint64_t clipped =
               rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
           block.x0 = x0, block.y0 = y0;
-          for (int k = 0; k < 3; ++k) block.e[k] = to_double(e[k]);
+          for (int k = 0; k < kShaded; ++k) block.e[k] = to_double(e[k]);
           if (whole) {
             block.mask = clipped;
             shade(block);
@@ -416,10 +424,10 @@ void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&acce
           if (meter.add(kBlock * kBlock)) return;
         }
       }
-      for (int k = 0; k < 3; ++k) e[k] += g.block_x[k];
+      for (int k = 0; k < N; ++k) e[k] += g.block_x[k];
     }
     if (run_blocks) flush();
-    for (int k = 0; k < 3; ++k) row_start[k] += g.block_y[k];
+    for (int k = 0; k < N; ++k) row_start[k] += g.block_y[k];
   }
 }
 
@@ -428,15 +436,16 @@ void walk_blocks(const BlockGrid<T>& g, const T& area, Rect clip, const T (&acce
 /// Aliased coverage of `edges` over the pixels of `clip` (inside one tile, the record's box already
 /// intersected): a pixel is covered when every E_k >= 0 at its `sample` point. Calls shade(block) for each
 /// block with a covered pixel (the mask), shade.rect for rectangles wholly inside (see walk_blocks).
-template <typename T, typename Shade>
-void cover(const EdgeFunctions<T>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter,
+template <typename T, int N, typename Shade>
+void cover(const EdgeFunctions<T, N>& edges, Rect clip, SamplePoint sample, Lanes lanes, StopMeter& meter,
            Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;
-  const BlockGrid<T> g(edges, clip, sample);
-  const T zero[3] = {T(0), T(0), T(0)};
+  const BlockGrid<T, N> g(edges, clip, sample);
+  T zero[N];
+  for (T& z : zero) z = T(0);
   walk_blocks(g, edges.area, clip, zero, zero, meter, shade,
-              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+              [&](Block& block, const T(&e)[N], std::uint64_t clipped, int r0, int r1) {
                 block.mask = clipped & inside_mask(e, g, lanes, r0, r1);
                 if (block.mask) shade(block);
               });
@@ -451,26 +460,29 @@ void cover(const EdgeFunctions<T>& edges, Rect clip, SamplePoint sample, Lanes l
 /// cut pixels to shade.area(block, cover) with their exact share: one edge, or two that do not meet inside
 /// the pixel, by a closed form; otherwise by clipping the square. The values shading reads are the aliased
 /// ones (top-left bias included).
-template <typename T, typename Shade>
-void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
+template <typename T, int N, typename Shade>
+void cover_area(const EdgeFunctions<T, N>& edges, Rect clip, Lanes lanes, StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;
-  const BlockGrid<T> g(edges, clip, SamplePoint{});
-  T inner[3], outer[3];  // offsets from the biased centre value: wholly inside, touching the interior
-  double bias[3];
-  for (int k = 0; k < 3; ++k) {
+  const BlockGrid<T, N> g(edges, clip, SamplePoint{});
+  T inner[N], outer[N];  // offsets from the biased centre value: wholly inside, touching the interior
+  double bias[N], dx[N], dy[N];
+  for (int k = 0; k < N; ++k) {
     const T a(edges.a[k]), b(edges.b[k]);
     const T bias_k = biased(a, b) ? T(1) : T(0);  // the top-left rule's 1, given back: area is the triangle's
     const T h = ((a < T(0) ? -a : a) + (b < T(0) ? -b : b)) * T(kSubpixelScale / 2);
     inner[k] = bias_k - h;
     outer[k] = bias_k + h - T(1);  // >= 0 exactly when centre + h > 0
     bias[k] = biased(edges.a[k], edges.b[k]) ? 1 : 0;
+    dx[k] = to_double(g.step_x[k]), dy[k] = to_double(g.step_y[k]);
   }
   AreaCover cut;
   walk_blocks(g, edges.area, clip, inner, outer, meter, shade,
-              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
-                const T in[3] = {e[0] + inner[0], e[1] + inner[1], e[2] + inner[2]};
-                const T out[3] = {e[0] + outer[0], e[1] + outer[1], e[2] + outer[2]};
+              [&](Block& block, const T(&e)[N], std::uint64_t clipped, int r0, int r1) {
+                T in[N], out[N];
+                double at[N];  // the edges' values at the block's first pixel centre, as doubles
+                for (int k = 0; k < N; ++k)
+                  in[k] = e[k] + inner[k], out[k] = e[k] + outer[k], at[k] = to_double(e[k]);
                 const std::uint64_t whole = clipped & inside_mask(in, g, lanes, r0, r1);
                 const std::uint64_t touched = clipped & inside_mask(out, g, lanes, r0, r1);
                 if (whole) {
@@ -480,12 +492,12 @@ void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter
                 cut.partial = 0;
                 for (std::uint64_t m = touched & ~whole; m; m &= m - 1) {
                   const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
-                  double t[3], A[3], B[3];
+                  double t[N], A[N], B[N];
                   int n = 0;
-                  for (int k = 0; k < 3; ++k) {
-                    const double value = block.e[k] + bias[k] + i * block.dx[k] + r * block.dy[k];
-                    if (value >= 0.5 * (std::fabs(block.dx[k]) + std::fabs(block.dy[k]))) continue;  // inside
-                    t[n] = value, A[n] = block.dx[k], B[n] = block.dy[k], ++n;
+                  for (int k = 0; k < N; ++k) {
+                    const double value = at[k] + bias[k] + i * dx[k] + r * dy[k];
+                    if (value >= 0.5 * (std::fabs(dx[k]) + std::fabs(dy[k]))) continue;  // inside
+                    t[n] = value, A[n] = dx[k], B[n] = dy[k], ++n;
                   }
                   const double share = n == 1   ? half_plane_share(t[0], A[0], B[0])
                                        : n == 2 ? two_edge_share(t, A, B)
@@ -506,14 +518,14 @@ void cover_area(const EdgeFunctions<T>& edges, Rect clip, Lanes lanes, StopMeter
 /// covered) and rectangles to shade.rect; others to shade.samples(block, masks), block.mask being the pixels
 /// with any sample covered and masks[count] those whose centre is covered. The values in a Block are at the
 /// pixel centres (where shading is evaluated), whatever the pattern.
-template <typename T, typename Shade>
-void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* pattern, int count,
+template <typename T, int N, typename Shade>
+void cover_samples(const EdgeFunctions<T, N>& edges, Rect clip, const SamplePoint* pattern, int count,
                    Lanes lanes, StopMeter& meter, Shade&& shade) {
   using namespace coverage_detail;
   if (clip.empty()) return;
-  const BlockGrid<T> g(edges, clip, SamplePoint{});
-  T offset[16][3], least[3], most[3];  // E's change from the pixel centre to each sample, and its extremes
-  for (int k = 0; k < 3; ++k) {
+  const BlockGrid<T, N> g(edges, clip, SamplePoint{});
+  T offset[16][N], least[N], most[N];  // E's change from the pixel centre to each sample, and its extremes
+  for (int k = 0; k < N; ++k) {
     const T a(edges.a[k]), b(edges.b[k]);
     for (int s = 0; s < count; ++s) {
       offset[s][k] = a * T(pattern[s].x - kSubpixelScale / 2) + b * T(pattern[s].y - kSubpixelScale / 2);
@@ -526,12 +538,12 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
   // AVX2 masks every sample in one pass (sample_masks_avx2) where the values fit int32: an edge crossing a
   // block has |E| below its reach over the block there, and the offsets add at most `spread`.
   constexpr std::int64_t kLimit = std::int64_t{1} << 30;
-  std::int32_t offset32[3][16] = {}, dx32[3] = {}, dy32[3] = {};
-  std::int64_t fits_below[3] = {};  // |E| at a block's first pixel below which its samples' values fit
+  std::int32_t offset32[N][16] = {}, dx32[N] = {}, dy32[N] = {};
+  std::int64_t fits_below[N] = {};  // |E| at a block's first pixel below which its samples' values fit
   bool fused = false;
   if constexpr (std::is_same_v<T, std::int64_t>) {
     fused = lanes == Lanes::avx2 && (count == 4 || count == 8 || count == 16);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < N; ++k) {
       const std::int64_t reach = 8 * (std::abs(g.step_x[k]) + std::abs(g.step_y[k])),
                          spread = std::max(std::abs(least[k]), std::abs(most[k]));
       fits_below[k] = kLimit - reach - spread;
@@ -543,21 +555,21 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
   }
 #endif
   walk_blocks(g, edges.area, clip, least, most, meter, shade,
-              [&](Block& block, const T(&e)[3], std::uint64_t clipped, int r0, int r1) {
+              [&](Block& block, const T(&e)[N], std::uint64_t clipped, int r0, int r1) {
                 std::uint64_t any = 0;
 #if defined(__x86_64__)
                 if constexpr (std::is_same_v<T, std::int64_t>) {
                   unsigned crossing = 0;
                   bool fits = fused;
-                  for (int k = 0; k < 3; ++k)
+                  for (int k = 0; k < N; ++k)
                     if (e[k] + std::min(least[k], T(0)) + g.low[k] < 0) {  // some sample or centre
                       crossing |= 1u << k;
                       fits = fits && std::abs(e[k]) < fits_below[k];
                     }
                   if (fits) {
-                    const std::int32_t e32[3] = {static_cast<std::int32_t>(crossing & 1 ? e[0] : 0),
-                                                 static_cast<std::int32_t>(crossing & 2 ? e[1] : 0),
-                                                 static_cast<std::int32_t>(crossing & 4 ? e[2] : 0)};
+                    std::int32_t e32[N];
+                    for (int k = 0; k < N; ++k)
+                      e32[k] = static_cast<std::int32_t>(crossing & (1u << k) ? e[k] : 0);
                     if (count == 4)
                       sample_masks_avx2<4>(e32, dx32, dy32, crossing, offset32, r0, r1, masks);
                     else if (count == 8)
@@ -575,7 +587,8 @@ void cover_samples(const EdgeFunctions<T>& edges, Rect clip, const SamplePoint* 
                 }
 #endif
                 for (int s = 0; s < count; ++s) {
-                  const T es[3] = {e[0] + offset[s][0], e[1] + offset[s][1], e[2] + offset[s][2]};
+                  T es[N];
+                  for (int k = 0; k < N; ++k) es[k] = e[k] + offset[s][k];
                   masks[s] = clipped & inside_mask(es, g, lanes, r0, r1);
                   any |= masks[s];
                 }

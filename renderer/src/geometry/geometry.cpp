@@ -38,10 +38,11 @@ void add_segment(const Scene& scene, const Primitive& prim, std::uint32_t i, std
   setup.add_line(line);
 }
 
-// A segment as the rectangle of its width around it (butt caps), two triangles with the endpoints'
-// colours: how lines are drawn when anti-aliased or wider than one pixel.
+// A segment as the rectangle of its width around it (butt caps): how lines are drawn when anti-aliased or
+// wider than one pixel. One quad record when the plan says so (flat colour, fast range) and the snapped
+// corners make a convex quad; else two triangles with the endpoints' colours.
 void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j,
-                           std::uint32_t call, Setup& setup) {
+                           const PrimitivePlan& mode, std::uint32_t call, Setup& setup) {
   const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
   if (!(len > 0) || !std::isfinite(len)) return;  // a point, or a segment too long to have a direction
@@ -51,6 +52,11 @@ void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint3
   const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
   const Rgba8 c[4] = {ca, cb, cb, ca};
   const VaryingLayout& with = setup.calls[call].layout;
+  if (mode.line_quads) {
+    const SetupVertex corners[4] = {vertex_2d(with, q[0], c[0]), vertex_2d(with, q[1], c[1]),
+                                    vertex_2d(with, q[2], c[2]), vertex_2d(with, q[3], c[3])};
+    if (setup.add_quad(call, corners)) return;
+  }
   for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
     const SetupVertex v[3] = {vertex_2d(with, q[t[0]], c[t[0]]), vertex_2d(with, q[t[1]], c[t[1]]),
                               vertex_2d(with, q[t[2]], c[t[2]])};
@@ -64,8 +70,8 @@ void add_polyline(const Scene& scene, const Primitive& prim, bool closed, const 
                   std::uint32_t call, Setup& setup) {
   const std::uint32_t n = prim.point_count;
   if (mode.line_rectangles) {
-    for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment_rectangle(scene, prim, i, i + 1, call, setup);
-    if (closed && n >= 3) add_segment_rectangle(scene, prim, n - 1, 0, call, setup);
+    for (std::uint32_t i = 0; i + 1 < n; ++i) add_segment_rectangle(scene, prim, i, i + 1, mode, call, setup);
+    if (closed && n >= 3) add_segment_rectangle(scene, prim, n - 1, 0, mode, call, setup);
     return;
   }
   closed = closed && n >= 3;  // closing a 2-point polyline would draw its one segment twice

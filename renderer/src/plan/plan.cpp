@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "base/budget_ask.h"
+#include "base/grid.h"
 #include "plan/view.h"
 #include "shade/texture.h"
 
@@ -223,8 +224,6 @@ bool plan_shape(const Scene& scene, const Primitive& prim, DrawPlan& draw, Rende
   const double w = scene.width, h = scene.height;
   const bool filled = prim.kind == PrimitiveKind::triangle && prim.fill;
   pp.line_rectangles = !filled && (scene.antialias != Antialias::none || prim.width != 1);
-  pp.union_coverage = pp.line_rectangles && scene.antialias == Antialias::area;
-  tally.any_union |= pp.union_coverage;
   Box b = bounds(scene, prim);
   if (!filled) {  // a wide line reaches half its width beyond its points
     const double pad = prim.width * 0.5;
@@ -241,6 +240,15 @@ bool plan_shape(const Scene& scene, const Primitive& prim, DrawPlan& draw, Rende
     tally.grey &= c.is_grey();
   }
   if (pp.smooth) pp.varyings.add(Varying::color, Interpolation::affine);
+  // One colour and every corner (the points, padded by half the width) in the fast range: quads. A single
+  // segment as a quad is one shape; anything else drawn as rectangles adds up its pieces' coverage.
+  constexpr double kFast = detail::kFastRangePx - 1;  // room for snapping
+  pp.line_quads =
+      pp.line_rectangles && !pp.smooth && b.x0 >= -kFast && b.y0 >= -kFast && b.x1 <= kFast && b.y1 <= kFast;
+  const bool one_segment = prim.point_count == 2;
+  pp.union_coverage =
+      pp.line_rectangles && scene.antialias == Antialias::area && !(pp.line_quads && one_segment);
+  tally.any_union |= pp.union_coverage;
   (pp.smooth ? out.smooth_count : out.flat_count) += 1;
   out.blend_count += pp.blend ? 1 : 0;
   const double cw = std::min(b.x1, w) - std::max(b.x0, 0.0) + 1,

@@ -25,10 +25,11 @@ std::pair<int, int> centre_span(double lo, double hi, int size) {
 }
 
 // False when the whole of `tile`'s sample points (any sample position) lies outside an edge of `e`.
-bool may_touch(const EdgeFunctions<std::int64_t>& e, Rect tile) {
+template <int N>
+bool may_touch(const EdgeFunctions<std::int64_t, N>& e, Rect tile) {
   const double x0 = double(tile.x0) * kSubpixelScale, x1 = double(tile.x1) * kSubpixelScale - 1;
   const double y0 = double(tile.y0) * kSubpixelScale, y1 = double(tile.y1) * kSubpixelScale - 1;
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < N; ++k) {
     const double a = double(e.a[k]), b = double(e.b[k]);
     const double most = (a > 0 ? a * x1 : a * x0) + (b > 0 ? b * y1 : b * y0) + double(e.c[k]);  // exact
     if (most < 0) return false;
@@ -114,6 +115,59 @@ std::size_t Setup::record_count() const {
   return n;
 }
 
+bool Setup::add_quad(std::uint32_t call, const SetupVertex (&v)[4]) {
+  const VaryingLayout& varyings = calls[call].layout;
+  for (int i = 0; i < kVaryingCount; ++i)
+    if (varyings.vertex_offset[i] >= 0 && varyings.how(static_cast<Varying>(i)) != Interpolation::flat)
+      return false;  // a quad carries one flat row of each varying
+  constexpr double kFastUnits = kFastRangePx * kSubpixelScale;
+  std::int64_t x[4], y[4];
+  for (int k = 0; k < 4; ++k) {
+    if (!(std::fabs(v[k].x) <= kFastUnits && std::fabs(v[k].y) <= kFastUnits)) return false;
+    x[k] = static_cast<std::int64_t>(v[k].x), y[k] = static_cast<std::int64_t>(v[k].y);
+  }
+  // Convex when every corner turns the same way; all straight is a line of no area, which draws nothing
+  // (as its two triangles would not). Anything else, a corner snapped onto another or a twisted rectangle
+  // far thinner than the grid, is left to the triangles.
+  int left = 0, right = 0;
+  std::int64_t area = 0;
+  for (int k = 0; k < 4; ++k) {
+    const int j = (k + 1) % 4, l = (k + 2) % 4;
+    const std::int64_t turn = (x[j] - x[k]) * (y[l] - y[j]) - (y[j] - y[k]) * (x[l] - x[j]);
+    left += turn > 0, right += turn < 0;
+    area += x[k] * y[j] - x[j] * y[k];
+  }
+  if (!left && !right) return true;
+  if (left != 4 && right != 4) return false;
+  if (area < 0) {  // both windings are drawn: the other way round, the edges run as the triangles' do
+    std::swap(x[1], x[3]), std::swap(y[1], y[3]);
+    area = -area;
+  }
+  QuadRecord q;
+  const std::int64_t lo[2] = {std::min({x[0], x[1], x[2], x[3]}), std::min({y[0], y[1], y[2], y[3]})};
+  const std::int64_t hi[2] = {std::max({x[0], x[1], x[2], x[3]}), std::max({y[0], y[1], y[2], y[3]})};
+  q.box = pixel_box(lo, hi);
+  if (q.box.empty()) return true;
+  q.edges.area = area;
+  for (int k = 0; k < 4; ++k) {  // as make_edges makes a triangle's, from corner k to corner k + 1
+    const int j = (k + 1) % 4;
+    const std::int64_t a = y[k] - y[j], b = x[j] - x[k];
+    q.edges.a[k] = static_cast<std::int32_t>(a), q.edges.b[k] = static_cast<std::int32_t>(b);
+    q.edges.c[k] = -(a * x[k]) - b * y[k] - (setup_detail::is_top_left(b, -a) ? 0 : 1);
+  }
+  q.call = call;
+  Records& part = last_part();
+  q.attributes = static_cast<std::uint32_t>(part.attributes.size());
+  float* out = part.attributes.grow(static_cast<std::size_t>(varyings.record_floats()));
+  for (int i = 0; i < kVaryingCount; ++i)
+    if (varyings.vertex_offset[i] >= 0)
+      std::copy_n(v[0].values + varyings.vertex_offset[i], kVaryingWidth[i],
+                  out + varyings.record_at(static_cast<Varying>(i), 0));
+  part.order.push_back({RecordRef::kQuadBits | static_cast<std::uint32_t>(part.quads.size())});
+  part.quads.push_back(q);
+  return true;
+}
+
 void Setup::add_line(LineRecord line) {
   std::tie(line.box.x0, line.box.x1) = pixel_span(std::min(line.x0, line.x1) * kSubpixelScale,
                                                   std::max(line.x0, line.x1) * kSubpixelScale, width);
@@ -163,17 +217,20 @@ Bins::Part bin_part(const Bins& grid, const Setup& setup, const Records& part, S
   auto for_each_tile = [&](RecordRef ref, auto&& visit) {
     const std::uint32_t kind = ref.value & RecordRef::kKindBits;
     const std::uint32_t index = ref.value & ~RecordRef::kKindBits;
-    const Rect box = kind == RecordRef::kLineBit    ? part.lines[index].box
+    const Rect box = kind == RecordRef::kQuadBits   ? part.quads[index].box
+                     : kind == RecordRef::kLineBit  ? part.lines[index].box
                      : kind == RecordRef::kPointBit ? part.points[index].box
                                                     : part.triangles[index].box;
     const int tx0 = box.x0 / tile, tx1 = (box.x1 - 1) / tile, ty0 = box.y0 / tile, ty1 = (box.y1 - 1) / tile;
     if (tx0 == tx1 && ty0 == ty1) return visit(ty0 * grid.columns + tx0);  // one tile: no test
     const TriangleRecord* t = kind ? nullptr : &part.triangles[index];
+    const QuadRecord* q = kind == RecordRef::kQuadBits ? &part.quads[index] : nullptr;
     const bool test = t && t->wide == TriangleRecord::kFast;
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) {
         const int at = ty * grid.columns + tx;
-        if (test && !may_touch(t->edges, grid.tile_rect(at, setup.width, setup.height))) continue;
+        const Rect rect = grid.tile_rect(at, setup.width, setup.height);
+        if ((test && !may_touch(t->edges, rect)) || (q && !may_touch(q->edges, rect))) continue;
         visit(at);
       }
   };

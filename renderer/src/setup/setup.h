@@ -21,11 +21,6 @@
 
 namespace raster::detail {
 
-/// Triangles whose vertices all lie within +-kFastRangePx take the int64 records: snapped coordinates fit
-/// in 24 bits, so every edge value at a pixel of the image fits in 50 bits (exact in a double, too).
-/// Others take the exact wide records (wide.h).
-inline constexpr double kFastRangePx = 32768.0;
-
 /// What a record is drawn with: the plan's decisions for its primitive plus the constants shading needs.
 struct DrawCall {
   PrimitivePlan mode;
@@ -56,17 +51,18 @@ struct SetupVertex {
   float* at(const VaryingLayout& v, Varying name) { return values + v.vertex_offset[static_cast<int>(name)]; }
 };
 
-/// Edge functions of one triangle on the 1/256 px grid, in the triangle's own integer type T (int64 for the
-/// fast range, Wide beyond): E_k(X, Y) = a[k] X + b[k] Y + c[k] at the sample point (X, Y) in 1/256 px, with
-/// the top-left rule folded into c (an edge that is not top or left has 1 subtracted), so a sample is
-/// covered exactly when all three are >= 0. E_k is vertex k's barycentric weight times `area`.
-template <typename T>
+/// Edge functions of one triangle (N = 3) or one convex quadrilateral (N = 4, a line segment's rectangle) on
+/// the 1/256 px grid, in the shape's own integer type T (int64 for the fast range, Wide beyond):
+/// E_k(X, Y) = a[k] X + b[k] Y + c[k] at the sample point (X, Y) in 1/256 px, with the top-left rule folded
+/// into c (an edge that is not top or left has 1 subtracted), so a sample is covered exactly when all N are
+/// >= 0. For a triangle E_k is vertex k's barycentric weight times `area`.
+template <typename T, int N = 3>
 struct EdgeFunctions {  // not scene.h's Edges (feature edges drawn over a mesh)
   /// In the fast range a and b are coordinate differences below 2^24: 32 bits hold them.
   using Coefficient = std::conditional_t<std::is_same_v<T, std::int64_t>, std::int32_t, T>;
-  Coefficient a[3], b[3];
-  T c[3];
-  T area;  ///< twice the triangle's area in 1/256 px units squared, > 0
+  Coefficient a[N], b[N];
+  T c[N];
+  T area;  ///< twice the shape's area in 1/256 px units squared, > 0
 };
 
 /// One triangle, set up: its edges, the pixels it may touch, and its attributes in barycentric form.
@@ -82,6 +78,18 @@ struct TriangleRecord {
       0;  ///< index into its part's attributes of this record's first float (VaryingLayout)
   std::uint32_t wide = kFast;  ///< kFast, or the index of its edges in Setup::wide_edges
   bool back_facing = false;    ///< 3D: seen from behind (per-pixel lighting flips the normal)
+};
+
+/// A segment of a flat-coloured 2D line drawn as its rectangle (plan.h: PrimitivePlan::line_quads): the
+/// rectangle as one convex quadrilateral, its four edges walked by the triangles' block walker, where two
+/// triangle records would share a diagonal that cuts nearly every pixel of a thin line twice. The same
+/// snapped corners and edges as those two triangles, so aliased and multisampled lines keep their pixels.
+struct QuadRecord {
+  Rect box;  ///< pixels whose sample point (or square, for area and samples) it may cover, clipped to the
+             ///< image
+  EdgeFunctions<std::int64_t, 4> edges;  ///< edge k runs from corner k to corner k + 1, interior E > 0
+  std::uint32_t call = 0;                ///< index into Setup::calls
+  std::uint32_t attributes = 0;          ///< index into its part's attributes: the colour, as a flat row
 };
 
 /// A 1-px line between the pixels that contain its endpoints. Pixel indices are integers held exactly in
@@ -113,9 +121,10 @@ struct RecordRef {
   static constexpr std::uint32_t kLineBit = 1u << 31;
   static constexpr std::uint32_t kPointBit = 1u << 30;
   static constexpr std::uint32_t kKindBits = kLineBit | kPointBit;
+  static constexpr std::uint32_t kQuadBits = kKindBits;  ///< both bits: a quad (test it before the others)
   /// Index into its part's triangles, or kLineBit | index into its part's lines, or kPointBit | index into
-  /// its part's points (a part holds fewer than 2^30 records of a kind: a model's faces and points are
-  /// limited far below that).
+  /// its part's points, or kQuadBits | index into its part's quads (a part holds fewer than 2^30 records of a
+  /// kind: a model's faces and points are limited far below that).
   std::uint32_t value = 0;
 };
 
@@ -128,6 +137,7 @@ struct Records {
   PodArray<float> attributes;                   ///< TriangleRecord::attributes indexes these
   std::vector<LineRecord> lines;
   PodArray<PointRecord> points;
+  PodArray<QuadRecord> quads;
   PodArray<RecordRef> order;  ///< every record of the part once, in the order the scene draws them
 
   /// Room for one more triangle record, made in place; drop_triangle() takes it back if it is not kept.
@@ -173,6 +183,10 @@ struct Setup {
   /// The same for a record already made in place as the last of `part.triangles` (by fast_record into
   /// Records::grow_triangle): copying a record just written field by field stalls on its loads.
   void finish(Records& part, std::uint32_t call, const SetupVertex* const (&v)[3], bool back_facing) const;
+  /// Adds the quad of four snapped corners (a segment's rectangle, in order around it, either winding) with
+  /// the colour of `call`'s flat row from `v[0]`. False, adding nothing, when it is not a convex quad in the
+  /// fast range: the caller draws it as two triangles. (One that misses the image is true, not added.)
+  bool add_quad(std::uint32_t call, const SetupVertex (&v)[4]);
   /// Adds a 1-px line record (its box is computed here).
   void add_line(LineRecord line);
   /// Adds a point record to `part` (its box is computed here from its centre and radius; a point that can

@@ -24,14 +24,15 @@
 namespace raster::detail {
 
 /// Shades the blocks of one triangle record inside one tile. Made per record per tile: everything that
-/// depends only on the record is worked out here, once, not per block.
+/// depends only on the record is worked out here, once, not per block. A line's quad (setup.h QuadRecord)
+/// is shaded by it too: its call is flat, so only its colour row is read.
 template <int C>
 class TriangleShader {
  public:
   /// `step_x` and `step_y` are the record's edge-value steps per pixel right and down (256 a_k, 256 b_k) and
-  /// `area` its doubled area, as doubles (exact for the fast range).
-  TriangleShader(const DrawCall& call, const TriangleRecord& record, const float* attributes,
-                 const Surface& surface, const double (&step_x)[3], const double (&step_y)[3], double area)
+  /// `area` its doubled area, as doubles (exact for the fast range); `back_facing`: 3D, seen from behind.
+  TriangleShader(const DrawCall& call, bool back_facing, const float* attributes, const Surface& surface,
+                 const double (&step_x)[3], const double (&step_y)[3], double area)
       : mode_(call.mode),
         attr_(attributes),
         surface_(surface),
@@ -59,8 +60,7 @@ class TriangleShader {
         l_columns_[k] = kColumns * static_cast<float>(dl_dx[k]);
       }
       z_columns_[0] = kLeftColumns * dz_dx, z_columns_[1] = kRightColumns * dz_dx;
-      if (mode_.smooth)
-        std::construct_at(&kernel_.color, call, at, record.back_facing ? -1.0f : 1.0f, dl_dx, dl_dy);
+      if (mode_.smooth) std::construct_at(&kernel_.color, call, at, back_facing ? -1.0f : 1.0f, dl_dx, dl_dy);
     }
 
     kind_ = depth[0] ? Kind::perspective : mode_.smooth ? Kind::smooth : Kind::flat;
