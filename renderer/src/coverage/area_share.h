@@ -20,15 +20,26 @@ namespace coverage_detail {
 
 /// The share of the unit square [0, 1]^2 where t + A (u - 1/2) + B (v - 1/2) >= 0, for a line that crosses
 /// it (|t| < (|A| + |B|) / 2). It depends only on t, p = max(|A|, |B|) and q = min(|A|, |B|): a trapezoid
-/// while the line crosses two opposite sides, a corner triangle (or its complement) beyond that.
-inline double half_plane_share(double t, double A, double B) {
-  const double p = std::max(std::fabs(A), std::fabs(B)), q = std::min(std::fabs(A), std::fabs(B));
-  const double band = (p - q) / 2;
-  if (std::fabs(t) <= band) return 0.5 + t / p;
-  const double r = (p + q) / 2 - std::fabs(t);  // distance (in E) from the far corner, in (0, q)
-  const double corner = r * r / (2 * p * q);
-  return t > 0 ? 1 - corner : corner;
-}
+/// while the line crosses two opposite sides, a corner triangle (or its complement) beyond that. What
+/// depends only on the edge (its steps A, B) is worked out once per record, so a cut pixel's share takes no
+/// division.
+struct HalfPlane {
+  double band = 0;     ///< |t| up to which the line crosses two opposite sides: (p - q) / 2
+  double reach = 0;    ///< (p + q) / 2: |t| at the far corner
+  double inv_p = 0;    ///< 1 / p
+  double inv_2pq = 0;  ///< 1 / (2 p q), or 0 for an axis-aligned edge (q = 0, always within the band)
+  HalfPlane() = default;
+  HalfPlane(double A, double B) {
+    const double p = std::max(std::fabs(A), std::fabs(B)), q = std::min(std::fabs(A), std::fabs(B));
+    band = (p - q) / 2, reach = (p + q) / 2, inv_p = 1 / p, inv_2pq = q > 0 ? 1 / (2 * p * q) : 0;
+  }
+  double share(double t) const {
+    if (std::fabs(t) <= band) return 0.5 + t * inv_p;
+    const double r = reach - std::fabs(t);
+    const double corner = r * r * inv_2pq;
+    return t > 0 ? 1 - corner : corner;
+  }
+};
 
 /// The share of the unit square inside several half-planes t_k + A_k (u - 1/2) + B_k (v - 1/2) >= 0: the
 /// square clipped by each (Sutherland-Hodgman), then the shoelace area. Near a vertex, and in slivers.
@@ -62,11 +73,12 @@ inline double clipped_share(int n, const double* t, const double* A, const doubl
 }
 
 /// The share of the unit square inside two half-planes whose lines both cross it (each as in
-/// half_plane_share), in closed form unless the lines meet inside the square. Lines that do not meet there
+/// HalfPlane), in closed form unless the lines meet inside the square. Lines that do not meet there
 /// cut it into three strips, and the half-planes either face each other (their intersection is the middle
 /// strip: a0 + a1 - 1 of the square) or nest (the smaller one: min(a0, a1)). That is every pixel along a
 /// sliver or a line's diagonal but the few at a vertex, which are clipped.
-inline double two_edge_share(const double* t, const double* A, const double* B) {
+inline double two_edge_share(const double* t, const double* A, const double* B, const HalfPlane& h0,
+                             const HalfPlane& h1) {
   // The lines meet at (nx, ny) / det from the pixel centre (Cramer's rule), inside the square when both
   // coordinates are within 1/2: compared without dividing, so parallel lines (det 0) never meet.
   const double det = A[0] * B[1] - A[1] * B[0];
@@ -78,7 +90,7 @@ inline double two_edge_share(const double* t, const double* A, const double* B) 
     const double x = A[k] > 0 ? -0.5 : 0.5, y = B[k] > 0 ? -0.5 : 0.5;
     return t[other] + A[other] * x + B[other] * y < 0;
   };
-  const double a0 = half_plane_share(t[0], A[0], B[0]), a1 = half_plane_share(t[1], A[1], B[1]);
+  const double a0 = h0.share(t[0]), a1 = h1.share(t[1]);
   if (deepest_outside(0, 1) || deepest_outside(1, 0)) return std::min(a0, a1);
   return std::max(0.0, a0 + a1 - 1);
 }

@@ -392,6 +392,7 @@ void cover_area(const EdgeFunctions<T, N>& edges, Rect clip, Lanes lanes, StopMe
   const BlockGrid<T, N> g(edges, clip, SamplePoint{});
   T inner[N], outer[N];  // offsets from the biased centre value: wholly inside, touching the interior
   double bias[N], dx[N], dy[N];
+  HalfPlane half[N];
   for (int k = 0; k < N; ++k) {
     const T a(edges.a[k]), b(edges.b[k]);
     const T bias_k = biased(a, b) ? T(1) : T(0);  // the top-left rule's 1, given back: area is the triangle's
@@ -400,6 +401,7 @@ void cover_area(const EdgeFunctions<T, N>& edges, Rect clip, Lanes lanes, StopMe
     outer[k] = bias_k + h - T(1);  // >= 0 exactly when centre + h > 0
     bias[k] = biased(edges.a[k], edges.b[k]) ? 1 : 0;
     dx[k] = to_double(g.step_x[k]), dy[k] = to_double(g.step_y[k]);
+    half[k] = HalfPlane(dx[k], dy[k]);
   }
   AreaCover cut;
   walk_blocks(g, edges.area, clip, inner, outer, meter, shade,
@@ -418,14 +420,14 @@ void cover_area(const EdgeFunctions<T, N>& edges, Rect clip, Lanes lanes, StopMe
                 for (std::uint64_t m = touched & ~whole; m; m &= m - 1) {
                   const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
                   double t[N], A[N], B[N];
-                  int n = 0;
+                  int n = 0, edge[N];
                   for (int k = 0; k < N; ++k) {
                     const double value = at[k] + bias[k] + i * dx[k] + r * dy[k];
-                    if (value >= 0.5 * (std::fabs(dx[k]) + std::fabs(dy[k]))) continue;  // inside
-                    t[n] = value, A[n] = dx[k], B[n] = dy[k], ++n;
+                    if (value >= half[k].reach) continue;  // inside
+                    t[n] = value, A[n] = dx[k], B[n] = dy[k], edge[n] = k, ++n;
                   }
-                  const double share = n == 1   ? half_plane_share(t[0], A[0], B[0])
-                                       : n == 2 ? two_edge_share(t, A, B)
+                  const double share = n == 1   ? half[edge[0]].share(t[0])
+                                       : n == 2 ? two_edge_share(t, A, B, half[edge[0]], half[edge[1]])
                                                 : clipped_share(n, t, A, B);
                   if (!(share > 0)) continue;  // touches only where two edges meet outside the square
                   cut.share[bit] = static_cast<float>(std::min(share, 1.0));
