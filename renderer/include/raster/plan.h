@@ -241,6 +241,9 @@ struct RenderPlan {
   /// back.
   bool tiles_in_place = false;
   bool scalar_coverage = false;  ///< test hook: partial blocks tested one pixel at a time, not in SIMD lanes
+  /// Test hook: multisampled pixels keep a colour per sample from the start, where the storage keeps one
+  /// colour a pixel until its samples differ; the bytes must not change.
+  bool keep_samples = false;
   Simd simd = Simd::sse2;        ///< the kernels' instruction set: the machine's best unless limited
   TileStoragePlan tile_storage;  ///< what each thread allocates for its tiles (`memory` counts it per thread)
   MemoryPlan memory;
@@ -260,6 +263,7 @@ struct PlanOptions {
   int max_threads = 0;           ///< 0: the machine's core count; 1: never leave the calling thread
   int tile = 0;                  ///< 0: the plan's choice; else the tile side (rounded up to a multiple of 8)
   bool scalar_coverage = false;  ///< test hook, see RenderPlan::scalar_coverage
+  bool keep_samples = false;     ///< test hook, see RenderPlan::keep_samples
   Simd max_simd = Simd::avx2;    ///< the widest kernels to use (tests force each one the machine has)
 };
 

@@ -44,9 +44,6 @@ void draw_samples(const PointRecord& p, const PrimitivePlan& mode, const Surface
   const int n = s.sample_count;
   const unsigned all = (1u << n) - 1;
   const std::int64_t radius2 = p.radius * p.radius;
-  auto sample_pixel = [&](int k, std::size_t index) {
-    return s.samples + (static_cast<std::size_t>(k) * s.plane + index) * C;
-  };
   std::int64_t shaded = 0;
   for (int y = r.y0; y < r.y1; ++y)
     for (int x = r.x0; x < r.x1; ++x) {
@@ -68,7 +65,7 @@ void draw_samples(const PointRecord& p, const PrimitivePlan& mode, const Surface
       const std::uint64_t bit = std::uint64_t{1} << (8 * ((y - s.y0) % 8) + (x - s.x0) % 8);
       if (passed == all && !mode.blend) {
         store<C>(s.color + index * C, p.color);
-        expanded &= ~bit;
+        s.one_colour<C>(expanded, bx, by, bit);
         continue;
       }
       if (!(expanded & bit)) {
@@ -76,11 +73,11 @@ void draw_samples(const PointRecord& p, const PrimitivePlan& mode, const Surface
           blend<C>(s.color + index * C, p.color);
           continue;
         }
-        for (int k = 0; k < n; ++k) std::memcpy(sample_pixel(k, index), s.color + index * C, C);
+        s.expand<C>(index);
         expanded |= bit;
       }
       for (unsigned m = passed; m; m &= m - 1)
-        put<C>(sample_pixel(std::countr_zero(m), index), p.color, mode.blend);
+        put<C>(s.sample_pixel<C>(std::countr_zero(m), index), p.color, mode.blend);
     }
   if (s.shaded) *s.shaded += shaded;
 }

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include "base/grid.h"
 #include "raster/plan.h"
@@ -38,6 +40,9 @@ struct Surface {
   /// One word per 8x8 block, row-major, bit 8 r + i per pixel: multisampling, the pixels whose samples
   /// differ; area coverage, the pixels a union primitive has accumulated coverage in.
   std::uint64_t* expanded = nullptr;
+  /// Multisampling test hook (RenderPlan::keep_samples): every pixel keeps a colour per sample from the
+  /// start, never one colour alone; the resolved bytes must be those of the compressed storage.
+  bool keep_samples = false;
   std::int64_t* shaded = nullptr;  ///< counts pixels shaded (once per pixel per triangle)
   Simd simd = Simd::sse2;          ///< the plan's choice of kernels
   std::uint64_t& expanded_bits(int bx, int by) const {  // the word of the block at image pixel (bx, by)
@@ -52,6 +57,33 @@ struct Surface {
   template <int C>  ///< the same, for kernels compiled for C channels (== channels)
   std::uint8_t* pixel(int x, int y) const {
     return color + index(x, y) * C;
+  }
+
+  // The multisample storage steps, for every kernel that writes samples (triangles, points).
+  template <int C>  ///< sample s of the pixel at `index`
+  std::uint8_t* sample_pixel(int s, std::size_t at) const {
+    return samples + (static_cast<std::size_t>(s) * plane + at) * C;
+  }
+  template <int C>  ///< the pixel at `index` is about to hold different colours: each sample takes its one
+  void expand(std::size_t at) const {
+    for (int s = 0; s < sample_count; ++s) std::memcpy(sample_pixel<C>(s, at), color + at * C, C);
+  }
+  /// The pixels of `bits` in the block at image pixel (bx, by), whose word of `expanded` is `word`, have
+  /// just had one colour written to `color` for all their samples: it is stored once again (their bits
+  /// cleared), or, keeping samples, written through to each sample.
+  template <int C>
+  [[gnu::always_inline]] inline void one_colour(std::uint64_t& word, int bx, int by,
+                                                std::uint64_t bits) const {
+    if (!keep_samples) [[likely]] {
+      word &= ~bits;
+      return;
+    }
+    for (std::uint64_t m = bits; m; m &= m - 1)
+      expand<C>(index(bx + (std::countr_zero(m) & 7), by + (std::countr_zero(m) >> 3)));
+  }
+  template <int C>  ///< the same, finding the block's word
+  void one_colour(int bx, int by, std::uint64_t bits) const {
+    one_colour<C>(expanded_bits(bx, by), bx, by, bits);
   }
 };
 

@@ -87,6 +87,11 @@ Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoin
     std::memcpy(surface.pixel(rect.x0, y), image.pixels.data() + image_offset<C>(image, rect.x0, y),
                 row_bytes);
   if (surface.depth) std::fill_n(surface.depth, surface.plane * surface.sample_count, 0.0f);
+  if (plan.keep_samples && plan.coverage == Coverage::samples) {  // every pixel a colour per sample
+    surface.keep_samples = true;
+    std::fill_n(surface.expanded, surface.plane / 64, ~std::uint64_t{0});
+    for (std::size_t at = 0; at < surface.plane; ++at) surface.expand<C>(at);
+  }
   return surface;
 }
 

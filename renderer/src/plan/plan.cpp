@@ -390,6 +390,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   }
   plan_threads(scene, options, out);
   out.scalar_coverage = options.scalar_coverage;
+  out.keep_samples = options.keep_samples;
   out.simd = std::min(best_simd(), options.max_simd);
   out.tiles_in_place = !tally.any_3d && out.coverage == Coverage::centre && scene.width % 8 == 0;
   plan_buffers(out, tally.any_union);

@@ -89,9 +89,10 @@ class TriangleShader {
       if (msaa_) {  // every sample of these pixels now holds the colour: one value each again
         for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock)
           for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock)
-            surface_.expanded_bits(x0, y0) &=
-                ~(coverage_detail::row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0)) &
-                  coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0)));
+            surface_.template one_colour<C>(
+                x0, y0,
+                coverage_detail::row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0)) &
+                    coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0)));
         *surface_.shaded += std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0);
       }
       return;
@@ -139,9 +140,9 @@ class TriangleShader {
       const unsigned covered = covered_samples(masks, bit);
       const Rgba8 c = color_at(b, i, r, covered);
       const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
-      if (!((expanded >> bit) & 1)) expand(index), expanded |= std::uint64_t{1} << bit;
+      if (!((expanded >> bit) & 1)) surface_.template expand<C>(index), expanded |= std::uint64_t{1} << bit;
       for (unsigned k = covered; k; k &= k - 1)
-        put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
+        put<C>(surface_.template sample_pixel<C>(std::countr_zero(k), index), c, mode_.blend);
     }
     *surface_.shaded += std::popcount(b.mask & ~all);
   }
@@ -169,16 +170,6 @@ class TriangleShader {
   }
 
  private:
-  std::uint8_t* sample_pixel(int s, std::size_t index) const {
-    return surface_.samples + (static_cast<std::size_t>(s) * surface_.plane + index) * C;
-  }
-
-  // A pixel about to get different colours in different samples: each sample starts as its one colour.
-  void expand(std::size_t index) const {
-    const std::uint8_t* from = surface_.color + index * C;
-    for (int s = 0; s < surface_.sample_count; ++s) std::memcpy(sample_pixel(s, index), from, C);
-  }
-
   // Multisampling, pixels with every sample covered (2D). Opaque stores make a pixel's samples one colour
   // again; blending keeps them apart, each sample blended.
   void whole(const Block& b) {
@@ -190,8 +181,8 @@ class TriangleShader {
     std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
     *surface_.shaded += std::popcount(b.mask);
     if (!mode_.blend) {
-      expanded &= ~b.mask;
-      return shade_aliased(b);
+      shade_aliased(b);
+      return surface_.template one_colour<C>(expanded, b.x0, b.y0, b.mask);
     }
     const std::uint64_t mixed = b.mask & expanded;
     if (mixed != b.mask) {
@@ -204,7 +195,8 @@ class TriangleShader {
       const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
       const Rgba8 c = color_at(b, i, r, all);
       const std::size_t index = surface_.index(b.x0 + i, b.y0 + r);
-      for (int s = 0; s < surface_.sample_count; ++s) blend<C>(sample_pixel(s, index), c);
+      for (int s = 0; s < surface_.sample_count; ++s)
+        blend<C>(surface_.template sample_pixel<C>(s, index), c);
     }
   }
 
@@ -269,7 +261,6 @@ class TriangleShader {
       // Pixels whose every sample passed: one colour again, written as an aliased row writes it.
       unsigned whole = mode_.blend ? 0u : any;
       for (int s = 0; s < n; ++s) whole &= pass[s];
-      expanded &= ~(std::uint64_t{whole} << (8 * r));
       std::uint8_t* p = surface_.color + at * C;
       std::uint64_t r8 = 0, g8 = 0, b8 = 0, a8 = 0;  // the pixels' colours, byte i for lane i
       if (mode_.smooth) {
@@ -280,6 +271,7 @@ class TriangleShader {
       } else {
         for (unsigned m = whole; m; m &= m - 1) store<C>(p + std::countr_zero(m) * C, flat_);
       }
+      if (whole) surface_.template one_colour<C>(expanded, b.x0, b.y0, std::uint64_t{whole} << (8 * r));
       for (unsigned m = any & ~whole; m; m &= m - 1) {
         const int i = std::countr_zero(m), bit = 8 * r + i, shift = 8 * i;
         const std::size_t index = at + static_cast<std::size_t>(i);
@@ -292,7 +284,7 @@ class TriangleShader {
                 : flat_;
         if (passed == all && !mode_.blend) {
           store<C>(surface_.color + index * C, c);
-          expanded &= ~(std::uint64_t{1} << bit);
+          surface_.template one_colour<C>(expanded, b.x0, b.y0, std::uint64_t{1} << bit);
           continue;
         }
         if (!((expanded >> bit) & 1)) {
@@ -300,10 +292,10 @@ class TriangleShader {
             blend<C>(surface_.color + index * C, c);
             continue;
           }
-          expand(index), expanded |= std::uint64_t{1} << bit;
+          surface_.template expand<C>(index), expanded |= std::uint64_t{1} << bit;
         }
         for (unsigned k = passed; k; k &= k - 1)
-          put<C>(sample_pixel(std::countr_zero(k), index), c, mode_.blend);
+          put<C>(surface_.template sample_pixel<C>(std::countr_zero(k), index), c, mode_.blend);
       }
     }
   }
