@@ -528,7 +528,10 @@ int main(int argc, char** argv) {
     md += buf;
     const Row* bunny = find("bunny (3D)", level.label);
     const Row* bunny_aliased = find("bunny (3D)", "1");
-    if (bunny && bunny_aliased)
+    if (bunny && bunny_aliased && bunny->samples_used > 1 && level.area)  // 3D under "area" is multisampled
+      std::snprintf(buf, sizeof buf, " %.2f (%d samples) | %.2f |\n", bunny->ms / bunny_aliased->ms,
+                    bunny->samples_used, bunny->err.mean);
+    else if (bunny && bunny_aliased)
       std::snprintf(buf, sizeof buf, " %.2f | %.2f |\n", bunny->ms / bunny_aliased->ms, bunny->err.mean);
     else
       std::snprintf(buf, sizeof buf, " — | — |\n");
@@ -557,8 +560,9 @@ int main(int argc, char** argv) {
       "it costs per cut pixel, not per sample. Its limit is conflation: shapes are composited one after "
       "another, so where two shapes *share* an edge inside a pixel the background shows through (the fan "
       "and grid rows: a seam of the size shown above, about a quarter of the contrast on a half-covered "
-      "pixel). A line's two triangles and a polyline's segments are one shape (their coverage is summed, "
-      "at most 1, before compositing), so lines have no seam and translucent joints are not darker. Scenes "
+      "pixel). A line segment is one shape, its rectangle's four edges in one record, and a polyline's "
+      "segments are one shape too (their coverage is summed, at most 1, before compositing), so lines have "
+      "no seam and translucent joints are not darker. Scenes "
       "with 3D content get 8 samples instead (the plan says so): with depth, a triangle's share of a pixel "
       "is not what is visible.\n"
       "- **1 (default)**: exactly the GPU rules and the fastest; on edge pixels the error is the whole step "

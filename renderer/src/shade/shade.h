@@ -135,7 +135,25 @@ class TriangleShader {
       whole(w);
     }
     std::uint64_t& expanded = surface_.expanded_bits(b.x0, b.y0);
-    for (std::uint64_t m = b.mask & ~all; m; m &= m - 1) {
+    const std::uint64_t partial = b.mask & ~all;
+    if (kind_ == Kind::flat && !mode_.blend) {
+      // One colour, stored: sample plane by sample plane, with no pixel's samples gathered.
+      for (std::uint64_t m = partial & ~expanded; m; m &= m - 1)
+        surface_.template expand<C>(
+            surface_.index(b.x0 + (std::countr_zero(m) & 7), b.y0 + (std::countr_zero(m) >> 3)));
+      expanded |= partial;
+      const std::size_t first = surface_.index(b.x0, b.y0);
+      for (int s = 0; s < n; ++s) {
+        std::uint8_t* plane = surface_.template sample_pixel<C>(s, first);
+        for (std::uint64_t m = masks[s] & partial; m; m &= m - 1) {
+          const int bit = std::countr_zero(m);
+          store<C>(plane + (static_cast<std::size_t>(bit >> 3) * surface_.width + (bit & 7)) * C, flat_);
+        }
+      }
+      *surface_.shaded += std::popcount(partial);
+      return;
+    }
+    for (std::uint64_t m = partial; m; m &= m - 1) {
       const int bit = std::countr_zero(m), i = bit & 7, r = bit >> 3;
       const unsigned covered = covered_samples(masks, bit);
       const Rgba8 c = color_at(b, i, r, covered);
@@ -144,7 +162,7 @@ class TriangleShader {
       for (unsigned k = covered; k; k &= k - 1)
         put<C>(surface_.template sample_pixel<C>(std::countr_zero(k), index), c, mode_.blend);
     }
-    *surface_.shaded += std::popcount(b.mask & ~all);
+    *surface_.shaded += std::popcount(partial);
   }
 
   void shade_aliased(const Block& b) {
