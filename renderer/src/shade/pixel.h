@@ -139,39 +139,48 @@ void composite_union(const Surface& surface, Rect rect) {
 
 /// Multisampling: each pixel of `rect` whose samples differ becomes their mean, rounded to nearest (for
 /// formats with alpha, the mean of premultiplied values: a transparent sample adds no colour); the others
-/// already hold their one colour.
-template <int C>
+/// already hold their one colour. N is the sample count (a constant, so the loops unroll and the means
+/// divide by shifting).
+template <int C, int N>
 void resolve_samples(const Surface& surface, Rect rect) {
-  const int n = surface.sample_count;
   for (int y0 = rect.y0; y0 < rect.y1; y0 += 8)
     for (int x0 = rect.x0; x0 < rect.x1; x0 += 8) {
       std::uint64_t& bits = surface.expanded_bits(x0, y0);
       for (std::uint64_t m = bits; m; m &= m - 1) {
         const int bit = std::countr_zero(m);
         const std::size_t index = surface.index(x0 + (bit & 7), y0 + (bit >> 3));
-        auto sample = [&](int s) {
-          return surface.samples + (static_cast<std::size_t>(s) * surface.plane + index) * C;
-        };
+        auto sample = [&](int s) { return surface.sample_pixel<C>(s, index); };
         std::uint8_t* out = surface.color + index * C;
         if constexpr (C == 1 || C == 3) {
           for (int k = 0; k < C; ++k) {
             std::uint32_t sum = 0;
-            for (int s = 0; s < n; ++s) sum += sample(s)[k];
-            out[k] = static_cast<std::uint8_t>((sum + n / 2) / n);
+            for (int s = 0; s < N; ++s) sum += sample(s)[k];
+            out[k] = static_cast<std::uint8_t>((sum + N / 2) / N);
           }
         } else {
           std::uint32_t alpha = 0;
-          for (int s = 0; s < n; ++s) alpha += sample(s)[C - 1];
+          for (int s = 0; s < N; ++s) alpha += sample(s)[C - 1];
           for (int k = 0; k + 1 < C; ++k) {
             std::uint32_t weighted = 0;
-            for (int s = 0; s < n; ++s) weighted += std::uint32_t{sample(s)[k]} * sample(s)[C - 1];
+            for (int s = 0; s < N; ++s) weighted += std::uint32_t{sample(s)[k]} * sample(s)[C - 1];
             out[k] = alpha ? static_cast<std::uint8_t>((weighted + alpha / 2) / alpha) : 0;
           }
-          out[C - 1] = static_cast<std::uint8_t>((alpha + n / 2) / n);
+          out[C - 1] = static_cast<std::uint8_t>((alpha + N / 2) / N);
         }
       }
       bits = 0;
     }
+}
+template <int C>
+void resolve_samples(const Surface& surface, Rect rect) {
+  switch (surface.sample_count) {
+    case 4:
+      return resolve_samples<C, 4>(surface, rect);
+    case 8:
+      return resolve_samples<C, 8>(surface, rect);
+    default:  // 16: the plan's counts are kSampleCounts (scene.h)
+      return resolve_samples<C, 16>(surface, rect);
+  }
 }
 
 /// floor(x) for |x| < 2^62, without a library call.
