@@ -61,18 +61,14 @@ class TriangleShader {
       }
       z_columns_[0] = kLeftColumns * dz_dx, z_columns_[1] = kRightColumns * dz_dx;
       if (mode_.smooth) std::construct_at(&kernel_.color, call, at, back_facing ? -1.0f : 1.0f, dl_dx, dl_dy);
+      // Multisampled: depth is affine in screen space, so each sample's z is the centre's plus a constant.
+      if (msaa_)
+        for (int s = 0; s < surface.sample_count; ++s)
+          z_offset_[s] = static_cast<float>(dz_dx * (surface.pattern[s].x - 128) / 256.0 +
+                                            dz_dy_ * (surface.pattern[s].y - 128) / 256.0);
     }
 
     kind_ = depth[0] ? Kind::perspective : mode_.smooth ? Kind::smooth : Kind::flat;
-    if (msaa_ && depth[0]) {
-      // Depth is affine in screen space: each sample's z is the centre's plus a constant per sample.
-      double dz_dx = 0, dz_dy = 0;
-      for (int k = 0; k < 3; ++k)
-        dz_dx += step_x[k] * depth_[k] / area, dz_dy += step_y[k] * depth_[k] / area;
-      for (int s = 0; s < surface.sample_count; ++s)
-        z_offset_[s] = static_cast<float>(dz_dx * (surface.pattern[s].x - 128) / 256.0 +
-                                          dz_dy * (surface.pattern[s].y - 128) / 256.0);
-    }
     if (kind_ == Kind::flat) std::construct_at(&kernel_.fill, surface, flat_, mode_.blend);
     if (kind_ == Kind::smooth)
       std::construct_at(&kernel_.planes, surface, at[static_cast<int>(Varying::color)], step_x, step_y, area,
