@@ -191,4 +191,30 @@ TEST(Line, AQuadGivesTheBytesOfItsTwoTriangles) {
   EXPECT_GT(compared, 250);
 }
 
+// The corners of the quads the plan may refuse or setup may find degenerate: widths far below the 1/256 px
+// grid (corners snapped onto each other, or a twisted rectangle, left to the triangles), a width whose
+// rectangle leaves the fast range, and endpoints at its edge. Each renders as its two triangles do.
+TEST(Line, ExtremeQuadsGiveTheBytesOfTheirTriangles) {
+  const double widths[] = {1e-4, 0.003, 0.0045, 3, 4096};  // 4096: the most a line may be
+  const std::pair<Point2, Point2> ends[] = {{{3.2, 5.1}, {44.7, 30.2}},
+                                            {{-32760.3, 20.5}, {32760.1, 21.7}},
+                                            {{20.25, -32000}, {21.75, 32000}},
+                                            {{10, 10}, {10.001, 40}}};
+  for (const double width : widths)
+    for (const auto& [a, b] : ends)
+      for (int samples : {1, 4}) {
+        SceneBuilder line(48, 48, Rgba8{30, 30, 30, 255});
+        line.line(a, b, Rgba8{250, 200, 10, 160});
+        line.scene.primitives.back().width = static_cast<float>(width);
+        line.scene.antialias = test::multisample(samples);
+        SceneBuilder triangles(48, 48, Rgba8{30, 30, 30, 255});
+        const std::array<Point2, 4> r = rectangle_of(a, b, static_cast<float>(width));
+        triangles.triangle(r[0], r[1], r[2], Rgba8{250, 200, 10, 160})
+            .triangle(r[0], r[2], r[3], Rgba8{250, 200, 10, 160});
+        triangles.scene.antialias = line.scene.antialias;
+        ASSERT_EQ(test::render(line.scene).pixels, test::render(triangles.scene).pixels)
+            << "width " << width << " from " << a.x << "," << a.y << " at " << samples << " samples";
+      }
+}
+
 }  // namespace
