@@ -8,7 +8,8 @@
 
 namespace raster::detail {
 
-/// Area coverage: the share of a pixel's square inside a triangle, in (0, 1], for the pixels an edge cuts.
+/// Area coverage: the share of a pixel's square inside a shape (a triangle, a line quad), in (0, 1], for the
+/// pixels an edge cuts.
 /// Entry 8 r + i is pixel (x0 + i, y0 + r) of the block; only the entries of `partial`'s set bits are
 /// meaningful.
 struct AreaCover {

@@ -117,9 +117,9 @@ class TriangleShader {
   }
 
   /// Multisampling: `masks[s]` are the pixels whose sample s is covered, `b.mask` their union, and
-  /// masks[sample_count] the pixels whose centre is covered. Each pixel
-  /// is shaded once (at its centre, or at the centroid of its covered samples when the centre is outside)
-  /// and the colour goes to the covered samples; whole pixels take the aliased path.
+  /// masks[sample_count] the pixels whose centre is covered. Each pixel is shaded once (at its centre, or at
+  /// the centroid of its covered samples when the centre is outside) and the colour goes to the covered
+  /// samples; whole pixels take the aliased path.
   void samples(const Block& b, const std::uint64_t* masks) {
     const int n = surface_.sample_count;
     if (kind_ == Kind::perspective) return depth_samples(b, masks);
