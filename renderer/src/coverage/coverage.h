@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <type_traits>
 
 #if defined(__SSE2__)
@@ -173,9 +174,10 @@ template <int N, int kEdges>
 __attribute__((target("avx2"))) inline void sample_masks_avx2(
     const std::int32_t (&e)[kEdges], const std::int32_t (&dx)[kEdges], const std::int32_t (&dy)[kEdges],
     unsigned crossing, const std::int32_t (&offset)[kEdges][16], int r0, int r1, std::uint64_t* masks) {
-  std::uint64_t out[N + 1];
+  // A byte a row: each row's eight bits are one store, not a shift and an and into a 64-bit word.
+  alignas(8) std::uint8_t out[N + 1][8];
   const std::uint64_t rows = row_mask(r0, r1);
-  for (int s = 0; s <= N; ++s) out[s] = rows;
+  for (int s = 0; s <= N; ++s) std::memcpy(out[s], &rows, 8);
   for (int k = 0; k < kEdges; ++k) {
     if (!(crossing & (1u << k))) continue;
     __m256i row = _mm256_add_epi32(
@@ -185,13 +187,12 @@ __attribute__((target("avx2"))) inline void sample_masks_avx2(
     for (int r = r0; r < r1; ++r, row = _mm256_add_epi32(row, down)) {
       for (int s = 0; s < N; ++s) {
         const __m256i at = _mm256_add_epi32(row, _mm256_set1_epi32(offset[k][s]));
-        const auto negative = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(at)));
-        out[s] &= ~(static_cast<std::uint64_t>(negative) << (8 * r));
+        out[s][r] &= static_cast<std::uint8_t>(~_mm256_movemask_ps(_mm256_castsi256_ps(at)));
       }
-      out[N] &= ~(static_cast<std::uint64_t>(_mm256_movemask_ps(_mm256_castsi256_ps(row))) << (8 * r));
+      out[N][r] &= static_cast<std::uint8_t>(~_mm256_movemask_ps(_mm256_castsi256_ps(row)));
     }
   }
-  for (int s = 0; s <= N; ++s) masks[s] = out[s];
+  for (int s = 0; s <= N; ++s) std::memcpy(&masks[s], out[s], 8);
 }
 #endif
 
