@@ -3,6 +3,8 @@
 // for every scene class, checked against what a render actually allocates.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cmath>
 #include <random>
 #include <set>
@@ -382,6 +384,58 @@ TEST(Multisample, EverySampleFollowsTheRuleAndEachPixelIsShadedOnce) {
       control.stats = &stats;
       raster::render(smooth.scene, raster::plan(smooth.scene), control);
       EXPECT_EQ(stats.shaded_pixels, touched) << samples << " samples, triangle " << n;
+    }
+  }
+}
+
+// Lines (one quad a segment) and slivers at every orientation against the same literal reference: each
+// sample is inside the rectangle's two triangles (the corners geometry makes, on the 1/256 grid; the
+// triangles share their diagonal, so by the top-left rule a sample is in at most one) or the sliver, moved
+// by the sample's offset, and each resolved pixel is round(255 k / N) for the k samples covered.
+TEST(Multisample, LinesAndSliversCoverEverySampleTheRuleCovers) {
+  std::mt19937 rng(4343);
+  std::uniform_real_distribution<double> unit(0, 1);
+  constexpr int kSide = 40;
+  for (int samples : {4, 8, 16}) {
+    const auto& pattern = raster::detail::sample_pattern(samples);
+    for (int n = 0; n < 24; ++n) {
+      const double angle = n * M_PI / 12 + unit(rng) * 0.1, length = 5 + unit(rng) * 40;
+      const Point2 a{4 + unit(rng) * 32, 4 + unit(rng) * 32},
+          b{a.x + length * std::cos(angle), a.y + length * std::sin(angle)};
+      const double width = n % 2 ? 0.3 + unit(rng) * 4 : 0.02 + unit(rng) * 0.2;  // line, sliver thickness
+      const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+      const double nx = -dy / len * width / 2, ny = dx / len * width / 2;
+      std::vector<std::array<Point2, 3>> triangles;
+      test::SceneBuilder scene(kSide, kSide, kBlack);
+      if (n % 2) {  // a line: its rectangle's two triangles, with the corners as geometry makes them
+        const Point2 q[4] = {
+            {a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
+        triangles = {{q[0], q[1], q[2]}, {q[0], q[2], q[3]}};
+        scene.line(a, b, test::kWhite);
+        scene.scene.primitives.back().width = static_cast<float>(width);
+      } else {  // a sliver: a triangle as thin as `width` at its wide end
+        const Point2 c{b.x + 2 * nx, b.y + 2 * ny};
+        triangles = {{a, b, c}};
+        scene.triangle(a, b, c, test::kWhite);
+      }
+      scene.scene.antialias = test::multisample(samples);
+      std::vector<int> count(kSide * kSide, 0);
+      for (const auto& s : pattern) {
+        const double mx = (128 - s.x) / 256.0, my = (128 - s.y) / 256.0;
+        for (const auto& t : triangles) {
+          const ref::Coverage cov = ref::triangle(t[0].x + mx, t[0].y + my, t[1].x + mx, t[1].y + my,
+                                                  t[2].x + mx, t[2].y + my, kSide, kSide);
+          for (int i = 0; i < kSide * kSide; ++i) count[i] += cov.mask[i];
+        }
+      }
+      const raster::Image img = test::render(scene.scene);
+      for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) {
+          const int k = count[y * kSide + x];
+          ASSERT_LE(k, samples) << "a sample in both triangles";
+          ASSERT_EQ(test::pixel(img, x, y).r, (255 * k + samples / 2) / samples)
+              << samples << " samples, " << (n % 2 ? "line " : "sliver ") << n << ", pixel " << x << "," << y;
+        }
     }
   }
 }
