@@ -507,9 +507,8 @@ int main(int argc, char** argv) {
       "\n## Each level in one table\n\nMedians over the seven 2D scenes of this run (time as a multiple of "
       "the same scene aliased, with the least and the most; error over edge pixels, in 1/255), and the bunny "
       "(3D):\n\n"
-      "| anti-aliasing | 2D time × aliased | 2D mean error | 2D p99 error | bunny time × aliased | bunny "
-      "mean "
-      "error |\n|---|---:|---:|---:|---:|---:|\n";
+      "| anti-aliasing | 2D time × aliased | 2D mean error | 2D p99 error | bunny time × aliased |"
+      " bunny mean error |\n|---|---:|---:|---:|---:|---:|\n";
   for (const Level& level : kLevels) {
     std::vector<double> times, means, p99s;
     std::string name;
@@ -562,9 +561,8 @@ int main(int argc, char** argv) {
       "and grid rows: a seam of the size shown above, about a quarter of the contrast on a half-covered "
       "pixel). A line segment is one shape, its rectangle's four edges in one record, and a polyline's "
       "segments are one shape too (their coverage is summed, at most 1, before compositing), so lines have "
-      "no seam and translucent joints are not darker. Scenes "
-      "with 3D content get 8 samples instead (the plan says so): with depth, a triangle's share of a pixel "
-      "is not what is visible.\n"
+      "no seam and translucent joints are not darker. Scenes with 3D content get 8 samples instead (the plan "
+      "says so): with depth, a triangle's share of a pixel is not what is visible.\n"
       "- **1 (default)**: exactly the GPU rules and the fastest; on edge pixels the error is the whole step "
       "between two colours, by design.\n"
       "- **4, 8, 16 samples**: coverage per sample position (Direct3D's patterns), each pixel shaded once "
