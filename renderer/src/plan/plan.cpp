@@ -262,18 +262,19 @@ Tally plan_draws(const Scene& scene, RenderPlan& out) {
   Tally tally;
   tally.grey = scene.background.is_grey();
   const LightFacts lights = light_facts(scene);
+  // Each draw is planned where it is kept, not copied there (a culled one is taken back). Not reserved for
+  // every primitive: culled ones would hold memory the plan's estimate, which counts draws, does not.
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& prim = scene.primitives[i];
-    DrawPlan draw;
+    DrawPlan& draw = out.draws.emplace_back();
     draw.primitive = static_cast<std::uint32_t>(i);
     const bool visible = prim.kind == PrimitiveKind::mesh
                              ? plan_mesh(scene.meshes[prim.mesh], lights, draw, out, tally)
                              : plan_shape(scene, prim, draw, out, tally);
     if (!visible) {
+      out.draws.pop_back();
       ++out.culled_count;
-      continue;
     }
-    out.draws.push_back(draw);
   }
   return tally;
 }
