@@ -186,9 +186,9 @@ void point_size_table() {
     if (u + v > 1) u = 1 - u, v = 1 - v;
     const raster::Vec3 a = at(mesh.triangles[t][0]), b = at(mesh.triangles[t][1]),
                        c = at(mesh.triangles[t][2]);
-    cloud.positions.push_back({a.x + u * (b.x - a.x) + v * (c.x - a.x),
-                               a.y + u * (b.y - a.y) + v * (c.y - a.y),
-                               a.z + u * (b.z - a.z) + v * (c.z - a.z)});
+    cloud.positions.push_back(raster::Vec3f(raster::Vec3{a.x + u * (b.x - a.x) + v * (c.x - a.x),
+                                                         a.y + u * (b.y - a.y) + v * (c.y - a.y),
+                                                         a.z + u * (b.z - a.z) + v * (c.z - a.z)}));
     cloud.points.push_back(static_cast<std::uint32_t>(i));
   }
   cloud.colors = {colour};

@@ -40,7 +40,7 @@ std::string model_obj(const std::string& model, std::string& query) {
   std::string obj;
   obj.reserve(mesh.positions.size() * 40 + mesh.triangles.size() * 30);
   char line[128];
-  for (const raster::Vec3& v : mesh.positions) {
+  for (const raster::Vec3f& v : mesh.positions) {
     const int n = std::snprintf(line, sizeof line, "v %.7g %.7g %.7g\n", v.x, v.y, v.z);
     obj.append(line, static_cast<std::size_t>(n));
   }

@@ -264,8 +264,7 @@ int main(int argc, char** argv) {
     const raster::Mesh& m = s.meshes[0];
     // Area-weighted vertex normals (rasterd weighs by angle; the lighting work is the same).
     std::vector<float> xyz, normal(m.positions.size() * 3, 0.0f);
-    for (const raster::Vec3& p : m.positions)
-      xyz.insert(xyz.end(), {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+    for (const raster::Vec3f& p : m.positions) xyz.insert(xyz.end(), {p.x, p.y, p.z});
     std::vector<GLuint> index;
     for (const auto& t : m.triangles) {
       const raster::Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];

@@ -22,8 +22,8 @@ raster::Mesh uv_sphere(int n) {
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j) {
       const double theta = pi * i / n, phi = 2 * pi * j / n;
-      mesh.positions.push_back(
-          {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+      mesh.positions.push_back(raster::Vec3f(
+          raster::Vec3{std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)}));
     }
   auto at = [n](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
   for (int i = 0; i < n; ++i)
@@ -195,7 +195,7 @@ raster::Scene mesh_scene(const std::string& kind, const std::string& bunny_path)
     const double golden = std::acos(-1.0) * (3 - std::sqrt(5.0));
     for (int i = 0; i < n; ++i) {
       const double y = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - y * y), phi = golden * i;
-      mesh.positions.push_back({r * std::cos(phi), y, r * std::sin(phi)});
+      mesh.positions.push_back(raster::Vec3f(raster::Vec3{r * std::cos(phi), y, r * std::sin(phi)}));
       mesh.points.push_back(static_cast<std::uint32_t>(i));
     }
     mesh.colors = {{220, 200, 180, 255}};

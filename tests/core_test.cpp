@@ -212,8 +212,8 @@ raster::Scene sphere_scene(int n, int side) {
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j) {
       const double theta = pi * i / n, phi = 2 * pi * j / n;
-      mesh.positions.push_back(
-          {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+      mesh.positions.push_back(raster::Vec3f(
+          raster::Vec3{std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)}));
       mesh.colors.push_back(
           {static_cast<std::uint8_t>(i * 255 / n), static_cast<std::uint8_t>(j * 255 / n), 128, 255});
       mesh.uvs.push_back({static_cast<float>(j) / n * 4, static_cast<float>(i) / n * 4});
@@ -288,8 +288,9 @@ std::vector<MeshCase> simd_mesh_cases(unsigned seed) {
   std::vector<MeshCase> cases;
   cases.push_back({"lit smooth, computed normals", base});
   raster::Scene given = base;
-  for (const raster::Vec3& p : m.positions)
-    given.meshes[0].normals.push_back({p.x + jitter(rng), p.y + jitter(rng), p.z + jitter(rng)});
+  for (const raster::Vec3 p : m.positions)
+    given.meshes[0].normals.push_back(
+        raster::Vec3f(raster::Vec3{p.x + jitter(rng), p.y + jitter(rng), p.z + jitter(rng)}));
   given.meshes[0].normal_triangles = m.triangles;
   cases.push_back({"lit smooth, given normals", given});
   raster::Scene coloured = base;

@@ -239,7 +239,7 @@ TEST(Lights, GreyImagesAreLitAsEachChannelOfAnRgbImage) {
   raster::Mesh grid;
   for (int j = 0; j <= 6; ++j)
     for (int i = 0; i <= 6; ++i) {
-      grid.positions.push_back({i / 3.0 - 1, j / 3.0 - 1, bump(rng)});
+      grid.positions.push_back(raster::Vec3f(raster::Vec3{i / 3.0 - 1, j / 3.0 - 1, bump(rng)}));
       const auto v = static_cast<std::uint8_t>(rng());
       grid.colors.push_back({v, v, v, 255});
     }

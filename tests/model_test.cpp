@@ -162,7 +162,7 @@ TEST(Models, PlyVertexPropertiesAreReadInEveryEncoding) {
   const raster::Mesh mesh = raster::parse_ply(ascii);
   ASSERT_EQ(mesh.positions.size(), 3u);
   EXPECT_EQ(mesh.positions[2], (raster::Vec3{0, 3, 0.5}));
-  EXPECT_EQ(mesh.normals, std::vector<raster::Vec3>(3, raster::Vec3{0, 0, 1}));
+  EXPECT_EQ(mesh.normals, std::vector<raster::Vec3f>(3, raster::Vec3f{0, 0, 1}));
   EXPECT_EQ(mesh.colors,
             (std::vector<raster::Rgba8>{{0, 128, 255, 255}, {10, 128, 255, 255}, {20, 128, 255, 255}}));
   EXPECT_EQ(mesh.triangles, (std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}}));

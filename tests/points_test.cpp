@@ -49,7 +49,7 @@ Mesh cloud(const std::vector<std::array<double, 3>>& points, const std::vector<R
   Mesh m;
   for (const auto& p : points) {
     m.points.push_back(static_cast<std::uint32_t>(m.positions.size()));
-    m.positions.push_back(at_pixel(p[0], p[1], p[2]));
+    m.positions.push_back(raster::Vec3f(at_pixel(p[0], p[1], p[2])));
   }
   m.colors = colors;
   m.point_size = size;
@@ -59,7 +59,9 @@ Mesh cloud(const std::vector<std::array<double, 3>>& points, const std::vector<R
 // A square at depth z covering the image points [x0, x1] x [y0, y1], one colour, unlit.
 Mesh square(double x0, double y0, double x1, double y1, double z, Rgba8 color) {
   Mesh m;
-  m.positions = {at_pixel(x0, y1, z), at_pixel(x1, y1, z), at_pixel(x1, y0, z), at_pixel(x0, y0, z)};
+  for (const raster::Vec3& p :
+       {at_pixel(x0, y1, z), at_pixel(x1, y1, z), at_pixel(x1, y0, z), at_pixel(x0, y0, z)})
+    m.positions.push_back(raster::Vec3f(p));
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
   m.colors = {color};
   m.shading = raster::Shading::unlit;

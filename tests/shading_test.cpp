@@ -185,12 +185,12 @@ raster::Scene random_triangle_scene(std::mt19937& rng, bool textured, bool cut =
   s.camera.eye = {0, 0, 5}, s.camera.target = {0, 0, 0}, s.camera.fov_deg = 50;
   s.camera.near = 0.5, s.camera.far = 20;
   raster::Mesh m;
-  for (int k = 0; k < 3; ++k) m.positions.push_back({at(rng), at(rng), at(rng)});
-  if (cut) m.positions[0].z = 4.6 + 1.5 * unit(rng);
+  for (int k = 0; k < 3; ++k) m.positions.push_back(raster::Vec3f(raster::Vec3{at(rng), at(rng), at(rng)}));
+  if (cut) m.positions[0].z = static_cast<float>(4.6 + 1.5 * unit(rng));
   m.triangles = {{0, 1, 2}};
   const Vec3 face = normalize(cross(m.positions[1] - m.positions[0], m.positions[2] - m.positions[0]));
   for (int k = 0; k < 3; ++k) {
-    m.normals.push_back((face + random_unit(rng) * (0.8 * unit(rng))) * (0.2 + 3 * unit(rng)));
+    m.normals.push_back(raster::Vec3f((face + random_unit(rng) * (0.8 * unit(rng))) * (0.2 + 3 * unit(rng))));
     m.colors.push_back({static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
                         static_cast<std::uint8_t>(rng()), 255});
   }

@@ -75,7 +75,7 @@ raster::Rgba8 reference_bilinear(const Texture& t, double u, double v) {
 // A unit quad [-1, 1]^2 at z = 0 (or as given), uv 0..1 over it, unlit white, textured.
 Mesh textured_quad(Texture texture, const raster::Vec3 (&corners)[4]) {
   Mesh m;
-  m.positions.assign(corners, corners + 4);
+  for (const raster::Vec3& c : corners) m.positions.push_back(raster::Vec3f(c));
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
   m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   m.uv_triangles = m.triangles;

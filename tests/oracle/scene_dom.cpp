@@ -381,23 +381,24 @@ void read_mesh_options(const json& v, const Path& pointer, Mesh& mesh) {
 
 namespace {
 
-// positions: [[x,y,z], ...] or [x,y,z, x,y,z, ...]; likewise normals.
-std::vector<Vec3> read_vec3_list(const json& v, const Path& pointer) {
+// positions: [[x,y,z], ...] or [x,y,z, x,y,z, ...]; likewise normals. Held as floats, as a Mesh holds them.
+std::vector<Vec3f> read_vec3_list(const json& v, const Path& pointer) {
   if (!v.is_array())
     invalid(pointer, std::string("expected an array of [x, y, z] or of numbers, got ") + type_name(v));
-  std::vector<Vec3> out;
+  std::vector<Vec3f> out;
   if (!v.empty() && v[0].is_number()) {
     if (v.size() % 3 != 0)
       invalid(pointer, "a flat list holds x, y, z triples; its length " + std::to_string(v.size()) +
                            " is not a multiple of 3");
     out.reserve(v.size() / 3);
     for (std::size_t k = 0; k < v.size(); k += 3)
-      out.push_back({read_coordinate(v[k], Path(pointer, k)), read_coordinate(v[k + 1], Path(pointer, k + 1)),
-                     read_coordinate(v[k + 2], Path(pointer, k + 2))});
+      out.push_back(
+          Vec3f(Vec3{read_coordinate(v[k], Path(pointer, k)), read_coordinate(v[k + 1], Path(pointer, k + 1)),
+                     read_coordinate(v[k + 2], Path(pointer, k + 2))}));
     return out;
   }
   out.reserve(v.size());
-  for (std::size_t k = 0; k < v.size(); ++k) out.push_back(read_vec3(v[k], Path(pointer, k)));
+  for (std::size_t k = 0; k < v.size(); ++k) out.push_back(Vec3f(read_vec3(v[k], Path(pointer, k))));
   return out;
 }
 
@@ -664,7 +665,7 @@ Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limi
 Mesh mesh_of_3d_primitive(const Primitive& p, std::span<const double> coords, std::span<const Rgba8> colors) {
   Mesh mesh;
   for (std::size_t k = 0; k + 2 < coords.size(); k += 3)
-    mesh.positions.push_back({coords[k], coords[k + 1], coords[k + 2]});
+    mesh.positions.push_back(Vec3f(Vec3{coords[k], coords[k + 1], coords[k + 2]}));
   mesh.colors.assign(colors.begin(), colors.end());
   mesh.shading = Shading::unlit;
   const auto n = static_cast<std::uint32_t>(mesh.positions.size());

@@ -35,6 +35,26 @@ struct Vec3 {
   friend bool operator==(const Vec3&, const Vec3&) = default;
 };
 
+/// A point or direction stored in single precision, as model files (STL, PLY, glTF) and GPUs hold them: a
+/// mesh's positions and normals are these, 12 bytes a vertex where a Vec3 takes 24, so a model of a million
+/// vertices is 12 MB of positions. Geometry widens them to Vec3 (exactly) before any arithmetic.
+struct Vec3f {
+  float x = 0, y = 0, z = 0;
+  constexpr Vec3f() = default;
+  constexpr Vec3f(float x_, float y_, float z_) : x(x_), y(y_), z(z_) {}
+  /// The nearest floats to `v`'s coordinates; a coordinate beyond the float range (up to kMaxCoordinate,
+  /// 2^128, which a scene may give) saturates at +-FLT_MAX instead of becoming infinite.
+  explicit Vec3f(const Vec3& v) : x(narrow(v.x)), y(narrow(v.y)), z(narrow(v.z)) {}
+  constexpr operator Vec3() const { return {x, y, z}; }  ///< widening is exact
+  friend bool operator==(const Vec3f&, const Vec3f&) = default;
+
+  /// `d` rounded to the nearest float, +-FLT_MAX past the float range (NaN stays NaN).
+  static float narrow(double d) {
+    constexpr double kMax = 3.4028234663852886e38;  // FLT_MAX
+    return static_cast<float>(d > kMax ? kMax : d < -kMax ? -kMax : d);
+  }
+};
+
 /// A 4x4 matrix, row-major, acting on column vectors: p' = M p.
 struct Mat4 {
   std::array<double, 16> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
@@ -107,15 +127,18 @@ inline constexpr float kDefaultPointSize = 2.5f;
 
 /// Triangles, segments and points in model space, drawn through the camera with a depth test.
 struct Mesh {
-  std::vector<Vec3> positions;                          ///< model units
+  std::vector<Vec3f> positions;                         ///< model units
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into positions; counter-clockwise = front
   std::vector<std::array<std::uint32_t, 2>> segments;   ///< indices into positions; drawn with the line rule
   /// Indices into positions, each drawn as a round point: a disc `point_size` pixels across at the projected
   /// position, at that position's depth, in its vertex colour, unlit (points carry no normal).
   std::vector<std::uint32_t> points;
   float point_size = kDefaultPointSize;  ///< pixels, the points' diameter, in (0, 64]
-  std::vector<Vec3> normals;  ///< model space, any length; empty: computed when lighting needs them
-  std::vector<std::array<std::uint32_t, 3>> normal_triangles;  ///< per triangle, indices into normals
+  /// Model space, not necessarily unit length. Empty: computed when lighting needs them. Without
+  /// normal_triangles, one per position (indexed as the positions are).
+  std::vector<Vec3f> normals;
+  /// Per triangle, indices into normals; empty: normals (when given) are indexed as positions are.
+  std::vector<std::array<std::uint32_t, 3>> normal_triangles;
   std::vector<Rgba8> colors;       ///< one per position, or exactly one for the whole mesh
   std::vector<Rgba8> face_colors;  ///< empty, or one per triangle (OBJ materials' Kd); wins over colors
   /// Texture coordinates: u to the right, v up (v = 0 is the image's bottom row, as OBJ and OpenGL have

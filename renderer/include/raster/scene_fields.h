@@ -26,7 +26,7 @@ constexpr auto fields(T& s) {
     return std::tie(s.r, s.g, s.b, s.a);
   else if constexpr (std::is_same_v<U, Point2>)
     return std::tie(s.x, s.y);
-  else if constexpr (std::is_same_v<U, Vec3>)
+  else if constexpr (std::is_same_v<U, Vec3> || std::is_same_v<U, Vec3f>)
     return std::tie(s.x, s.y, s.z);
   else if constexpr (std::is_same_v<U, Mat4>)
     return std::tie(s.m);
@@ -79,6 +79,8 @@ static_assert(complete<Rgba8>() && complete<Point2>() && complete<Vec3>() && com
                   complete<Texture>() && complete<Edges>() && complete<Material>() && complete<Mesh>() &&
                   complete<Camera>() && complete<Light>() && complete<Primitive>() && complete<Scene>(),
               "a struct of scene.h has a field that raster::fields() does not list");
+// Vec3f has constructors, so the count above cannot see its fields; it is three floats and nothing else.
+static_assert(sizeof(Vec3f) == 3 * sizeof(float));
 
 // Values whose bytes are their whole content: numbers, enums, and structs or arrays of them without padding.
 template <class T>

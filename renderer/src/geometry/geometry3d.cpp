@@ -375,8 +375,7 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
           vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
                          mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1, view.plan.simd, meter);
     else
-      for (const Vec3& n : mesh.normals)
-        job.normals.push_back(normalize(transform_point(to_world_normal, n)));
+      for (const Vec3 n : mesh.normals) job.normals.push_back(normalize(transform_point(to_world_normal, n)));
     if (meter.stopped()) return;
   }
   DrawCall call = make_call(mode);

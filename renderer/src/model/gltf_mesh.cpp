@@ -211,14 +211,15 @@ class MeshBuilder {
     });
     make_room(mesh_.positions, positions.count());
     mesh_.positions.resize(base + positions.count());
-    Vec3* out = mesh_.positions.data() + base;
-    // Every coordinate finite and within +-2^128 (what the renderer takes): checked once, without a branch
-    // (or a chain of additions) per vertex, and only then is the bad one looked for.
-    bool in_range = true;
+    Vec3f* out = mesh_.positions.data() + base;
+    // Every coordinate finite and within +-2^128 (what the renderer takes): checked as it is stored, the
+    // first bad one remembered for the error.
+    std::size_t bad = SIZE_MAX;
     auto put = [&](std::size_t i, const Vec3& w) {
-      in_range &= (std::fabs(w.x) <= kMaxCoordinate) & (std::fabs(w.y) <= kMaxCoordinate) &
-                  (std::fabs(w.z) <= kMaxCoordinate);
-      out[i] = w;
+      const bool ok = (std::fabs(w.x) <= kMaxCoordinate) & (std::fabs(w.y) <= kMaxCoordinate) &
+                      (std::fabs(w.z) <= kMaxCoordinate);
+      if (!ok && bad == SIZE_MAX) bad = i;
+      out[i] = Vec3f(w);
     };
     if (m == kIdentity)  // most nodes: no transform to apply
       positions.each_vec3([&](std::size_t i, double x, double y, double z) { put(i, {x, y, z}); });
@@ -227,12 +228,9 @@ class MeshBuilder {
         put(i, {m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13],
                 m[2] * x + m[6] * y + m[10] * z + m[14]});
       });
-    if (!in_range)
-      for (std::size_t i = 0; i < positions.count(); ++i)
-        if (!(std::fabs(out[i].x) <= kMaxCoordinate && std::fabs(out[i].y) <= kMaxCoordinate &&
-              std::fabs(out[i].z) <= kMaxCoordinate))
-          gltf_error(positions.what() + " element " + std::to_string(i) +
-                     " is not a finite point within +-2^128 (after its node's transform)");
+    if (bad != SIZE_MAX)
+      gltf_error(positions.what() + " element " + std::to_string(bad) +
+                 " is not a finite point within +-2^128 (after its node's transform)");
   }
 
   // The primitive's NORMALs, turned with its node, after those of earlier primitives (zeros where they had
@@ -247,8 +245,8 @@ class MeshBuilder {
     make_room(mesh_.normals, base + count - mesh_.normals.size());
     mesh_.normals.resize(base);
     normals.each_vec3([&](std::size_t, double x, double y, double z) {
-      mesh_.normals.push_back(
-          {n[0] * x + n[1] * y + n[2] * z, n[3] * x + n[4] * y + n[5] * z, n[6] * x + n[7] * y + n[8] * z});
+      mesh_.normals.push_back(Vec3f(Vec3{n[0] * x + n[1] * y + n[2] * z, n[3] * x + n[4] * y + n[5] * z,
+                                         n[6] * x + n[7] * y + n[8] * z}));
     });
     return true;
   }
@@ -270,7 +268,8 @@ class MeshBuilder {
         const Vec3 a = pos[tri[0]], b = pos[tri[1]], c = pos[tri[2]];
         const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z}, v{c.x - a.x, c.y - a.y, c.z - a.z};
         const auto k = static_cast<std::uint32_t>(mesh_.normals.size());
-        mesh_.normals.push_back({u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x});
+        mesh_.normals.push_back(
+            Vec3f(Vec3{u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x}));
         mesh_.normal_triangles[t] = {k, k, k};
       }
   }

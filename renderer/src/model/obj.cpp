@@ -190,10 +190,10 @@ Mesh vertices_of(const tinyobj::attrib_t& attrib) {
   Mesh mesh;
   mesh.positions.reserve(attrib.vertices.size() / 3);
   for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
-    mesh.positions.push_back({attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]});
+    mesh.positions.push_back(Vec3f(Vec3{attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]}));
   mesh.normals.reserve(attrib.normals.size() / 3);
   for (std::size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
-    mesh.normals.push_back({attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]});
+    mesh.normals.push_back(Vec3f(Vec3{attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]}));
   if (!attrib.colors.empty() && attrib.colors.size() == attrib.vertices.size()) {
     for (std::size_t i = 0; i + 2 < attrib.colors.size(); i += 3)
       mesh.colors.push_back({unit_byte(attrib.colors[i]), unit_byte(attrib.colors[i + 1]),
@@ -229,7 +229,7 @@ void reserve_triangles(const std::vector<tinyobj::shape_t>& shapes, const Counts
 
 // The triangles of the face of `n` corners from idx[first], as indices into its corners, into `pieces`.
 void split_face(const std::vector<tinyobj::index_t>& idx, std::size_t first, std::size_t n,
-                const std::vector<Vec3>& positions, PolygonSplitter& splitter, std::vector<Vec3>& polygon,
+                const std::vector<Vec3f>& positions, PolygonSplitter& splitter, std::vector<Vec3>& polygon,
                 std::vector<std::array<std::uint32_t, 3>>& pieces) {
   pieces.clear();
   if (n == 3) return pieces.push_back({0, 1, 2});

@@ -373,8 +373,8 @@ inline void store(Mesh& mesh, const Layout& l, const Values& in, std::uint64_t i
         std::fabs(pos.z) <= kMaxCoordinate))
     ply_error("vertex " + std::to_string(i) + " has a coordinate that is not a finite number within +-2^128",
               in.ascii() ? in.line() : 0, in.ascii() ? 0 : in.byte());
-  mesh.positions[i] = pos;
-  if (l.normals) mesh.normals[i] = normal;
+  mesh.positions[i] = Vec3f(pos);
+  if (l.normals) mesh.normals[i] = Vec3f(normal);
   if (l.colours) mesh.colors[i] = colour;
 }
 

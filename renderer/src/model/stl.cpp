@@ -178,7 +178,7 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
       if (iequal(w, "endloop")) break;
       if (!iequal(w, "vertex")) stl_error("expected \"vertex\" or \"endloop\", got " + quoted(w), in.line());
       const double x = number(in), y = number(in), z = number(in);
-      mesh.positions.push_back({x, y, z});
+      mesh.positions.push_back(Vec3f(Vec3{x, y, z}));
       meter.add(1);
     }
     const std::size_t corners = mesh.positions.size() - first;

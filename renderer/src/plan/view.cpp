@@ -18,7 +18,7 @@ bool world_bounds(const Scene& scene, Vec3& lo, Vec3& hi) {
   bool any = false;
   lo = {INFINITY, INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY, -INFINITY};
   for (const Mesh& mesh : scene.meshes)
-    for (const Vec3& p : mesh.positions) {
+    for (const Vec3 p : mesh.positions) {
       const Vec3 w = transform_point(mesh.transform, p);
       if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z)) continue;
       lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};

@@ -163,7 +163,7 @@ void Reader::finish_drawn(PrimitiveState& s, const Path& at) {
   if (s.dims == 3) {  // world space: an unlit mesh through the camera
     Mesh mesh;
     for (std::size_t k = 0; k < s.coords.size(); k += 3)
-      mesh.positions.push_back({s.coords[k], s.coords[k + 1], s.coords[k + 2]});
+      mesh.positions.push_back(Vec3f(Vec3{s.coords[k], s.coords[k + 1], s.coords[k + 2]}));
     mesh.colors = s.colors;
     mesh.shading = Shading::unlit;
     const auto m = static_cast<std::uint32_t>(n);

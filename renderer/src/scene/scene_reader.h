@@ -222,7 +222,7 @@ struct Reader {
   void points(PrimitiveState& s, const Path& at);
   template <std::size_t N, class Number, class Add>
   bool tuples(const Path& at, const char* shape, const char* names, Number number, Add add);
-  void vec3_list(std::vector<Vec3>& out, const Path& at);
+  void vec3_list(std::vector<Vec3f>& out, const Path& at);  // held as floats (Vec3f)
   void indices(PrimitiveState& s, const Path& at);
   void uvs(PrimitiveState& s, const Path& at);
   std::string base64(const Path& at);

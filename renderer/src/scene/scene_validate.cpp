@@ -70,7 +70,7 @@ void check_references(const Scene& scene) {
       ok = ok && t.width >= 1 && t.height >= 1 && t.width <= kMaxTextureSide && t.height <= kMaxTextureSide &&
            t.rgba.size() == std::size_t(t.width) * std::size_t(t.height) * 4 && std::isfinite(t.scale[0]) &&
            std::isfinite(t.scale[1]) && std::isfinite(t.offset[0]) && std::isfinite(t.offset[1]);
-    for (const Vec3& q : m.positions)
+    for (const Vec3 q : m.positions)
       ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate &&
            std::fabs(q.z) <= kMaxCoordinate;
     if (!ok)

@@ -202,12 +202,12 @@ bool Reader::tuples(const Path& at, const char* shape, const char* names, Number
   return false;
 }
 
-void Reader::vec3_list(std::vector<Vec3>& out, const Path& at) {
+void Reader::vec3_list(std::vector<Vec3f>& out, const Path& at) {
   out.reserve(in.flat_array_size() / 3);
   tuples<3>(
       at, "a point [x, y, z]", "x, y, z triples", [&](const auto& where) { return coordinate(where); },
       [&](const std::array<double, 3>& v) {
-        out.push_back({v[0], v[1], v[2]});
+        out.push_back(Vec3f(Vec3{v[0], v[1], v[2]}));
       });
 }
 
