@@ -112,7 +112,78 @@ TEST(Models, StlIsFlatShadedAndOthersSmooth) {
   EXPECT_EQ(raster::parse_ply(write_ply_ascii(m)).shading, raster::Shading::smooth);
   const raster::Mesh stl = raster::parse_stl(write_stl_binary(m));
   EXPECT_EQ(stl.triangles.size(), triangles_of(m).size());
-  EXPECT_EQ(stl.positions.size(), 3 * stl.triangles.size());
+}
+
+// STL lists every corner of every facet in full; the reader welds equal positions into one vertex, numbered
+// in the order first seen, so the torus's facets share its m.v.size() vertices again, each facet keeping its
+// corners' exact coordinates. What would break: corners left apart (six times the vertices to transform), or
+// a weld that merged a position with another (the wrong triangle), in either variant.
+TEST(Models, StlCornersAreWeldedIntoSharedVertices) {
+  const TestMesh m = make_mesh(3);
+  const auto tris = triangles_of(m);
+  for (const std::string& bytes : {write_stl_binary(m), write_stl_ascii(m)}) {
+    const raster::Mesh stl = raster::parse_stl(bytes);
+    ASSERT_EQ(stl.triangles.size(), tris.size());
+    EXPECT_EQ(stl.positions.size(), m.v.size());
+    std::vector<std::uint32_t> first_seen;  // the file's vertices in the order its facets name them
+    for (std::size_t t = 0; t < tris.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const raster::Vec3f& p = stl.positions[stl.triangles[t][k]];
+        const auto& v = m.v[tris[t][k]];
+        EXPECT_EQ(p, raster::Vec3f(raster::Vec3{v[0], v[1], v[2]})) << "facet " << t << " corner " << k;
+        if (std::find(first_seen.begin(), first_seen.end(), tris[t][k]) == first_seen.end())
+          first_seen.push_back(tris[t][k]);
+      }
+    for (std::size_t i = 0; i < first_seen.size(); ++i) {
+      const auto& v = m.v[first_seen[i]];
+      EXPECT_EQ(stl.positions[i], raster::Vec3f(raster::Vec3{v[0], v[1], v[2]})) << "vertex " << i;
+    }
+  }
+}
+
+// Welding is by value: 0 and -0 are one vertex; the next float up is another. A table that grows (a soup of
+// facets with no corner in common, three vertices each) keeps every vertex it had.
+TEST(Models, StlWeldsEqualNumbersOnly) {
+  TestMesh m;
+  const double up = std::nextafter(1.0f, 2.0f);
+  m.v = {{0, 0, 0}, {-0.0, 0, -0.0}, {1, 0, 0}, {up, 0, 0}, {0, 1, 0}};
+  m.faces = {{0, 2, 4}, {1, 3, 4}};
+  raster::Mesh stl = raster::parse_stl(write_stl_binary(m));
+  EXPECT_EQ(stl.positions.size(), 4u);  // (0,0,0) and (-0,0,-0) are one
+  EXPECT_EQ(stl.triangles[0][0], stl.triangles[1][0]);
+  EXPECT_NE(stl.triangles[0][1], stl.triangles[1][1]);
+  EXPECT_EQ(stl.triangles[0][2], stl.triangles[1][2]);
+  TestMesh soup;
+  for (std::uint32_t t = 0; t < 5000; ++t) {
+    for (int k = 0; k < 3; ++k) soup.v.push_back({grid(t * 0.01), grid(k * 0.5), grid(t * 0.003 + k)});
+    soup.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  stl = raster::parse_stl(write_stl_binary(soup));
+  ASSERT_EQ(stl.positions.size(), soup.v.size());
+  for (std::size_t i = 0; i < soup.v.size(); ++i)
+    ASSERT_EQ(stl.positions[i], raster::Vec3f(raster::Vec3{soup.v[i][0], soup.v[i][1], soup.v[i][2]})) << i;
+}
+
+// Welding changes no pixel: the welded mesh draws what the same facets with three corners each draw.
+TEST(Models, WeldedStlDrawsAsItsFacetsDo) {
+  const TestMesh m = make_mesh(5, 40, 24);
+  raster::Mesh welded = raster::parse_stl(write_stl_binary(m));
+  raster::Mesh apart = welded;
+  apart.positions.clear();
+  for (auto& t : apart.triangles)
+    for (std::uint32_t& i : t) {
+      apart.positions.push_back(welded.positions[i]);
+      i = static_cast<std::uint32_t>(apart.positions.size() - 1);
+    }
+  ASSERT_LT(welded.positions.size(), apart.positions.size() / 5);
+  auto draw = [](raster::Mesh mesh, raster::Antialias aa) {
+    mesh.colors = {{204, 204, 204, 255}};
+    raster::Scene scene = raster::model_scene(std::move(mesh), ModelFormat::stl);
+    scene.antialias = aa;
+    return raster::render(scene).pixels;
+  };
+  for (const raster::Antialias aa : {raster::Antialias::none, raster::Antialias::msaa4})
+    EXPECT_EQ(draw(welded, aa), draw(apart, aa));
 }
 
 // A quad's diagonal is OBJ's: a bent quad split the other way would show other pixels.

@@ -115,8 +115,10 @@ Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text = {}, const 
 std::vector<std::string> obj_files(std::string_view obj_text, std::string_view mtl_text = {},
                                    const Uploads& files = {});
 
-/// STL, ASCII or binary (told apart as sniff_model does). Each facet is a triangle of its own (an STL has
-/// no shared corners); shading is flat, from each facet's plane: the stored facet normals are not read,
+/// STL, ASCII or binary (told apart as sniff_model does). Each facet is a triangle; its corners, which STL
+/// writes out in full for every facet, are welded into shared vertices as they are read (exactly equal
+/// positions, 0 and -0 alike, are one vertex, numbered in the order first seen; the pixels are those of the
+/// facets apart). Shading is flat, from each facet's plane: the stored facet normals are not read,
 /// as writers often leave them zero or stale, and one that disagreed with the corners' order would light
 /// the face from behind. The solid's name and the attribute bytes are ignored. The binary triangle count is
 /// checked against the size before anything is allocated; `limits.max_model_faces` bounds the facets.

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <new>
 #include <vector>
@@ -105,6 +106,37 @@ MemoryBlock allocate_large(std::size_t bytes) {
 void free_large(MemoryBlock block) noexcept {
   if (block.bytes < kHugePage) return std::free(block.data);
   kept_blocks().keep(block);
+}
+
+void advise_huge_pages(void* data, std::size_t bytes) noexcept {
+#if defined(__linux__)
+  const auto at = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t first = (at + kHugePage - 1) / kHugePage * kHugePage,
+                       end = (at + bytes) / kHugePage * kHugePage;
+  if (end > first) ::madvise(reinterpret_cast<void*>(first), end - first, MADV_HUGEPAGE);
+#else
+  (void)data, (void)bytes;
+#endif
+}
+
+MemoryBlock allocate_zeroed(std::size_t bytes) {
+  if (bytes < kHugePage) {
+    if (void* p = std::calloc(std::max<std::size_t>(bytes, 1), 1)) return {p, bytes};
+    throw std::bad_alloc();
+  }
+  const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+  void* p = map_block(rounded);
+#if defined(__linux__)
+  ::madvise(p, rounded, MADV_HUGEPAGE);  // advice only: without THP the pages are small, and still zero
+#else
+  std::memset(p, 0, rounded);
+#endif
+  return {p, rounded};
+}
+
+void free_zeroed(MemoryBlock block) noexcept {
+  if (block.bytes < kHugePage) return std::free(block.data);
+  unmap_block(block);
 }
 
 }  // namespace raster::detail

@@ -1,6 +1,9 @@
 // STL models: binary (an 80-byte header, a triangle count, 50 bytes per triangle) and ASCII ("solid ...
-// facet normal ... outer loop vertex x y z ... endloop endfacet ... endsolid"). Each facet is a triangle of
-// its own: STL shares no corners, and the edges pass finds shared edges by position (geometry3d.cpp).
+// facet normal ... outer loop vertex x y z ... endloop endfacet ... endsolid"). STL writes every corner of
+// every facet in full; the corners are welded into shared vertices as they are read (model/weld.h: equal
+// positions are one vertex), so a mesh of a million vertices costs the renderer a million, not the six
+// million corners of its two million facets.
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -8,6 +11,7 @@
 #include <string>
 
 #include "base/budget_ask.h"
+#include "model/weld.h"
 #include "raster/model.h"
 
 namespace raster {
@@ -39,6 +43,27 @@ float le_float(const char* p) {
   return f;
 }
 
+// Room for `more` vertices beyond what `positions` holds, asked of the budget before it is taken: the
+// welded vertex count is known only at the end, so the array grows by doubling, each step asked for.
+void make_room(std::vector<Vec3f>& positions, std::size_t more, const Limits& limits) {
+  const std::size_t need = positions.size() + more;
+  if (need <= positions.capacity()) return;
+  const std::size_t capacity = std::max(need, 2 * positions.capacity());
+  detail::reserve(limits, static_cast<std::int64_t>((capacity - positions.capacity()) * sizeof(Vec3f)),
+                  [&] { return "the model's " + std::to_string(capacity) + " vertices"; });
+  positions.reserve(capacity);
+  detail::advise_huge_pages(positions.data(), capacity * sizeof(Vec3f));
+}
+
+// A closed mesh has about half as many vertices as triangles; a soup of separate facets three times as many
+// (the welder grows to them).
+std::size_t expected_vertices(std::uint64_t facets) {
+  return static_cast<std::size_t>(facets / 2 + 3);
+}
+
+// The facets straight from the bytes: 50 each (a normal, three corners of three little-endian floats, two
+// attribute bytes), every corner checked finite and welded as it is read. The welder's table is looked up
+// a few facets ahead of time (a prefetch), since a large model's table is far larger than the cache.
 Mesh read_binary(std::string_view bytes, const Limits& limits) {
   const std::uint32_t count = le_u32(bytes.data() + 80);
   // sniff_model matched the size to the count already; a caller naming the format did not. Bytes after the
@@ -50,26 +75,44 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
               0, 81);
   if (count == 0) stl_error("the model has no triangles");
   check_facets(count, limits);
-  detail::reserve(limits, cost::kStlPerFacet * count,
-                  [&] { return "the model's " + std::to_string(count) + " facets"; });
   Mesh mesh;
   mesh.shading = Shading::flat;
-  mesh.positions.resize(std::size_t{count} * 3);
+  const std::size_t expected = expected_vertices(count);
+  detail::reserve(
+      limits,
+      static_cast<std::int64_t>(count * sizeof(mesh.triangles[0]) + detail::Welder::table_bytes(expected)),
+      [&] { return "the model's " + std::to_string(count) + " facets"; });
+  mesh.triangles.reserve(count);
+  detail::advise_huge_pages(mesh.triangles.data(), count * sizeof(mesh.triangles[0]));
   mesh.triangles.resize(count);
+  make_room(mesh.positions, expected, limits);
+  detail::Welder welder(mesh.positions, expected);
+  constexpr std::uint32_t kAhead = 32;  // facets: a table line fetched while eight facets are read
+  const bool prefetch = welder.table_bytes() > (std::size_t{1} << 20);
   const char* p = bytes.data() + 84;
   detail::ReadMeter meter(limits);  // a corner or a triangle a unit, as for the other readers
   for (std::uint32_t t = 0; t < count; ++t, p += 50) {
     meter.add(4);
+    if (prefetch && t + kAhead < count)
+      for (int k = 0; k < 3; ++k) {
+        const char* c = p + 50 * kAhead + 12 + 12 * k;
+        __builtin_prefetch(welder.slot_of(le_float(c), le_float(c + 4), le_float(c + 8)));
+      }
     // 12 bytes of facet normal (not read: see parse_stl), 3 corners of 12 bytes, 2 attribute bytes.
-    for (int k = 0; k < 3; ++k) {
-      const char* c = p + 12 + 12 * k;
-      const float x = le_float(c), y = le_float(c + 4), z = le_float(c + 8);
-      if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-        stl_error("triangle " + std::to_string(t + 1) + " has a corner that is not a finite number", 0,
-                  static_cast<std::size_t>(c - bytes.data()) + 1);
-      mesh.positions[std::size_t{t} * 3 + k] = {x, y, z};
+    float v[9];
+    std::uint32_t exponents = 0;  // an exponent of all ones is an infinity or a NaN
+    for (int k = 0; k < 9; ++k) {
+      v[k] = le_float(p + 12 + 4 * k);
+      exponents |= (std::bit_cast<std::uint32_t>(v[k]) & 0x7f800000u) == 0x7f800000u;
     }
-    mesh.triangles[t] = {t * 3, t * 3 + 1, t * 3 + 2};
+    if (exponents)
+      for (int k = 0; k < 9; ++k)
+        if (!std::isfinite(v[k]))
+          stl_error("triangle " + std::to_string(t + 1) + " has a corner that is not a finite number", 0,
+                    static_cast<std::size_t>(p + 12 + 12 * (k / 3) - bytes.data()) + 1);
+    if (mesh.positions.size() + 3 > mesh.positions.capacity()) make_room(mesh.positions, 3, limits);
+    mesh.triangles[t] = {welder.vertex(v[0], v[1], v[2]), welder.vertex(v[3], v[4], v[5]),
+                         welder.vertex(v[6], v[7], v[8])};
   }
   return mesh;
 }
@@ -146,11 +189,16 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
   // A facet is at least ~60 bytes of text ("facet normal 0 0 0 outer loop vertex 0 0 0 ... endfacet"):
   // reserving from that bounds the guess by the text's size.
   std::size_t reserved = text.size() / 64;  // facets asked of the budget so far, grown in steps below
-  detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved),
-                  [] { return std::string("the model's facets"); });
-  mesh.positions.reserve(reserved * 3);
+  const std::size_t expected = expected_vertices(reserved);
+  detail::reserve(
+      limits,
+      static_cast<std::int64_t>(reserved * sizeof(mesh.triangles[0]) + detail::Welder::table_bytes(expected)),
+      [] { return std::string("the model's facets"); });
   mesh.triangles.reserve(reserved);
-  detail::ReadMeter meter(limits);  // a facet line or corner a unit: the deadline is asked as lines go by
+  make_room(mesh.positions, expected, limits);
+  detail::Welder welder(mesh.positions, expected);
+  std::vector<std::uint32_t> corners;  // the facet's welded corners
+  detail::ReadMeter meter(limits);     // a facet line or corner a unit: the deadline is asked as lines go by
   std::string_view w = in.next();
   if (!iequal(w, "solid")) stl_error("expected \"solid\", got " + quoted(w), in.line());
   in.skip_line();  // the solid's name
@@ -171,30 +219,31 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
     for (int k = 0; k < 3; ++k) in.next();  // not read (see parse_stl): writers put "nan" here for slivers
     expect(in, "outer");
     expect(in, "loop");
-    const std::size_t first = mesh.positions.size();
     const std::size_t facet_line = in.line();
+    corners.clear();
     while (true) {
       w = in.next();
       if (iequal(w, "endloop")) break;
       if (!iequal(w, "vertex")) stl_error("expected \"vertex\" or \"endloop\", got " + quoted(w), in.line());
       const double x = number(in), y = number(in), z = number(in);
-      mesh.positions.push_back(Vec3f(Vec3{x, y, z}));
+      if (mesh.positions.size() == mesh.positions.capacity()) make_room(mesh.positions, 1, limits);
+      const Vec3f p(Vec3{x, y, z});
+      corners.push_back(welder.vertex(p.x, p.y, p.z));
       meter.add(1);
     }
-    const std::size_t corners = mesh.positions.size() - first;
-    if (corners < 3)
-      stl_error("a facet has " + std::to_string(corners) + " vertices; it needs 3", facet_line);
+    if (corners.size() < 3)
+      stl_error("a facet has " + std::to_string(corners.size()) + " vertices; it needs 3", facet_line);
     // A loop of more than three corners (which some writers emit for planar polygons) as a fan.
-    for (std::size_t k = 1; k + 1 < corners; ++k) {
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
       check_facets(mesh.triangles.size() + 1, limits);
       if (mesh.triangles.size() == reserved) {  // fans of many corners: more triangles than the text's guess
         detail::stop_if_expired(limits);
-        detail::reserve(limits, cost::kStlPerFacet * static_cast<std::int64_t>(reserved + 1),
+        detail::reserve(limits, static_cast<std::int64_t>((reserved + 1) * sizeof(mesh.triangles[0])),
                         [] { return std::string("the model's facets"); });
         reserved = 2 * reserved + 1;
+        mesh.triangles.reserve(reserved);
       }
-      mesh.triangles.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + k),
-                                static_cast<std::uint32_t>(first + k + 1)});
+      mesh.triangles.push_back({corners[0], corners[k], corners[k + 1]});
     }
     expect(in, "endfacet");
   }
