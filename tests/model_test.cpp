@@ -199,6 +199,54 @@ TEST(Models, PlyQuadsAreSplitAsObjQuadsAre) {
   EXPECT_NE(raster::parse_ply(write_ply_ascii(bent)).triangles, ply.triangles);
 }
 
+// The common binary face list (one "list uchar int" property, this machine's byte order) is read by a path
+// of its own, the rest value by value: both give the same triangles, quads and larger polygons split alike,
+// and refuse a bad index or a list past the data in the same words at the same byte. What would break: the
+// direct path reading a face other than the one the header lays out, or skipping a check.
+TEST(Models, PlyFacesReadAlikeInEveryByteOrder) {
+  TestMesh m = make_mesh(7);
+  m.faces.push_back({0, 3, 9, 17, 11});  // a pentagon among the quads and triangles
+  const raster::Mesh ascii = raster::parse_ply(write_ply_ascii(m));
+  EXPECT_EQ(raster::parse_ply(write_ply_binary(m, false)).triangles, ascii.triangles);
+  EXPECT_EQ(raster::parse_ply(write_ply_binary(m, true)).triangles, ascii.triangles);
+  auto one_face = [](bool big, std::uint8_t corners, std::int32_t index) {
+    std::string s = std::string("ply\nformat binary_") + (big ? "big" : "little") +
+                    "_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int v = 0; v < 9; ++v) put<float>(s, static_cast<float>(v % 4 == 0), big);
+    put<std::uint8_t>(s, 3);
+    for (std::int32_t v : {0, 1, 2}) put<std::int32_t>(s, v, big);
+    put<std::uint8_t>(s, corners);
+    for (std::int32_t v : {2, index, 0}) put<std::int32_t>(s, v, big);
+    return s;
+  };
+  for (const std::int32_t bad : {3, -1, 7}) {
+    std::string words[2];
+    std::size_t byte[2] = {};
+    for (int big = 0; big < 2; ++big) try {
+        raster::parse_ply(one_face(big, 3, bad));
+        ADD_FAILURE() << "index " << bad << " was read";
+      } catch (const SceneError& e) {
+        // The headers differ in length ("big", "little"): the byte is counted from the data's start.
+        const std::string file = one_face(big, 3, bad);
+        words[big] = e.what(), byte[big] = e.where().byte - (file.find("end_header\n") + 11);
+      }
+    EXPECT_EQ(words[0], words[1]);
+    EXPECT_NE(words[0].find("face 1 refers to vertex " + std::to_string(bad)), std::string::npos) << words[0];
+    EXPECT_EQ(byte[0], byte[1]);
+    EXPECT_GT(byte[0], 0u);
+  }
+  std::string past[2];
+  for (int big = 0; big < 2; ++big) try {
+      raster::parse_ply(one_face(big, 4, 1));  // four corners, three written
+      ADD_FAILURE() << "a list past the data was read";
+    } catch (const SceneError& e) {
+      past[big] = e.what();
+    }
+  EXPECT_EQ(past[0], past[1]);
+  EXPECT_NE(past[0].find("longer than the data left"), std::string::npos) << past[0];
+}
+
 // Normals, uchar colours and properties rasterd does not use, beside an element of its own before the
 // vertices: ASCII and binary of both byte orders read alike, each value from its own property.
 TEST(Models, PlyVertexPropertiesAreReadInEveryEncoding) {

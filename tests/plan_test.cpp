@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <string>
 
@@ -181,6 +182,74 @@ TEST(Plan, RejectsScenesBuiltInCodeThatReferToMissingData) {
   s.scene.primitives[0].point_count = 3;
   s.scene.colors.clear();
   EXPECT_THROW(raster::plan(s.scene), raster::SceneError);
+}
+
+// A mesh's indices, normals and coordinates are checked whoever built it: one index past the positions in any
+// of its lists, normals without normal_triangles that are not one per position, or a coordinate that is not
+// finite, is a SceneError before anything is drawn (the checks run over whole arrays at once; an element
+// they skipped would be read out of bounds).
+TEST(Plan, RejectsMeshesWhoseIndicesOrCoordinatesAreOutOfRange) {
+  raster::Scene base;
+  base.width = base.height = 16;
+  raster::Mesh m;
+  for (int i = 0; i < 40; ++i)
+    m.positions.push_back({static_cast<float>(i % 7), static_cast<float>(i / 7), static_cast<float>(i % 3)});
+  for (std::uint32_t t = 0; t + 2 < 40; ++t) m.triangles.push_back({t, t + 1, t + 2});
+  m.segments = {{0, 39}};
+  m.points = {0, 5, 39};
+  m.colors = {test::kRed};
+  base.meshes.push_back(m);
+  raster::Primitive p;
+  p.kind = raster::PrimitiveKind::mesh;
+  base.primitives.push_back(p);
+  EXPECT_NO_THROW(raster::plan(base));
+  auto refused = [&](auto&& spoil) {
+    raster::Scene s = base;
+    spoil(s.meshes[0]);
+    EXPECT_THROW(raster::plan(s), raster::SceneError);
+  };
+  refused([](raster::Mesh& m) { m.triangles[17][1] = 40; });
+  refused([](raster::Mesh& m) { m.triangles.back()[2] = 0xFFFFFFFFu; });
+  refused([](raster::Mesh& m) { m.segments[0][1] = 40; });
+  refused([](raster::Mesh& m) { m.points[1] = 41; });
+  refused([](raster::Mesh& m) { m.normals.assign(39, {0, 0, 1}); });  // one short, indexed as positions
+  refused([](raster::Mesh& m) {
+    m.normals.assign(2, {0, 0, 1});
+    m.normal_triangles.assign(m.triangles.size(), {0, 1, 2});  // normal 2 of 2
+  });
+  refused([](raster::Mesh& m) { m.positions[23].y = INFINITY; });
+  refused([](raster::Mesh& m) { m.positions[39].z = NAN; });
+}
+
+// The camera fitted to a mesh under the identity is the one fitted to the same world positions reached
+// through a transform (the identity's box is found by a pass of its own): the same view, bit for bit.
+TEST(Plan, AnUntransformedMeshIsFittedAsItsWorldPositionsAre) {
+  raster::Scene direct;
+  direct.width = 64, direct.height = 48;
+  raster::Mesh m;
+  m.positions.push_back({-1.25f, 0.5f, 0.25f});  // the box's extremes first and last: every one is read
+  for (int i = 0; i < 300; ++i)  // multiples of 1/64: exact under a translation by whole units
+    m.positions.push_back({(i * 37 % 101) / 64.0f - 0.5f, (i * 53 % 97) / 64.0f, -(i * 29 % 89) / 64.0f});
+  m.positions.push_back({0.0f, -0.0f, -0.0f});
+  m.positions.push_back({2.5f, 1.75f, -2.0f});
+  for (std::uint32_t t = 0; t + 2 < m.positions.size(); ++t) m.triangles.push_back({t, t + 1, t + 2});
+  m.colors = {test::kRed};
+  direct.meshes.push_back(m);
+  raster::Primitive p;
+  p.kind = raster::PrimitiveKind::mesh;
+  direct.primitives.push_back(p);
+  raster::Scene moved = direct;
+  for (raster::Vec3f& q : moved.meshes[0].positions) q.x -= 3, q.z += 2;
+  moved.meshes[0].transform(0, 3) = 3, moved.meshes[0].transform(2, 3) = -2;
+  for (const raster::View view : {raster::View::front, raster::View::iso, raster::View::top}) {
+    direct.camera.view = moved.camera.view = view;
+    const raster::ViewPlan a = raster::plan(direct).view, b = raster::plan(moved).view;
+    EXPECT_EQ(a.eye, b.eye);
+    EXPECT_EQ(a.target, b.target);
+    EXPECT_EQ(a.near, b.near);
+    EXPECT_EQ(a.far, b.far);
+    EXPECT_EQ(a.world_to_clip, b.world_to_clip);
+  }
 }
 
 // VaryingLayout lays rows out in enum order whatever the order they were added in: a vertex holds every

@@ -3,9 +3,10 @@
 // positions and, when present, normals and colours; the face element gives index lists. Every count the
 // header declares is checked against the bytes that are left before anything is sized from it.
 //
-// parse_ply in three steps: the header (read_header, then check_elements against the data's size), the
-// data element by element (read_fixed for binary entries of one size, read_values value by value for the
-// rest), and the faces, split into triangles as they come (Faces).
+// parse_ply in three steps: the header (ply_header.cpp: read_header, then check_elements against the data's
+// size), the data element by element (read_fixed for binary entries of one size, read_direct_faces for the
+// common binary face list, read_values value by value for the rest), and the faces, split into triangles
+// as they come (Faces).
 #include <algorithm>
 #include <bit>
 #include <charconv>
@@ -15,160 +16,14 @@
 #include <vector>
 
 #include "base/budget_ask.h"
+#include "model/ply_header.h"
 #include "model/polygon.h"
 #include "raster/model.h"
 
 namespace raster {
 namespace {
 
-[[noreturn]] void ply_error(const std::string& message, std::size_t line = 0, std::size_t byte = 0) {
-  throw SceneError(ErrorKind::model, "PLY: " + message, ErrorLocation{"", byte, line});
-}
-
-enum class Type : std::uint8_t { i8, u8, i16, u16, i32, u32, f32, f64 };
-constexpr int kSize[] = {1, 1, 2, 2, 4, 4, 4, 8};
-
-bool type_named(std::string_view name, Type& type) {
-  static constexpr std::pair<std::string_view, Type> kTypes[] = {
-      {"char", Type::i8},   {"int8", Type::i8},     {"uchar", Type::u8},   {"uint8", Type::u8},
-      {"short", Type::i16}, {"int16", Type::i16},   {"ushort", Type::u16}, {"uint16", Type::u16},
-      {"int", Type::i32},   {"int32", Type::i32},   {"uint", Type::u32},   {"uint32", Type::u32},
-      {"float", Type::f32}, {"float32", Type::f32}, {"double", Type::f64}, {"float64", Type::f64}};
-  for (const auto& [n, t] : kTypes)
-    if (n == name) return type = t, true;
-  return false;
-}
-
-// What the reader does with a property of the vertex or face element.
-enum class Role : std::uint8_t { none, x, y, z, nx, ny, nz, red, green, blue, alpha, indices };
-
-struct Property {
-  std::string name;
-  Type type = Type::f32;
-  bool list = false;
-  Type count_type = Type::u8;  ///< lists: the type of the length before the items
-  Role role = Role::none;
-};
-
-struct Element {
-  std::string name;
-  std::uint64_t count = 0;
-  std::vector<Property> properties;
-  std::size_t line = 0;  ///< the header line that declares it
-};
-
-enum class Encoding : std::uint8_t { ascii, little, big };
-
-struct Header {
-  Encoding encoding = Encoding::ascii;
-  std::vector<Element> elements;
-  std::size_t data = 0;   ///< byte offset of the first data byte
-  std::size_t lines = 0;  ///< lines in the header, for ASCII data's line numbers
-};
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-  return out;
-}
-
-Role role_of(std::string_view element, std::string_view property) {
-  if (element == "vertex") {
-    static constexpr std::pair<std::string_view, Role> kRoles[] = {{"x", Role::x},
-                                                                   {"y", Role::y},
-                                                                   {"z", Role::z},
-                                                                   {"nx", Role::nx},
-                                                                   {"ny", Role::ny},
-                                                                   {"nz", Role::nz},
-                                                                   {"red", Role::red},
-                                                                   {"green", Role::green},
-                                                                   {"blue", Role::blue},
-                                                                   {"alpha", Role::alpha},
-                                                                   {"r", Role::red},
-                                                                   {"g", Role::green},
-                                                                   {"b", Role::blue},
-                                                                   {"diffuse_red", Role::red},
-                                                                   {"diffuse_green", Role::green},
-                                                                   {"diffuse_blue", Role::blue}};
-    for (const auto& [n, r] : kRoles)
-      if (n == property) return r;
-  }
-  if (element == "face" && (property == "vertex_indices" || property == "vertex_index")) return Role::indices;
-  return Role::none;
-}
-
-Header read_header(std::string_view bytes) {
-  Header h;
-  std::size_t at = 0;
-  bool format_seen = false;
-  while (true) {
-    const std::size_t eol = bytes.find('\n', at);
-    if (eol == std::string_view::npos) ply_error("the header has no \"end_header\" line", h.lines + 1);
-    const std::string_view line = bytes.substr(at, eol - at);
-    at = eol + 1;
-    ++h.lines;
-    const std::vector<std::string_view> w = split(line);
-    if (h.lines == 1) continue;  // "ply", which sniff_model or the caller checked
-    if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
-    if (w[0] == "end_header") break;
-    if (w[0] == "format") {
-      if (w.size() < 3 || w[2] != "1.0") ply_error("expected \"format <encoding> 1.0\"", h.lines);
-      if (w[1] == "ascii")
-        h.encoding = Encoding::ascii;
-      else if (w[1] == "binary_little_endian")
-        h.encoding = Encoding::little;
-      else if (w[1] == "binary_big_endian")
-        h.encoding = Encoding::big;
-      else
-        ply_error("unknown format \"" + std::string(w[1].substr(0, 40)) +
-                      "\"; expected ascii, binary_little_endian or binary_big_endian",
-                  h.lines);
-      format_seen = true;
-    } else if (w[0] == "element") {
-      std::uint64_t count = 0;
-      if (w.size() != 3) ply_error("expected \"element <name> <count>\"", h.lines);
-      const auto [end, ec] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
-      if (ec == std::errc::result_out_of_range)
-        ply_error("element \"" + std::string(w[1].substr(0, 40)) + "\" declares " +
-                      std::string(w[2].substr(0, 40)) + " entries, more than any file holds",
-                  h.lines);
-      if (ec != std::errc() || end != w[2].data() + w[2].size())
-        ply_error("expected \"element <name> <count>\", with a whole number as the count", h.lines);
-      h.elements.push_back({std::string(w[1]), count, {}, h.lines});
-    } else if (w[0] == "property") {
-      if (h.elements.empty()) ply_error("a property before any element", h.lines);
-      Element& e = h.elements.back();
-      Property p;
-      bool ok = false;
-      if (w.size() == 5 && w[1] == "list") {
-        p.list = true;
-        ok = type_named(w[2], p.count_type) && type_named(w[3], p.type);
-        if (ok && (p.count_type == Type::f32 || p.count_type == Type::f64))
-          ply_error("a list's length must have an integer type, not \"" + std::string(w[2]) + "\"", h.lines);
-        p.name = w[4];
-      } else if (w.size() == 3) {
-        ok = type_named(w[1], p.type);
-        p.name = w[2];
-      }
-      if (!ok)
-        ply_error("expected \"property <type> <name>\" or \"property list <type> <type> <name>\"", h.lines);
-      p.role = role_of(e.name, p.name);
-      if ((p.role == Role::indices) != p.list) p.role = Role::none;  // a scalar "vertex_indices", a list "x"
-      e.properties.push_back(std::move(p));
-    }
-    // Any other line is passed over, as other readers do: old Blender wrote "Created by Blender3D 247 - ..."
-    // without "comment".
-  }
-  if (!format_seen) ply_error("the header has no \"format\" line", 2);
-  h.data = at;
-  return h;
-}
+using namespace ply;  // the header's types (model/ply_header.h)
 
 template <typename T>
 T load_as(const unsigned char* p, bool swapped) {
@@ -208,6 +63,10 @@ class Values {
       : bytes_(bytes), at_(h.data), line_(h.lines + 1), enc_(h.encoding) {}
 
   std::size_t left() const { return bytes_.size() - at_; }
+  /// The byte offset of `p`, a pointer into the data take() gave.
+  std::size_t offset_of(const unsigned char* p) const {
+    return static_cast<std::size_t>(p - reinterpret_cast<const unsigned char*>(bytes_.data()));
+  }
   bool ascii() const { return enc_ == Encoding::ascii; }
   std::size_t line() const { return line_; }
   std::size_t byte() const { return at_ + 1; }
@@ -267,65 +126,10 @@ class Values {
   Encoding enc_;
 };
 
-// The fewest bytes one instance of `e` takes: binary, its scalars and each list's length; ASCII, one
-// character and a separator per value.
-std::uint64_t min_bytes(const Element& e, Encoding enc) {
-  std::uint64_t n = 0;
-  for (const Property& p : e.properties)
-    n += enc == Encoding::ascii ? 2 : kSize[static_cast<int>(p.list ? p.count_type : p.type)];
-  return n;
-}
-
 std::uint8_t colour_byte(double v, Type t) {
   if (!std::isfinite(v)) return 0;
   const double unit = t == Type::f32 || t == Type::f64 ? v : t == Type::u16 ? v / 65535 : v / 255;
   return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255));
-}
-
-// The vertex and face elements of a header, checked against the data after it before anything is sized
-// from their counts, and what the vertices hold.
-struct Layout {
-  const Element* vertex = nullptr;  ///< the "vertex" element, which has x, y and z
-  const Element* face = nullptr;    ///< the "face" element, which has a list of vertex indices
-  bool normals = false;             ///< the vertices have nx, ny and nz
-  bool colours = false;             ///< the vertices have red, green and blue
-};
-
-Layout check_elements(const Header& h, std::size_t data_bytes, const Limits& limits) {
-  Layout l;
-  for (const Element& e : h.elements) {
-    // Checked before anything is sized from a count: a 100-byte file can declare 2^60 vertices.
-    const std::uint64_t least = min_bytes(e, h.encoding);
-    if (e.count > 0 && least > 0 && e.count > (data_bytes + 1) / least)
-      ply_error("element \"" + e.name + "\" declares " + std::to_string(e.count) + " entries, but the " +
-                    std::to_string(data_bytes) + " bytes of data after the header cannot hold them",
-                e.line);
-    if (e.name == "vertex") l.vertex = &e;
-    if (e.name == "face") l.face = &e;
-  }
-  if (!l.vertex || l.vertex->count == 0) ply_error("the model has no vertices (no \"element vertex\")");
-  bool has[12] = {};
-  for (const Property& p : l.vertex->properties) has[static_cast<int>(p.role)] = true;
-  if (!has[int(Role::x)] || !has[int(Role::y)] || !has[int(Role::z)])
-    ply_error("the vertex element has no x, y and z properties", l.vertex->line);
-  if (!l.face || l.face->count == 0) {
-    // A point cloud (what scanners and photogrammetry write): every vertex is drawn as a point.
-    l.face = nullptr;
-    if (l.vertex->count > static_cast<std::uint64_t>(limits.max_model_points))
-      throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(limits.max_model_points) + " points");
-    l.colours = has[int(Role::red)] && has[int(Role::green)] && has[int(Role::blue)];
-    return l;
-  }
-  if (l.face->count > static_cast<std::uint64_t>(limits.max_model_faces))
-    throw SceneError(ErrorKind::limit,
-                     "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
-  if (std::none_of(l.face->properties.begin(), l.face->properties.end(),
-                   [](const Property& p) { return p.role == Role::indices; }))
-    ply_error("the face element has no \"vertex_indices\" list", l.face->line);
-  l.normals = has[int(Role::nx)] && has[int(Role::ny)] && has[int(Role::nz)];
-  l.colours = has[int(Role::red)] && has[int(Role::green)] && has[int(Role::blue)];
-  return l;
 }
 
 // What the vertex element's value of a property with `role` sets.
@@ -398,6 +202,44 @@ void read_fixed(const Element& e, const Layout& l, const Header& h, std::size_t 
     offset += kSize[static_cast<int>(p.type)];
   }
   const bool swapped = in.swapped();
+  // The common layout (float coordinates and normals, uchar colours, in this machine's byte order) copied
+  // field by field without a conversion per value, its coordinates checked once for the whole element.
+  const bool direct = !swapped && std::all_of(fields.begin(), fields.end(), [](const Field& f) {
+    return f.role >= Role::red && f.role <= Role::alpha ? f.type == Type::u8 : f.type == Type::f32;
+  });
+  if (direct) {
+    const unsigned char* entries = in.take(static_cast<std::size_t>(e.count * stride));
+    float* position = &mesh.positions[0].x;
+    float* normal = l.normals ? &mesh.normals[0].x : nullptr;
+    std::uint8_t* colour = l.colours ? &mesh.colors[0].r : nullptr;
+    std::uint32_t exponents = 0;  // the coordinates' exponents: all ones is an infinity or a NaN
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      meter.add(1);
+      const unsigned char* entry = entries + i * stride;
+      for (const Field& f : fields) {
+        const int r = static_cast<int>(f.role);
+        if (f.role <= Role::z) {
+          std::uint32_t bits;
+          std::memcpy(&bits, entry + f.offset, 4);
+          exponents |= (bits & 0x7f800000u) == 0x7f800000u;
+          std::memcpy(position + 3 * i + (r - int(Role::x)), &bits, 4);
+        } else if (f.role <= Role::nz) {
+          if (normal) std::memcpy(normal + 3 * i + (r - int(Role::nx)), entry + f.offset, 4);
+        } else if (colour) {
+          colour[4 * i + (r - int(Role::red))] = entry[f.offset];
+        }
+      }
+    }
+    if (!exponents) return;
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      const Vec3f& q = mesh.positions[i];
+      if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)))
+        ply_error(
+            "vertex " + std::to_string(i) + " has a coordinate that is not a finite number within +-2^128", 0,
+            in.offset_of(entries + i * stride) + 1);
+    }
+    return;
+  }
   for (std::uint64_t i = 0; i < e.count; ++i) {
     meter.add(1);
     const unsigned char* entry = in.take(static_cast<std::size_t>(stride));
@@ -485,6 +327,55 @@ void read_list(const Element& e, const Property& p, std::uint64_t i, const Layou
   if (corners.size() >= 3) faces.add_or_keep();
 }
 
+// The face element of the common binary layout, one list of int or uint indices and nothing else, in this
+// machine's byte order: a triangle's three indices copied and checked at once, without a conversion per
+// value. The same errors, at the same bytes, as read_list gives; other faces go the same way as there.
+bool direct_faces(const Element& e, const Layout& l, const Values& in) {
+  if (&e != l.face || in.ascii() || in.swapped() || e.properties.size() != 1) return false;
+  const Property& p = e.properties[0];
+  return p.role == Role::indices && (p.type == Type::i32 || p.type == Type::u32) &&
+         (p.count_type == Type::u8 || p.count_type == Type::i8);
+}
+
+void read_direct_faces(const Element& e, const Layout& l, Values& in, Mesh& mesh, Faces& faces) {
+  const std::uint64_t vertices = l.vertex->count;
+  const bool signed_indices = e.properties[0].type == Type::i32;
+  const auto limit = static_cast<std::size_t>(faces.limits.max_model_faces);
+  for (std::uint64_t i = 0; i < e.count; ++i) {
+    faces.meter.add(1);
+    if (in.left() < 1) ply_error("the data ends early", 0, in.byte());
+    const unsigned n = *in.take(1);
+    if (n * 4 > in.left())
+      ply_error("a list of " + std::to_string(static_cast<double>(n)) + " items in face " +
+                    std::to_string(i) + " is longer than the data left",
+                0, in.byte());
+    const unsigned char* items = in.take(4 * n);
+    faces.meter.add(n);
+    std::uint32_t v[3];
+    if (n == 3) {
+      std::memcpy(v, items, 12);
+      if (v[0] < vertices && v[1] < vertices && v[2] < vertices) {
+        if (mesh.triangles.size() >= limit)
+          throw SceneError(ErrorKind::limit, "the model has more than " + std::to_string(limit) + " faces");
+        mesh.triangles.push_back({v[0], v[1], v[2]});
+        continue;
+      }
+    }
+    faces.corners.clear();
+    for (unsigned k = 0; k < n; ++k) {
+      std::uint32_t u;
+      std::memcpy(&u, items + 4 * k, 4);
+      const double value = signed_indices ? static_cast<double>(static_cast<std::int32_t>(u)) : u;
+      if (!(value >= 0 && value < static_cast<double>(vertices)))
+        ply_error("face " + std::to_string(i) + " refers to vertex " + std::to_string(value) +
+                      ", but there are " + std::to_string(vertices),
+                  0, in.offset_of(items + 4 * (k + 1)) + 1);
+      faces.corners.push_back(u);
+    }
+    if (faces.corners.size() >= 3) faces.add_or_keep();
+  }
+}
+
 // Element e value by value (ASCII, or binary with lists): vertices into the mesh, faces into `faces`.
 void read_values(const Element& e, const Layout& l, Values& in, Mesh& mesh, Faces& faces) {
   for (std::uint64_t i = 0; i < e.count; ++i) {
@@ -539,6 +430,8 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
         std::none_of(e.properties.begin(), e.properties.end(), [](const Property& p) { return p.list; });
     if (!in.ascii() && fixed)
       read_fixed(e, l, h, bytes.size(), in, mesh, faces.meter);
+    else if (direct_faces(e, l, in))
+      read_direct_faces(e, l, in, mesh, faces);
     else
       read_values(e, l, in, mesh, faces);
   }
@@ -550,8 +443,7 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
     return mesh;
   }
   if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");
-  // A face's corners are vertices, so normals are indexed as positions are.
-  if (l.normals) mesh.normal_triangles = mesh.triangles;
+  // A face's corners are vertices, so normals are indexed as positions are (no normal_triangles).
   return mesh;
 }
 

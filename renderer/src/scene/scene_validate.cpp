@@ -9,6 +9,33 @@
 namespace raster {
 namespace {
 
+// The largest of `count` indices, in one pass the compiler vectorises (with AVX2 where the machine has it):
+// a model's six million indices are checked by every render's plan.
+__attribute__((target_clones("avx2", "default"))) std::uint32_t largest(const std::uint32_t* first,
+                                                                        std::size_t count) {
+  std::uint32_t most = 0;
+  for (std::size_t i = 0; i < count; ++i) most = std::max(most, first[i]);
+  return most;
+}
+
+// Every index of `items` (triangles, segments or points) below `n`.
+template <typename T>
+bool below(const std::vector<T>& items, std::size_t n) {
+  static_assert(sizeof(T) % sizeof(std::uint32_t) == 0);  // uint32_t indices, one or a few to an item
+  if (items.empty()) return true;
+  const auto* first = reinterpret_cast<const std::uint32_t*>(items.data());
+  return n > 0 && largest(first, items.size() * sizeof(T) / sizeof(std::uint32_t)) < n;
+}
+
+// Every coordinate finite (a float of the float range: a Mesh holds none beyond +-2^128): no exponent of
+// all ones, in one pass without a branch per vertex.
+__attribute__((target_clones("avx2", "default"))) bool finite(const std::vector<Vec3f>& positions) {
+  const auto* c = reinterpret_cast<const std::uint32_t*>(positions.data());
+  std::uint32_t ones = 0;  // bit 31 set once some exponent is all ones: 0x7f800000 + 0x00800000 carries
+  for (std::size_t i = 0; i < 3 * positions.size(); ++i) ones |= (c[i] & 0x7f800000u) + 0x00800000u;
+  return !(ones & 0x80000000u);
+}
+
 void check_references(const Scene& scene) {
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& p = scene.primitives[i];
@@ -41,14 +68,13 @@ void check_references(const Scene& scene) {
       throw SceneError(ErrorKind::invalid, std::string(format::kPointSize.rule),
                        {where + "/point_size", 0, 0});
     const std::size_t n = m.positions.size();
+    // Normals without normal_triangles are indexed as the positions are: one each.
     bool ok = (m.colors.size() == 1 || m.colors.size() == n) &&
               (m.face_colors.empty() || m.face_colors.size() == m.triangles.size()) &&
-              (m.normal_triangles.empty() || m.normal_triangles.size() == m.triangles.size());
-    for (const auto& t : m.triangles) ok = ok && t[0] < n && t[1] < n && t[2] < n;
-    for (const auto& s : m.segments) ok = ok && s[0] < n && s[1] < n;
-    for (const std::uint32_t q : m.points) ok = ok && q < n;
-    for (const auto& t : m.normal_triangles)
-      ok = ok && t[0] < m.normals.size() && t[1] < m.normals.size() && t[2] < m.normals.size();
+              (m.normal_triangles.empty() || m.normal_triangles.size() == m.triangles.size()) &&
+              (m.normals.empty() || !m.normal_triangles.empty() || m.normals.size() == n);
+    ok = ok && below(m.triangles, n) && below(m.segments, n) && below(m.points, n) &&
+         below(m.normal_triangles, m.normals.size());
     ok = ok && (m.uv_triangles.empty() || m.uv_triangles.size() == m.triangles.size()) &&
          (m.face_textures.empty() || m.face_textures.size() == m.triangles.size());
     for (const auto& t : m.uv_triangles)
@@ -70,9 +96,7 @@ void check_references(const Scene& scene) {
       ok = ok && t.width >= 1 && t.height >= 1 && t.width <= kMaxTextureSide && t.height <= kMaxTextureSide &&
            t.rgba.size() == std::size_t(t.width) * std::size_t(t.height) * 4 && std::isfinite(t.scale[0]) &&
            std::isfinite(t.scale[1]) && std::isfinite(t.offset[0]) && std::isfinite(t.offset[1]);
-    for (const Vec3 q : m.positions)
-      ok = ok && std::fabs(q.x) <= kMaxCoordinate && std::fabs(q.y) <= kMaxCoordinate &&
-           std::fabs(q.z) <= kMaxCoordinate;
+    ok = ok && finite(m.positions);
     if (!ok)
       throw SceneError(
           ErrorKind::invalid,
