@@ -100,6 +100,15 @@ class PodArray {
 /// of a 100 MB model's read was faults); a huge page, one per 2 MiB. Advice only: it changes no contents.
 void advise_huge_pages(void* data, std::size_t bytes) noexcept;
 
+/// Room for `n` elements in `v` (a model's positions or triangles, about to be written), its new storage
+/// advised to take huge pages (advise_huge_pages) before anything is written to it.
+template <typename Vector>
+void reserve_huge(Vector& v, std::size_t n) {
+  if (n <= v.capacity()) return;
+  v.reserve(n);
+  advise_huge_pages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(v[0]));
+}
+
 /// Zeroed storage of at least `bytes`, from fresh pages that are zero already (nothing is written to make
 /// them so) and, for 2 MiB or more, advised to be huge pages: a hash table probed at random (a model's
 /// welding table) then takes a TLB entry per 2 MiB instead of per 4 KiB, and a fault per 2 MiB. Never kept

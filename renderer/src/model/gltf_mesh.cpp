@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/budget_ask.h"
+#include "base/memory.h"
 #include "model/gltf_document.h"
 
 namespace raster::gltf {
@@ -29,7 +30,7 @@ constexpr std::uint64_t kPrimitiveWork = 1024;
 // once per primitive (reserving exactly each time copies them quadratically often).
 template <typename T>
 void make_room(std::vector<T>& v, std::size_t more) {
-  if (v.capacity() - v.size() < more) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+  if (v.capacity() - v.size() < more) detail::reserve_huge(v, std::max(v.size() + more, 2 * v.capacity()));
 }
 
 double srgb_of_linear(double c) {

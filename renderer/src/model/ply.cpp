@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/budget_ask.h"
+#include "base/memory.h"
 #include "model/ply_header.h"
 #include "model/polygon.h"
 #include "raster/model.h"
@@ -420,11 +421,11 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
     // fuzzed file 12 s to count through).
     if (e.properties.empty()) continue;
     if (&e == l.vertex) {
-      mesh.positions.resize(e.count);
-      if (l.normals) mesh.normals.resize(e.count);
-      if (l.colours) mesh.colors.resize(e.count);
+      detail::reserve_huge(mesh.positions, e.count), mesh.positions.resize(e.count);
+      if (l.normals) detail::reserve_huge(mesh.normals, e.count), mesh.normals.resize(e.count);
+      if (l.colours) detail::reserve_huge(mesh.colors, e.count), mesh.colors.resize(e.count);
     } else if (&e == l.face) {
-      mesh.triangles.reserve(e.count);
+      detail::reserve_huge(mesh.triangles, e.count);
     }
     const bool fixed =
         std::none_of(e.properties.begin(), e.properties.end(), [](const Property& p) { return p.list; });

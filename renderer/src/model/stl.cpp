@@ -51,8 +51,7 @@ void make_room(std::vector<Vec3f>& positions, std::size_t more, const Limits& li
   const std::size_t capacity = std::max(need, 2 * positions.capacity());
   detail::reserve(limits, static_cast<std::int64_t>((capacity - positions.capacity()) * sizeof(Vec3f)),
                   [&] { return "the model's " + std::to_string(capacity) + " vertices"; });
-  positions.reserve(capacity);
-  detail::advise_huge_pages(positions.data(), capacity * sizeof(Vec3f));
+  detail::reserve_huge(positions, capacity);
 }
 
 // A closed mesh has about half as many vertices as triangles; a soup of separate facets three times as many
@@ -82,8 +81,7 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
       limits,
       static_cast<std::int64_t>(count * sizeof(mesh.triangles[0]) + detail::Welder::table_bytes(expected)),
       [&] { return "the model's " + std::to_string(count) + " facets"; });
-  mesh.triangles.reserve(count);
-  detail::advise_huge_pages(mesh.triangles.data(), count * sizeof(mesh.triangles[0]));
+  detail::reserve_huge(mesh.triangles, count);
   mesh.triangles.resize(count);
   make_room(mesh.positions, expected, limits);
   detail::Welder welder(mesh.positions, expected);
