@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cinttypes>
 #include <cmath>
@@ -307,13 +308,15 @@ class RefusingBudget final : public raster::Budget {
   std::atomic<int> grants_;
 };
 
-// A refused reservation stops the OBJ reader before tinyobjloader builds anything: the exception names the
-// bytes asked (the prescan's counts times the costs), and the child that was refused took almost none of
-// them. What would break: the reservation moved after the parse, or a refusal ignored.
+// A refused reservation stops the OBJ reader before it builds anything: the exception names the bytes asked
+// (what the first pass counted, as the mesh holds it: 4 positions and 1M + 1 triangles here), and the child
+// that was refused took almost none of them. What would break: the reservation moved after the mesh is
+// made, or a refusal ignored.
 TEST(MemoryEstimate, ARefusedObjReservationThrowsBeforeTheModelIsBuilt) {
   constexpr std::size_t kFaces = 1'000'000;
   const std::string obj = face_dense_obj(kFaces);
-  const std::int64_t asked = raster::cost::kObjPerCorner * 3 * (kFaces + 1) + raster::cost::kObjPerVertex * 4;
+  const auto asked = static_cast<std::int64_t>(sizeof(std::array<std::uint32_t, 3>) * (kFaces + 1) +
+                                               sizeof(raster::Vec3f) * 4);
   {
     RefusingBudget budget(1);  // the scene's own ask is granted, the model's refused
     raster::Limits limits;
@@ -326,8 +329,8 @@ TEST(MemoryEstimate, ARefusedObjReservationThrowsBeforeTheModelIsBuilt) {
       EXPECT_EQ(budget.refused.load(), asked);
     }
   }
-  // The same refusal in a child of its own: its peak is a small part of what tinyobjloader would have built
-  // (12 bytes of indices a corner at least, 36 MB here).
+  // The same refusal in a child of its own: its peak is a small part of what the mesh would have taken
+  // (12 bytes a triangle, 12 MB here).
   const raster::Uploads uploads{{"model", obj}};  // the request's bytes, in memory before the start
   malloc_trim(0);
   int fds[2];
@@ -358,7 +361,7 @@ TEST(MemoryEstimate, ARefusedObjReservationThrowsBeforeTheModelIsBuilt) {
   ASSERT_GE(peak, 0) << "the child's parse did not throw MemoryRefused";
   std::printf("[estimate] refused OBJ reader: peak %.1f MB of %.1f MB asked\n",
               static_cast<double>(peak) / 1e6, static_cast<double>(asked) / 1e6);
-  EXPECT_LT(peak, std::int64_t{12} << 20) << "the refused reader built " << peak << " bytes first";
+  EXPECT_LT(peak, std::int64_t{4} << 20) << "the refused reader built " << peak << " bytes first";
 }
 
 // A budget that grants the parse and the plan but refuses the bins makes render() throw MemoryRefused,

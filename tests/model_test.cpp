@@ -421,6 +421,7 @@ TEST(Models, EveryReaderStopsOnceTheDeadlinePasses) {
     auto read = [&](raster::Budget& clock) {
       raster::Limits limits;
       limits.budget = &clock;
+      limits.threads = 1;  // one thread asks in turn (ObjReader.StopsOnceTheDeadlinePassesOnEveryThread)
       return raster::parse_model(w.bytes, w.format, limits, w.files);
     };
     ReadClock never;

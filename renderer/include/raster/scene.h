@@ -308,6 +308,10 @@ struct Limits {
   /// Texels of all of a scene's textures together, checked from each image's header before it is decoded
   /// (a decoded texel is 4 bytes; the plan also counts the mipmaps made from them).
   std::int64_t max_texture_pixels = 4096 * 4096;
+  /// Threads a model reader may split its work over (the OBJ reader reads pieces of its text at once): 0,
+  /// one per core; 1, the calling thread only. What is read does not depend on it. The service gives its
+  /// --render-threads.
+  int threads = 0;
   /// Optional, per render: the caller's account that the readers and the plan ask for memory before they
   /// allocate what their counts call for, and for whether to stop (raster/budget.h). Null: nothing is asked.
   /// Not owned; a service copies its Limits per request and points this at that request's account.

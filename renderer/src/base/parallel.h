@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
+#include <exception>
+#include <vector>
 
 #include "base/stop.h"
 
@@ -58,6 +61,31 @@ void parallel_for(int threads, std::size_t count, const Stop& stop, Work&& work)
   };
   if (n <= 1) return job.run(&context, 0);
   run_parallel(job);
+}
+
+/// Runs work(piece) once for every piece in [0, count) on at most `threads` threads, as parallel_for does,
+/// for work that reports failure by throwing (a reader's SceneError, RenderCancelled, MemoryRefused): each
+/// piece's exception is kept, the pieces after a failed one are still run or skipped as they come (their
+/// outcome is not needed), and once all are done the exception of the lowest failed piece is rethrown, so
+/// the caller sees the same failure whatever the thread count.
+template <typename Work>
+void run_pieces(int threads, std::size_t count, Work&& work) {
+  std::vector<std::exception_ptr> failed(count);
+  std::atomic<std::size_t> first_failed{count};  // pieces after it need not run
+  std::atomic<bool> never{false};
+  const Stop stop{std::chrono::steady_clock::time_point::max(), nullptr, &never, nullptr};
+  parallel_for(threads, count, stop, [&](std::size_t piece, StopMeter&, int) {
+    if (piece > first_failed.load(std::memory_order_relaxed)) return;
+    try {
+      work(piece);
+    } catch (...) {
+      failed[piece] = std::current_exception();
+      for (std::size_t f = first_failed.load(); piece < f && !first_failed.compare_exchange_weak(f, piece);) {
+      }
+    }
+  });
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
 }
 
 }  // namespace raster::detail

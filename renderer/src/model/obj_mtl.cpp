@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <istream>
 #include <map>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 
 #include "base/budget_ask.h"
 #include "raster/model.h"
+#include "raster/utf8.h"
 
 namespace raster::obj {
 namespace {
@@ -196,37 +198,91 @@ std::string named_libraries(const std::vector<std::string_view>& mtllibs, const 
   return text;
 }
 
-MaterialTextures material_textures(const std::vector<tinyobj::material_t>& materials, const MtlPass& mtl,
-                                   const Uploads& files, const Limits& limits,
-                                   std::vector<Texture>& textures) {
-  MaterialTextures out{std::vector<const MaterialExtra*>(materials.size(), nullptr),
-                       std::vector<std::int32_t>(materials.size(), -1)};
-  std::map<std::string, std::int32_t, std::less<>> decoded;  // a file's index in `textures`
-  std::int64_t budget = limits.max_texture_pixels;
+TexturePlan plan_textures(const std::vector<tinyobj::material_t>& materials, const MtlPass& mtl) {
+  TexturePlan plan{{std::vector<const MaterialExtra*>(materials.size(), nullptr),
+                    std::vector<std::int32_t>(materials.size(), -1)},
+                   {}};
+  std::map<std::string, std::int32_t, std::less<>> index;  // a file's index in the mesh's textures
   for (std::size_t m = 0; m < materials.size(); ++m) {
     const auto it = mtl.materials.find(materials[m].name);
     if (it == mtl.materials.end()) continue;
-    out.extras[m] = &it->second;
+    plan.materials.extras[m] = &it->second;
     if (!it->second.has_map) continue;
     const DiffuseMap& map = it->second.map;
-    if (auto d = decoded.find(map.file); d != decoded.end()) {
-      out.texture[m] = d->second;
-      continue;
-    }
-    const std::string* bytes = find_file(files, map.file);
+    const auto [at, fresh] = index.emplace(map.file, static_cast<std::int32_t>(plan.maps.size()));
+    if (fresh) plan.maps.push_back(&map);
+    plan.materials.texture[m] = at->second;
+  }
+  return plan;
+}
+
+void decode_textures(const TexturePlan& plan, const Uploads& files, const Limits& limits,
+                     std::vector<Texture>& textures) {
+  std::int64_t budget = limits.max_texture_pixels;
+  for (const DiffuseMap* map : plan.maps) {
+    const std::string* bytes = find_file(files, map->file);
     if (!bytes)
-      model_error(0, "the materials (MTL) line " + std::to_string(map.line) + " asks for texture \"" +
-                         map.file + "\" (map_Kd), which was not sent; sent: " + names_of(files) +
-                         ". Send it as a multipart part with that file name (curl -F 'texture=@" + map.file +
+      model_error(0, "the materials (MTL) line " + std::to_string(map->line) + " asks for texture \"" +
+                         map->file + "\" (map_Kd), which was not sent; sent: " + names_of(files) +
+                         ". Send it as a multipart part with that file name (curl -F 'texture=@" + map->file +
                          "')");
     detail::stop_if_expired(limits);  // each decoding is bounded by the texel budget; asked before each
-    Texture texture = decode_texture(*bytes, map.file, budget);
+    Texture texture = decode_texture(*bytes, map->file, budget);
     budget -= std::int64_t{texture.width} * texture.height;
-    texture.clamp = map.clamp, texture.scale = map.scale, texture.offset = map.offset;
-    out.texture[m] = decoded[map.file] = static_cast<std::int32_t>(textures.size());
+    texture.clamp = map->clamp, texture.scale = map->scale, texture.offset = map->offset;
     textures.push_back(std::move(texture));
   }
+}
+
+std::vector<std::int32_t> specular_materials(const std::vector<tinyobj::material_t>& materials,
+                                             const MaterialTextures& textures, Mesh& mesh) {
+  std::vector<std::int32_t> surface(materials.size(), -1);
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    if (!textures.extras[m]) continue;
+    Material look;
+    look.model = Material::Model::blinn_phong;
+    for (int c = 0; c < 3; ++c) {  // within 0..1, NaN as 0
+      const float ks = static_cast<float>(materials[m].specular[c]);
+      look.specular[c] = ks > 0 ? std::min(ks, 1.0f) : 0.0f;
+    }
+    // NaN (from "Ns nan") is no exponent: the MTL's range's end, like any value above it.
+    const float ns = static_cast<float>(materials[m].shininess);
+    look.shininess = ns >= 0 ? std::min(ns, 1000.0f) : ns < 0 ? 0.0f : 1000.0f;
+    if (!look.is_specular()) continue;
+    surface[m] = static_cast<std::int32_t>(mesh.materials.size());
+    mesh.materials.push_back(look);
+  }
+  return surface;
+}
+
+ObjMaterials read_materials(std::string_view mtl_text, const std::vector<std::string_view>& mtllibs,
+                            const Uploads& files, MtlPass& mtl, Mesh& mesh) {
+  std::string libraries;
+  if (mtl_text.empty() && !mtllibs.empty()) {
+    libraries = named_libraries(mtllibs, files);
+    require_utf8(libraries, "the materials (MTL)", true);
+    mtl_text = libraries;
+  }
+  mtl = read_mtl(mtl_text);
+  ObjMaterials out;
+  TextBuf buf(mtl.text);
+  std::istream in(&buf);
+  std::string warning, error;
+  tinyobj::LoadMtl(&out.by_name, &out.list, &in, &warning, &error);
+  out.textures = plan_textures(out.list, mtl);
+  out.surface = specular_materials(out.list, out.textures.materials, mesh);
   return out;
+}
+
+MaterialTextures material_textures(const std::vector<tinyobj::material_t>& materials, const MtlPass& mtl,
+                                   const Uploads& files, const Limits& limits,
+                                   std::vector<Texture>& textures) {
+  TexturePlan plan = plan_textures(materials, mtl);
+  const std::size_t first = textures.size();
+  decode_textures(plan, files, limits, textures);
+  for (std::int32_t& t : plan.materials.texture)
+    if (t >= 0) t += static_cast<std::int32_t>(first);
+  return std::move(plan.materials);
 }
 
 }  // namespace raster::obj

@@ -3,9 +3,12 @@
 // name, decoded once each.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
+#include <streambuf>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -90,8 +93,57 @@ struct MaterialTextures {
   std::vector<std::int32_t> texture;         ///< index into Mesh::textures, or -1
 };
 
+/// The textures of a model's materials before any is decoded: each material's entry (MaterialTextures, the
+/// index its map will have among the mesh's textures) and the maps to decode, one per file, in the order
+/// those indices give them.
+struct TexturePlan {
+  MaterialTextures materials;
+  std::vector<const DiffuseMap*> maps;  ///< into the MtlPass; maps[i] becomes the mesh's texture i
+};
+TexturePlan plan_textures(const std::vector<tinyobj::material_t>& materials, const MtlPass& mtl);
+
+/// The plan's maps, found among the uploads by file name and decoded into `textures` in order, within the
+/// limit's texels: a map that was not sent, or does not decode, is SceneError(model) naming it.
+void decode_textures(const TexturePlan& plan, const Uploads& files, const Limits& limits,
+                     std::vector<Texture>& textures);
+
+/// An MTL colour component (0..1) as a byte: rounded, clamped, NaN as 0.
+inline std::uint8_t unit_byte(double v) {
+  return static_cast<std::uint8_t>(std::floor(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5));
+}
+
+/// A read-only stream buffer over text held elsewhere (tinyobjloader reads from streams; nothing is copied).
+class TextBuf : public std::streambuf {
+ public:
+  explicit TextBuf(std::string_view text) {
+    char* first = const_cast<char*>(text.data());  // a get area only: nothing is written through it
+    setg(first, first, first + text.size());
+  }
+};
+
+/// The materials with a specular colour (Ks above 0) into mesh.materials (Blinn-Phong), and each material's
+/// index there, -1 for the others (Lambert): a model without any keeps exactly the picture it had before Ks
+/// was read.
+std::vector<std::int32_t> specular_materials(const std::vector<tinyobj::material_t>& materials,
+                                             const MaterialTextures& textures, Mesh& mesh);
+
+/// A model's materials as its faces name them: tinyobjloader's list of the MTL's materials and their index
+/// by name, the textures they will have, and each one's index into Mesh::materials (-1: Lambert).
+struct ObjMaterials {
+  std::map<std::string, int> by_name;
+  std::vector<tinyobj::material_t> list;
+  TexturePlan textures;
+  std::vector<std::int32_t> surface;
+};
+
+/// The materials of a model: `mtl_text` when given, else the libraries its `mtllib` lines (`mtllibs`) name
+/// among the uploads; through read_mtl (into `mtl`, which the result points into) and tinyobjloader's MTL
+/// parser. A specular material is added to mesh.materials. An MTL error is SceneError(model).
+ObjMaterials read_materials(std::string_view mtl_text, const std::vector<std::string_view>& mtllibs,
+                            const Uploads& files, MtlPass& mtl, Mesh& mesh);
+
 // Each material's diffuse map, found among the uploads by file name and decoded into `textures` once
-// however many materials use it, within the limit's texels.
+// however many materials use it, within the limit's texels: plan_textures, then decode_textures.
 MaterialTextures material_textures(const std::vector<tinyobj::material_t>& materials, const MtlPass& mtl,
                                    const Uploads& files, const Limits& limits,
                                    std::vector<Texture>& textures);
