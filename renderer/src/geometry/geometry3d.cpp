@@ -324,16 +324,9 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
     const std::uint8_t any_out = view.outside[tri[0]] | view.outside[tri[1]] | view.outside[tri[2]];
     if (any_out & 0xc0) continue;
     if (view.outside[tri[0]] & view.outside[tri[1]] & view.outside[tri[2]]) continue;  // beyond one plane
-    // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
-    // front when the counter-clockwise normal points toward the eye.
-    const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
-    const Vec3 toward_eye =
-        camera.projection == Projection::perspective ? camera.eye - world[tri[0]] : forward * -1.0;
-    const bool back = dot(face, toward_eye) < 0;
-    if (back && mesh.cull == Cull::back) continue;
 
     // Inside every plane, the record first: most of a dense mesh's triangles cover no pixel centre and are
-    // dropped before any attribute is looked at.
+    // dropped before their world positions (or any attribute) are looked at.
     int order[3] = {0, 1, 2};
     if (any_out == 0) {  // the record is made where it will stay
       FastTriangle fast;
@@ -342,6 +335,16 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
         part.drop_triangle();
         continue;
       }
+    }
+    // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
+    // front when the counter-clockwise normal points toward the eye.
+    const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
+    const Vec3 toward_eye =
+        camera.projection == Projection::perspective ? camera.eye - world[tri[0]] : forward * -1.0;
+    const bool back = dot(face, toward_eye) < 0;
+    if (back && mesh.cull == Cull::back) {
+      if (any_out == 0) part.drop_triangle();
+      continue;
     }
 
     // The vertices' colours (lit per face) and normals, onto the projected vertices or the clip polygon.
