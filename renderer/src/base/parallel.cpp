@@ -52,8 +52,11 @@ class HelperPool {
   void serve() {
     std::unique_lock lock(mutex_);
     for (;;) {
-      wake_.wait(lock, [&] { return wanting_help() != nullptr; });
-      ParallelJob& job = *wanting_help();
+      // The job found is the one joined: asked twice, a job's last piece could be taken (without the lock)
+      // between the two, and the second answer be none (a helper joined nothing and crashed).
+      ParallelJob* wanting = nullptr;
+      wake_.wait(lock, [&] { return (wanting = wanting_help()) != nullptr; });
+      ParallelJob& job = *wanting;
       const int thread = ++job.helpers_joined;
       ++job.helpers_active;
       lock.unlock();
