@@ -527,9 +527,21 @@ TEST(Core, ATriangleHoldingNoPixelCentreGetsNoRecord) {
   SceneBuilder centre(16, 16);  // the same size around a centre: one record, one pixel
   centre.triangle({5.3, 5.3}, {5.7, 5.3}, {5.5, 5.7}, test::kWhite);
   EXPECT_EQ(records(centre.scene), std::pair(std::int64_t{1}, 1));
-  // A sample of the pattern may lie in it: the record stays.
+  // Multisampled, the same holds of the pattern's samples: the corner triangle covers none of the four (its
+  // hypotenuse x + y = 10.45 passes below (5.375, 5.125), the nearest), so it gets no record; grown to take
+  // that sample in, it gets one and colours its pixel. What would break: the probe missing a covered sample
+  // (the pixel lost), or a triangle kept for its box alone (a record per sub-sample sliver of a dense mesh).
   corner.scene.antialias = raster::Antialias::msaa4;
-  EXPECT_EQ(records(corner.scene).first, 1);
+  EXPECT_EQ(records(corner.scene), std::pair(std::int64_t{0}, 0));
+  SceneBuilder sample(16, 16);
+  sample.triangle({5.05, 5.05}, {5.5, 5.05}, {5.05, 5.5}, test::kWhite);
+  sample.scene.antialias = raster::Antialias::msaa4;
+  EXPECT_EQ(records(sample.scene), std::pair(std::int64_t{1}, 1));
+  for (const raster::Antialias aa : {raster::Antialias::msaa8, raster::Antialias::msaa16}) {
+    corner.scene.antialias = aa;  // denser patterns have a sample in the corner triangle
+    const auto [kept, pixels] = records(corner.scene);
+    EXPECT_EQ(kept, pixels);
+  }
 }
 
 namespace {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace raster::detail {
 
@@ -31,6 +32,10 @@ struct Rect {
 struct SamplePoint {
   std::int32_t x = 128, y = 128;
 };
+
+/// The standard (Direct3D) sample pattern for each count of kSampleCounts (scene.h), on the 1/256 px grid
+/// (grid.cpp). Throws std::logic_error for any other count.
+const std::vector<SamplePoint>& sample_pattern(int samples);
 
 /// Snaps a coordinate (pixels) to an integral number of 1/256 px, rounding half up, so that translating by
 /// whole pixels translates the result exactly.

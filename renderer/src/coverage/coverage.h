@@ -29,10 +29,6 @@
 
 namespace raster::detail {
 
-/// The standard (Direct3D) sample pattern for each count of kSampleCounts (scene.h), on the 1/256 px grid.
-/// Throws std::logic_error for any other count.
-const std::vector<SamplePoint>& sample_pattern(int samples);
-
 /// For 4 and 8 samples a pixel, the centroid of each set of a pixel's samples (entry m: the samples of m's
 /// set bits) as {x, y} pixels from the pixel centre; nullptr for other counts (16 would take 65,536 entries).
 /// Multisampling shades a pixel whose centre is not covered at the centroid of its covered samples: looked

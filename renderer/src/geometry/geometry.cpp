@@ -85,6 +85,10 @@ Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) 
   Setup setup;
   setup.width = plan.width, setup.height = plan.height;
   setup.centre_samples = plan.coverage == Coverage::centre;
+  if (plan.coverage == Coverage::samples) {
+    setup.pattern = sample_pattern(plan.samples).data();
+    setup.pattern_size = plan.samples;
+  }
   Records& first = setup.last_part();  // a record per 2D primitive, about: sized once
   first.order.reserve(plan.draws.size()), first.triangles.reserve(plan.draws.size());
   for (const DrawPlan& draw : plan.draws) {

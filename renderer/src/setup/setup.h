@@ -159,6 +159,10 @@ struct Setup {
   /// The plan's coverage samples each pixel at its centre only (no multisampling, no area): boxes hold the
   /// pixels whose centre they contain, and a triangle that covers no centre gets no record.
   bool centre_samples = false;
+  /// Multisampling: the positions each pixel is sampled at (sample_pattern), `pattern_size` of them; a small
+  /// triangle that covers none of its box's samples gets no record. Null otherwise.
+  const SamplePoint* pattern = nullptr;
+  int pattern_size = 0;
 
   /// Adds a draw call (its layout made from its mode's varyings); returns its index.
   std::uint32_t add_call(const DrawCall& call);
@@ -243,6 +247,25 @@ inline bool covers_a_centre(const EdgeFunctions<std::int64_t>& e, Rect box) {
   return false;
 }
 
+// True when a sample of `pattern` (`count` positions) in a pixel of `box` is covered by `e` (the box holds at
+// most kProbePixels pixels). A sample outside the vertices' range [lo, hi] (1/256 px) cannot be covered: most
+// of a dense mesh's triangles hold no sample point even in their bounding box, and are told so by comparing
+// coordinates alone.
+inline bool covers_a_sample(const EdgeFunctions<std::int64_t>& e, Rect box, const std::int64_t (&lo)[2],
+                            const std::int64_t (&hi)[2], const SamplePoint* pattern, int count) {
+  for (int y = box.y0; y < box.y1; ++y)
+    for (int x = box.x0; x < box.x1; ++x)
+      for (int s = 0; s < count; ++s) {
+        const std::int64_t X = std::int64_t{x} * kSubpixelScale + pattern[s].x,
+                           Y = std::int64_t{y} * kSubpixelScale + pattern[s].y;
+        if (X < lo[0] || X > hi[0] || Y < lo[1] || Y > hi[1]) continue;
+        if (e.a[0] * X + e.b[0] * Y + e.c[0] >= 0 && e.a[1] * X + e.b[1] * Y + e.c[1] >= 0 &&
+            e.a[2] * X + e.b[2] * Y + e.c[2] >= 0)
+          return true;
+      }
+  return false;
+}
+
 }  // namespace setup_detail
 
 [[gnu::always_inline]] inline Rect Setup::pixel_box(const std::int64_t (&lo)[2],
@@ -278,10 +301,11 @@ inline bool covers_a_centre(const EdgeFunctions<std::int64_t>& e, Rect box) {
   }
   r.edges = setup_detail::make_edges(x, y, area);
   r.wide = TriangleRecord::kFast;
-  // A small triangle that holds no pixel centre draws nothing: it gets no record (most of a dense model's
-  // triangles are smaller than a pixel).
-  return !(centre_samples && (r.box.x1 - r.box.x0) * (r.box.y1 - r.box.y0) <= setup_detail::kProbePixels &&
-           !setup_detail::covers_a_centre(r.edges, r.box));
+  // A small triangle that holds no pixel centre (or, multisampled, no sample) draws nothing: it gets no
+  // record (most of a dense model's triangles are smaller than a pixel).
+  if ((r.box.x1 - r.box.x0) * (r.box.y1 - r.box.y0) > setup_detail::kProbePixels) return true;
+  if (centre_samples) return setup_detail::covers_a_centre(r.edges, r.box);
+  return !pattern || setup_detail::covers_a_sample(r.edges, r.box, lo, hi, pattern, pattern_size);
 }
 
 /// Per tile, the records that may touch it, in scene order: for each part of the setup a flat array of
