@@ -56,14 +56,13 @@ struct TriangleJob {
 
 std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, SetupVertex (&dv)[3]) const {
   const Mesh& mesh = view.mesh;
-  const PodArray<Vec3>& world = view.world;
   const auto& tri = mesh.triangles[t];
   const VaryingLayout& with = setup.calls[call].layout;
   float shade[3] = {1, 1, 1};
   if (mode.lit &&
       !with.has(Varying::normal)) {  // flat: once per face, lit from the side seen, at its centroid
     const Vec3 n = normalize(back ? face * -1.0 : face);
-    const Vec3 c = (world[tri[0]] + world[tri[1]] + world[tri[2]]) * (1.0 / 3);
+    const Vec3 c = (view.world_at(tri[0]) + view.world_at(tri[1]) + view.world_at(tri[2])) * (1.0 / 3);
     const float normal[3] = {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
     const float centre[3] = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
     light_lanes<3>(setup.calls[call].lights, normal, centre, shade);
@@ -92,7 +91,7 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
     else if (with.has(Varying::normal))
       put(Varying::normal,
           mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]]);
-    if (with.has(Varying::position)) put(Varying::position, world[tri[k]]);
+    if (with.has(Varying::position)) put(Varying::position, view.world_at(tri[k]));
   }
   if (mode.specular) triangle_call = material_calls.at(material_key(mesh, t, texture));
   return triangle_call;
@@ -127,7 +126,6 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
 void TriangleJob::triangle(std::size_t t, Records& part) const {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
-  const PodArray<Vec3>& world = view.world;
   const VaryingLayout& with = setup.calls[call].layout;
   const auto& tri = mesh.triangles[t];
   // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
@@ -149,9 +147,9 @@ void TriangleJob::triangle(std::size_t t, Records& part) const {
   }
   // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
   // front when the counter-clockwise normal points toward the eye.
-  const Vec3 face = cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]);
-  const Vec3 toward_eye =
-      camera.projection == Projection::perspective ? camera.eye - world[tri[0]] : forward * -1.0;
+  const Vec3 a = view.world_at(tri[0]);
+  const Vec3 face = cross(view.world_at(tri[1]) - a, view.world_at(tri[2]) - a);
+  const Vec3 toward_eye = camera.projection == Projection::perspective ? camera.eye - a : forward * -1.0;
   const bool back = dot(face, toward_eye) < 0;
   if (back && mesh.cull == Cull::back) {
     if (any_out == 0) part.drop_triangle();

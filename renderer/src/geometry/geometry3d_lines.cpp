@@ -102,14 +102,16 @@ void add_lines(const MeshView& view, const PrimitivePlan& line_mode, Setup& setu
 void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setup, StopMeter& meter) {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
-  const std::span<const Vec3> world = std::span<const Vec3>(view.world.data(), view.world.size());
+  const std::size_t vertices = mesh.positions.size();
   // Positions with equal coordinates are one point here: models that repeat a corner per face (UV seams,
   // STL-like soups) still have shared edges, not a boundary around every face.
-  std::vector<std::uint32_t> same(world.size());
+  std::vector<std::uint32_t> same(vertices);
   {
-    std::vector<std::uint32_t> order(world.size());
+    std::vector<std::uint32_t> order(vertices);
     for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    auto key = [&](std::uint32_t i) { return std::tuple(world[i].x, world[i].y, world[i].z); };
+    auto key = [&](std::uint32_t i) {
+      return std::tuple(view.world_at(i).x, view.world_at(i).y, view.world_at(i).z);
+    };
     std::sort(order.begin(), order.end(), [&](std::uint32_t p, std::uint32_t q) { return key(p) < key(q); });
     for (std::size_t k = 0; k < order.size(); ++k)
       same[order[k]] = k > 0 && key(order[k]) == key(order[k - 1]) ? same[order[k - 1]] : order[k];
@@ -126,7 +128,8 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
   std::sort(edges.begin(), edges.end());  // not interruptible: n log n of the model's edges
   auto face_normal = [&](std::uint32_t t) {
     const auto& tri = mesh.triangles[t];
-    return normalize(cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]));
+    const Vec3 a = view.world_at(tri[0]);
+    return normalize(cross(view.world_at(tri[1]) - a, view.world_at(tri[2]) - a));
   };
   const double cos_crease = std::cos(mesh.edges.crease_deg * std::numbers::pi / 180);
   const Vec3 forward = normalize(camera.target - camera.eye);
@@ -141,7 +144,7 @@ void add_edges(const MeshView& view, const PrimitivePlan& edge_mode, Setup& setu
   // and edges on its nearest face would be clipped away.
   const VaryingLayout edge_layout = VaryingLayout::of(edge_mode.varyings);
   auto pulled = [&](std::uint32_t i) {
-    const Vec3& p = world[i];
+    const Vec3 p = view.world_at(i);
     Vec3 toward_eye = forward * -1.0;
     double pixel = ortho_pixel;
     if (camera.projection == Projection::perspective) {

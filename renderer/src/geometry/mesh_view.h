@@ -154,16 +154,28 @@ struct MeshView {
   PodArray<std::uint8_t>
       outside;  ///< bit p: outside plane p; 0x40: inside but not projectable; 0x80: not finite
   PodArray<ScreenVertex> screen;  ///< where outside == 0; x is kNoScreen elsewhere
-  PodArray<Vec3> world;           ///< world positions
+  /// The mesh is in world space already (its transform the identity, as a model's is): world_at reads its
+  /// positions, and no world array is made (24 bytes a vertex, written and read again).
+  bool identity;
+  PodArray<Vec3> world;  ///< world positions, under a transform (empty under the identity)
 
   MeshView(const Mesh& m, const RenderPlan& p)
       : mesh(m),
         plan(p),
         planes{1 + 2 * kGuardPx / p.width, 1 + 2 * kGuardPx / p.height},
         viewport{static_cast<double>(p.width), static_cast<double>(p.height)},
-        model_to_clip(p.view.world_to_clip * m.transform) {
-    outside.resize_uninitialized(m.positions.size()), screen.resize_uninitialized(m.positions.size()),
-        world.resize_uninitialized(m.positions.size());
+        model_to_clip(p.view.world_to_clip * m.transform),
+        identity(m.transform == Mat4{}) {
+    outside.resize_uninitialized(m.positions.size()), screen.resize_uninitialized(m.positions.size());
+    if (!identity) world.resize_uninitialized(m.positions.size());
+  }
+
+  /// Vertex i's world position: under the identity its position widened, a zero of either sign as +0 (the
+  /// bits transform_point gives: x + 0 y + 0 z + 0).
+  Vec3 world_at(std::size_t i) const {
+    if (!identity) return world[i];
+    const Vec3f& p = mesh.positions[i];
+    return {p.x + 0.0, p.y + 0.0, p.z + 0.0};
   }
 
   /// Every vertex, in pieces on the render's threads (each writes its own vertices). False when stopped.
@@ -182,7 +194,7 @@ struct MeshView {
   }
 
   void project_vertex(std::size_t i) {
-    world[i] = transform_point(mesh.transform, mesh.positions[i]);
+    if (!identity) world[i] = transform_point(mesh.transform, mesh.positions[i]);
     const Vec4 c = transform(model_to_clip, mesh.positions[i]);
     screen[i] = {kNoScreen, 0, 0, 0};  // until it is projected (the batches read every vertex's)
     if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {

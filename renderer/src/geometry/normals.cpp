@@ -92,6 +92,7 @@ struct Corners {
 
 // The normals of vertices [v0, v1): every triangle with a corner there adds its face normal times that
 // corner's angle, in triangle order; batches of kTriangles measure their triangles together.
+template <bool kIdentity>
 [[gnu::always_inline]] inline void accumulate(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v0,
                                               std::uint32_t v1, PodArray<Vec3>& normals, StopMeter& own) {
   auto mine = [&](std::uint32_t v) { return v >= v0 && v < v1; };
@@ -109,8 +110,13 @@ struct Corners {
     for (int i = 0; i < n; ++i) {
       const auto& tri = mesh.triangles[batch[i]];
       for (int k = 0; k < 3; ++k) {
-        const Vec3& q = world[tri[k]];
-        p[k][0][i] = q.x, p[k][1][i] = q.y, p[k][2][i] = q.z;
+        if constexpr (kIdentity) {  // MeshView::world_at's bits
+          const Vec3f& q = mesh.positions[tri[k]];
+          p[k][0][i] = q.x + 0.0, p[k][1][i] = q.y + 0.0, p[k][2][i] = q.z + 0.0;
+        } else {
+          const Vec3& q = world[tri[k]];
+          p[k][0][i] = q.x, p[k][1][i] = q.y, p[k][2][i] = q.z;
+        }
       }
     }
     Corners c;
@@ -127,13 +133,15 @@ struct Corners {
 
 void accumulate_sse2(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v0, std::uint32_t v1,
                      PodArray<Vec3>& normals, StopMeter& own) {
-  accumulate(mesh, world, v0, v1, normals, own);
+  if (world.empty()) return accumulate<true>(mesh, world, v0, v1, normals, own);
+  accumulate<false>(mesh, world, v0, v1, normals, own);
 }
 #if defined(__x86_64__)
 __attribute__((target("avx2"))) void accumulate_avx2(const Mesh& mesh, std::span<const Vec3> world,
                                                      std::uint32_t v0, std::uint32_t v1,
                                                      PodArray<Vec3>& normals, StopMeter& own) {
-  accumulate(mesh, world, v0, v1, normals, own);
+  if (world.empty()) return accumulate<true>(mesh, world, v0, v1, normals, own);
+  accumulate<false>(mesh, world, v0, v1, normals, own);
 }
 #endif
 
@@ -141,7 +149,7 @@ __attribute__((target("avx2"))) void accumulate_avx2(const Mesh& mesh, std::span
 
 PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, Simd simd,
                               StopMeter& meter) {
-  const std::size_t nv = world.size();
+  const std::size_t nv = mesh.positions.size();
   PodArray<Vec3> normals;
   normals.resize_uninitialized(nv);
   const std::size_t pieces = static_cast<std::size_t>(std::max(threads, 1));

@@ -18,6 +18,8 @@ namespace raster::detail {
 /// its own vertices: every vertex still sums its faces in triangle order, so the normals are the same bits
 /// for any thread count (a triangle whose corners lie in two ranges is measured twice). Triangles are
 /// measured four at a time, on `simd`'s instruction set, with the bits of one at a time.
+/// `world`: the mesh's world positions, one per position; empty when the mesh is in world space already (its
+/// transform the identity), whose positions are then read as MeshView::world_at reads them.
 PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, Simd simd,
                               StopMeter& meter);
 
