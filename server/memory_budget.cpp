@@ -47,7 +47,7 @@ bool RequestBudget::expired() const noexcept {
   return (cancel_ && cancel_->load(std::memory_order_relaxed)) || Clock::now() >= deadline_;
 }
 
-void RequestBudget::release(std::int64_t bytes) {
+void RequestBudget::release(std::int64_t bytes) noexcept {
   bytes = std::min(bytes, held_.load());
   held_ -= bytes;
   pool_.give(bytes);

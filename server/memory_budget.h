@@ -54,8 +54,8 @@ class RequestBudget final : public raster::Budget {
   }
   bool reserve(std::int64_t bytes) noexcept override;
   bool expired() const noexcept override;
-  /// Gives back what was freed early (the body, once parsed).
-  void release(std::int64_t bytes);
+  /// Gives back what was freed early (the body, once parsed; a reader's scratch, once the mesh is made).
+  void release(std::int64_t bytes) noexcept override;
 
   std::int64_t held() const { return held_.load(); }  ///< bytes
   /// Held plus the ask that was refused: what the request would have needed at the point it stopped.

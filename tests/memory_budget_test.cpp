@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
@@ -287,12 +288,12 @@ TEST(MemoryBudget, ABodyLargerThanTheBudgetIsA413BeforeItIsRead) {
 }
 
 // A model whose reader needs more than the whole budget: 422 memory-limit (waiting could never help, so not
-// a 503). 30,000 faces of 3 corners x kObjPerCorner = 5.76 MB, over 4 MiB, in a 240 kB body. What would
-// break: the reader's reservation missing (the model parsed anyway) or refused as if it were temporary.
+// a 503). 350,000 triangles of 12 bytes = 4.2 MB, over 4 MiB, from a 2.8 MB body. What would break: the
+// reader's reservation missing (the model parsed anyway) or refused as if it were temporary.
 TEST(MemoryBudget, AModelThatCouldNeverFitIsA422MemoryLimit) {
   std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  for (int i = 0; i < 30'000; ++i) obj += "f 1 2 3\n";
-  static_assert(raster::cost::kObjPerCorner * 3 * 30'000 > kBudget);
+  for (int i = 0; i < 350'000; ++i) obj += "f 1 2 3\n";
+  static_assert(sizeof(std::array<std::uint32_t, 3>) * 350'000 > kBudget);
   TestServer server(small_budget());
   auto r = server.client().Post("/render?width=16&height=16", obj, "model/obj");
   ASSERT_TRUE(r);

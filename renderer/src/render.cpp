@@ -244,7 +244,7 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   const detail::Stop stop{control.deadline, control.cancel, &stopped,
                           &control.clock,   control.budget, &refused};
   const auto cancelled = [&] {  // why the render stopped: the budget refused memory, or time ran out
-    if (refused.load()) throw MemoryRefused(refused.load(), "the render's tile bins");
+    if (refused.load()) throw MemoryRefused(refused.load(), "the render's records and tile bins");
     throw RenderCancelled("render stopped: deadline passed or cancelled");
   };
   detail::StopMeter meter(stop);  // the calling thread's, for geometry, binning and allocation

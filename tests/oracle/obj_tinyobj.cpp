@@ -31,6 +31,10 @@
 namespace raster::obj {
 namespace {
 
+// What the reader through tinyobjloader reserved (rasterd 0.4's measured costs).
+constexpr std::int64_t kObjPerCorner = 64;  // per face corner (tinyobjloader's index and ours)
+constexpr std::int64_t kObjPerVertex = 72;  // per v, vt or vn line (doubles there, floats here)
+
 // One index of a face/line/point reference, resolved like OBJ: 1-based, negative = relative to the end.
 // Returns false (with `why`) when it is not an integer or does not name an element defined so far.
 bool check_index(std::string_view text, std::int64_t defined, const char* what, std::string& why) {
@@ -386,8 +390,8 @@ Mesh parse_obj_tinyobj(std::string_view obj_text, std::string_view mtl_text, con
   const MtlPass mtl = read_mtl(mtl_text);
   // The prescan has counted what tinyobjloader and the mesh will hold: asked for before either is built.
   detail::reserve(limits,
-                  cost::kObjPerCorner * (counts.corners + 2 * counts.segments + counts.point_refs) +
-                      cost::kObjPerVertex * (counts.v + counts.vt + counts.vn),
+                  kObjPerCorner * (counts.corners + 2 * counts.segments + counts.point_refs) +
+                      kObjPerVertex * (counts.v + counts.vt + counts.vn),
                   [&] {
                     return "the model's " + std::to_string(counts.faces) + " faces and " +
                            std::to_string(counts.v) + " vertices";

@@ -20,6 +20,9 @@ class Budget {
   /// asking stage then stops and throws MemoryRefused. May wait (the service waits for other requests to
   /// give memory back, within its queue's bound).
   virtual bool reserve(std::int64_t bytes) noexcept = 0;
+  /// Gives back `bytes` of what was reserved, freed before the render ends (a reader's scratch once the mesh
+  /// is made, the body once parsed), so a later stage's asks find them free. By default kept to the end.
+  virtual void release(std::int64_t bytes) noexcept { (void)bytes; }
   /// True once the render must stop (its deadline passed, or it was cancelled): the readers ask every 65,536
   /// units of work (lines, entries, list items, corners, JSON values, ...) and throw RenderCancelled.
   virtual bool expired() const noexcept = 0;
@@ -48,28 +51,32 @@ class RenderCancelled : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// What each stage reserves, in bytes per counted thing: the resident peak each stage adds, measured with
-/// tests/memory_estimate_test (VmHWM of a child process per model, face-dense and vertex-dense, in each
-/// format) and rounded up; docs/memory.md has the measurements. A reservation is an upper bound of what the
-/// stage holds at its peak, including std::vector's growth where a reader cannot size its arrays first.
+/// What the plan and the scene reader reserve, in bytes per counted thing. The model readers reserve the
+/// arrays they make, at their sizes, once their counts are known (and a reader's scratch, such as an STL's
+/// welding table, until it is freed); the records are asked for as geometry makes them. What every case
+/// reserves is held between its measured resident peak and 1.3 times it by tests/memory_estimate_test
+/// (VmHWM of a child process per model, face-dense and vertex-dense, in each format); docs/memory.md has
+/// the measurements.
 namespace cost {
-// Readers: what the parse holds at its peak, the finished Mesh included (the request body is the caller's).
-inline constexpr std::int64_t kObjPerCorner = 64;  ///< per face corner (tinyobjloader's index and ours)
-inline constexpr std::int64_t kObjPerVertex = 72;  ///< per v, vt or vn line (doubles there, floats here)
-inline constexpr std::int64_t kStlPerFacet = 112;  ///< per triangle: three corners of its own
-inline constexpr std::int64_t kPlyPerFace = 48;    ///< per face (its index list, then a triangle)
-inline constexpr std::int64_t kPlyPerVertex = 48;  ///< per vertex (position, normal, colour)
-inline constexpr std::int64_t kGltfPerByte = 2;    ///< per byte sent: tinygltf's copies of buffers and images
-inline constexpr std::int64_t kGltfPerTriangle = 32;  ///< per triangle drawn (a node draws its mesh again)
-inline constexpr std::int64_t kGltfPerVertex = 48;    ///< per vertex drawn: position, normal, colour, uv
-inline constexpr std::int64_t kScenePerByte = 4;      ///< per byte of scene JSON: its primitives, parsed
-// Render: per triangle and per vertex of 3D meshes (records, attributes, transformed corners), per 2D
-// primitive, and 4 bytes per bin entry (counted before the bins are filled); the pixel buffers are the
-// plan's.
-inline constexpr std::int64_t kRenderPerTriangle = 192;
-inline constexpr std::int64_t kRenderPerVertex = 48;
-inline constexpr std::int64_t kRenderPerPoint = 56;  ///< a point's record (48 bytes) and its place in order
+/// What a render holds besides what it counts, per render thread: the thread's touched stack and its
+/// allocator arena, the shaders' scratch; the 1-2.5 MB by which the measured peaks of
+/// tests/memory_estimate_test (two threads) exceed the counted arrays, rounded up.
+inline constexpr std::int64_t kRenderPerThread = std::int64_t{3} << 19;
+inline constexpr std::int64_t kScenePerByte = 4;  ///< per byte of scene JSON: its primitives, parsed
+// Render, asked by the plan: what the geometry holds per vertex of a mesh (which clip planes it is outside
+// of, 1 byte, and its projected position, 16), per vertex under a transform (its world position) and per
+// normal it lights with (computed per vertex, or the mesh's own turned into world space), per triangle of a
+// mesh drawn with feature edges or as a wireframe (its three edges, listed and sorted), per segment (its
+// ends and colours), per 2D primitive; the pixel buffers are the plan's. The records are asked for as
+// geometry makes them (their bytes, in steps of kRenderRecordStep: most of a dense mesh's triangles get
+// none), and 4 bytes per bin entry once the bins are counted.
+inline constexpr std::int64_t kRenderPerVertex = 17;
+inline constexpr std::int64_t kRenderPerWorldVertex = 24;
+inline constexpr std::int64_t kRenderPerNormal = 24;
+inline constexpr std::int64_t kRenderPerEdgeTriangle = 3 * 16;
+inline constexpr std::int64_t kRenderPerSegment = 16;
 inline constexpr std::int64_t kRenderPerPrimitive = 160;
+inline constexpr std::int64_t kRenderRecordStep = std::int64_t{1} << 20;
 inline constexpr std::int64_t kRenderPerBinEntry = 4;
 }  // namespace cost
 

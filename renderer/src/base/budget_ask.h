@@ -2,10 +2,12 @@
 // their counts call for, and whether to stop. One place, so every stage refuses and stops alike.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <utility>
 
+#include "base/memory.h"
 #include "raster/budget.h"
 #include "raster/scene.h"
 
@@ -20,6 +22,23 @@ void reserve(Budget* budget, std::int64_t bytes, What&& what) {
 template <typename What>
 void reserve(const Limits& limits, std::int64_t bytes, What&& what) {
   reserve(limits.budget, bytes, std::forward<What>(what));
+}
+
+/// Gives `bytes` back to `limits`' budget (nothing without one): what a stage reserved and has freed.
+inline void release(const Limits& limits, std::int64_t bytes) {
+  if (limits.budget && bytes > 0) limits.budget->release(bytes);
+}
+
+/// Room for `n` elements in a reader's array `v` (std::vector), grown geometrically (at least twice its
+/// capacity) and asked of the budget: the larger array before it is made, the smaller given back once its
+/// elements have moved. New storage is advised to take huge pages (reserve_huge).
+template <typename Vector, typename What>
+void grow_asked(const Limits& limits, Vector& v, std::size_t n, What&& what) {
+  if (n <= v.capacity()) return;
+  const std::size_t capacity = std::max(n, 2 * v.capacity()), old = v.capacity();
+  reserve(limits, static_cast<std::int64_t>(capacity * sizeof(v[0])), std::forward<What>(what));
+  reserve_huge(v, capacity);
+  release(limits, static_cast<std::int64_t>(old * sizeof(v[0])));
 }
 
 /// Throws RenderCancelled once the budget says the render must stop. Cheap: readers call it every

@@ -109,9 +109,12 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
   const bool sampled = setup.centre_samples || setup.pattern;
   const SamplePoint* pattern = setup.centre_samples ? &kCentre : setup.pattern;
   const int pattern_size = setup.centre_samples ? 1 : setup.pattern_size;
+  // The records are asked of the budget as they are made (Records::account): most triangles make none.
+  std::int64_t asked = part.bytes();
   for (std::size_t first = begin; first < end; first += 8) {
     const int n = static_cast<int>(std::min<std::size_t>(8, end - first));
     if (meter.add(n * StopMeter::kPrimitiveWork)) return;  // deadline: a mesh can be millions of triangles
+    if (!part.account(meter.stop(), asked)) return;
     std::uint32_t batch =
         sampled ? sample_candidates(&mesh.triangles[first], n, view.screen.data(), pattern, pattern_size,
                                     view.plan.width, view.plan.height, view.plan.simd)
@@ -121,6 +124,7 @@ void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMet
       triangle(t, part);
     }
   }
+  part.account(meter.stop(), asked, true);
 }
 
 void TriangleJob::triangle(std::size_t t, Records& part) const {
@@ -217,8 +221,11 @@ void add_mesh(const Mesh& mesh, const DrawPlan& draw, const RenderPlan& plan, Se
   MeshView view(mesh, plan);
   if (!view.project(meter)) return;
   if (!mesh.wireframe && !mesh.triangles.empty()) add_triangles(view, draw.mode, setup, meter);
+  // Lines and edges go into the last part, one after another: their records asked for once made.
+  std::int64_t asked = setup.last_part().bytes();
   add_lines(view, draw.line_mode, setup, meter);
   if (draw.edge_mode.depth) add_edges(view, draw.edge_mode, setup, meter);
+  if (!setup.last_part().account(meter.stop(), asked, true)) return;
   if (draw.point_mode.depth) add_points(view, draw.point_mode, setup, meter);
 }
 

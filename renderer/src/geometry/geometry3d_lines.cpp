@@ -190,13 +190,16 @@ void add_points(const MeshView& view, const PrimitivePlan& point_mode, Setup& se
   in_parts(mesh.points.size(), kPiece, view.plan.threads, setup, meter,
            [&](std::size_t begin, std::size_t end, Records& part, StopMeter& own) {
              part.points.reserve_more(end - begin), part.order.reserve_more(end - begin);
+             std::int64_t asked = part.bytes();  // the records asked for as they are made
              for (std::size_t k = begin; k < end; ++k) {
                if (own.add(StopMeter::kRowWork)) return;  // deadline: a cloud can be millions of points
+               if ((k & 1023) == 0 && !part.account(own.stop(), asked)) return;
                const std::uint32_t i = mesh.points[k];
                if (view.outside[i]) continue;
                const ScreenVertex& v = view.screen[i];
                setup.add_point(part, {v.x, v.y, radius, v.depth, view.vertex_color(i), call, {}});
              }
+             part.account(own.stop(), asked, true);
            });
 }
 

@@ -326,8 +326,8 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
   // Checked before tinygltf sees the document: it is JSON within the depth limit (tinygltf turns "extras"
   // into Values recursively: 50,000 nested '[' overflowed the stack), what it would build is bounded, and
   // the buffers it would copy fit in the bytes sent.
-  std::uint64_t sent = bytes.size();
-  for (const auto& [name, file] : files) sent += file.size();
+  std::uint64_t sent = bytes.size();  // and the other files (a scene's uploads hold the model: counted once)
+  for (const auto& [name, file] : files) sent += file.data() != bytes.data() ? file.size() : 0;
   Shape shape;
   detail::ReadMeter meter(limits);  // each JSON value a unit while the document is measured
   try {
@@ -351,10 +351,11 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
   if (binary && shape.buffers_without_uri > 1)
     gltf_error("more than one buffer has no URI; only the first may be a GLB's binary chunk");
 
-  // tinygltf copies the buffers and images it is given (base64 ones decoded), and keeps the document's
-  // objects: bounded by what was sent, asked for before it runs.
-  detail::reserve(limits, cost::kGltfPerByte * static_cast<std::int64_t>(sent),
-                  [] { return std::string("reading the glTF document"); });
+  // tinygltf copies the buffers and images it is given (base64 ones decoded: CopyBudget holds the copies to
+  // the bytes sent) and keeps the document's objects (measured above): asked for before it runs, given
+  // back once the mesh is built from them.
+  const auto document = static_cast<std::int64_t>(sent + shape.structure_bytes);
+  detail::reserve(limits, document, [] { return std::string("reading the glTF document"); });
   // tinygltf's parse cannot be asked to stop; it is linear in the bytes just measured, and asked about before
   // and after.
   meter.check();
@@ -390,7 +391,10 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits, const Uploads& fil
     gltf_error("the document is glTF " + model.asset.version.substr(0, 20) +
                "; rasterd reads glTF 2.0 (Blender and the glTF tools convert older files)");
   meter.check();
-  return gltf::build_mesh(model, limits, files, sent);
+  Mesh mesh = gltf::build_mesh(model, limits, files, sent);
+  model = {};
+  detail::release(limits, document);
+  return mesh;
 }
 
 }  // namespace raster

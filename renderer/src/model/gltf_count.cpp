@@ -9,8 +9,8 @@
 
 namespace raster::gltf {
 
-void check_what_it_builds(const tinygltf::Model& model, const std::vector<int>& roots, bool every_mesh,
-                          std::uint64_t sent, std::size_t max_primitives) {
+BuiltCounts check_what_it_builds(const tinygltf::Model& model, const std::vector<int>& roots, bool every_mesh,
+                                 std::uint64_t sent, std::size_t max_primitives) {
   // A declared count, where its buffer view could hold that many elements (else 0: AccessorView refuses
   // the accessor, naming it, when the walk reaches it); at most 2^32, so a million primitives' sum cannot
   // overflow.
@@ -77,6 +77,7 @@ void check_what_it_builds(const tinygltf::Model& model, const std::vector<int>& 
   };
   if (vertices > allowed) refuse(vertices, "vertices");
   if (faces > allowed) refuse(faces, "triangles and lines");
+  return {vertices, faces};
 }
 
 }  // namespace raster::gltf

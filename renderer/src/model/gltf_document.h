@@ -47,9 +47,14 @@ std::string upload_names(const Uploads& files);
 // What drawing the nodes from `roots` (or, `every_mesh`, each mesh once) would build, counted from the
 // accessors' declared counts before anything is built, against what the `sent` bytes allow (model.h:
 // kModelBuiltPerByte); more than `max_primitives` drawn primitives is refused too. Throws SceneError(limit).
-// Only a count: the walk that builds checks each node, accessor and limit itself.
-void check_what_it_builds(const tinygltf::Model& model, const std::vector<int>& roots, bool every_mesh,
-                          std::uint64_t sent, std::size_t max_primitives);
+// Only a count: the walk that builds checks each node, accessor and limit itself; it sizes the mesh's
+// arrays by it once (vertices for positions and their attributes, faces for triangles and theirs).
+struct BuiltCounts {
+  std::uint64_t vertices = 0;  ///< POSITION elements of every drawn primitive
+  std::uint64_t faces = 0;     ///< triangles, and line segments, as add_faces makes them
+};
+BuiltCounts check_what_it_builds(const tinygltf::Model& model, const std::vector<int>& roots, bool every_mesh,
+                                 std::uint64_t sent, std::size_t max_primitives);
 
 // One accessor's elements as doubles, after checking that every byte it names lies in its buffer.
 class AccessorView {

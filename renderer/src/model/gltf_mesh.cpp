@@ -28,10 +28,6 @@ constexpr std::uint64_t kPrimitiveWork = 1024;
 
 // Room for `more` elements, growing geometrically: a model of many primitives must not reallocate its arrays
 // once per primitive (reserving exactly each time copies them quadratically often).
-template <typename T>
-void make_room(std::vector<T>& v, std::size_t more) {
-  if (v.capacity() - v.size() < more) detail::reserve_huge(v, std::max(v.size() + more, 2 * v.capacity()));
-}
 
 double srgb_of_linear(double c) {
   c = std::clamp(c, 0.0, 1.0);
@@ -97,8 +93,8 @@ class MeshBuilder {
       for (std::size_t i = 0; i < child.size(); ++i)
         if (!child[i]) roots.push_back(static_cast<int>(i));
     }
-    check_what_it_builds(model_, roots, model_.scenes.empty() && model_.nodes.empty(), sent_,
-                         kMaxDrawnPrimitives);
+    counts_ = check_what_it_builds(model_, roots, model_.scenes.empty() && model_.nodes.empty(), sent_,
+                                   kMaxDrawnPrimitives);
     visited_.assign(model_.nodes.size(), false);
     // Depth first without recursion: a document's nesting cannot exhaust the stack.
     std::vector<std::pair<int, Mat>> stack;
@@ -122,6 +118,7 @@ class MeshBuilder {
       mesh_.textures.clear(), mesh_.uvs.clear(), mesh_.face_textures.clear();
       for (raster::Material& m : mesh_.materials) m.metallic_roughness_texture = -1;
     } else {
+      room(mesh_.uvs, mesh_.positions.size() - mesh_.uvs.size(), counts_.vertices);
       mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
       mesh_.uv_triangles = mesh_.triangles;
     }
@@ -172,8 +169,10 @@ class MeshBuilder {
       add_colours(p, where, count, material.colour, material.blend);
       add_uvs(p, where, count, material);
       primitive_surface_ = material.surface;
-      if (material.surface >= 0 && mesh_.face_materials.empty())  // the first: earlier faces are Lambert
+      if (material.surface >= 0 && mesh_.face_materials.empty()) {  // the first: earlier faces are Lambert
+        room(mesh_.face_materials, mesh_.triangles.size(), counts_.faces);
         mesh_.face_materials.assign(mesh_.triangles.size(), -1);
+      }
 
       // Its faces: straight from a triangle list's indices, else through its corner order.
       const std::size_t first_triangle = mesh_.triangles.size();
@@ -207,10 +206,7 @@ class MeshBuilder {
                                              std::to_string(3 * limits_.max_model_faces) + " vertices");
     // Its loops (positions, normals, colours, uvs: each linear in the accessor) counted before they run.
     meter_.add(4 * positions.count());
-    detail::reserve(limits_, cost::kGltfPerVertex * static_cast<std::int64_t>(positions.count()), [&] {
-      return positions.what() + "'s " + std::to_string(positions.count()) + " vertices";
-    });
-    make_room(mesh_.positions, positions.count());
+    room(mesh_.positions, positions.count(), counts_.vertices);
     mesh_.positions.resize(base + positions.count());
     Vec3f* out = mesh_.positions.data() + base;
     // Every coordinate finite and within +-2^128 (what the renderer takes): checked as it is stored, the
@@ -243,7 +239,7 @@ class MeshBuilder {
     const AccessorView normals(model_, it->second, where + " NORMAL");
     if (normals.components() != 3 || normals.count() != count) return false;
     const std::size_t base = mesh_.positions.size() - count;
-    make_room(mesh_.normals, base + count - mesh_.normals.size());
+    room(mesh_.normals, base + count - mesh_.normals.size(), counts_.vertices);
     mesh_.normals.resize(base);
     normals.each_vec3([&](std::size_t, double x, double y, double z) {
       mesh_.normals.push_back(Vec3f(Vec3{n[0] * x + n[1] * y + n[2] * z, n[3] * x + n[4] * y + n[5] * z,
@@ -259,7 +255,10 @@ class MeshBuilder {
       if (mesh_.shading == Shading::smooth) mesh_.shading = Shading::flat;
       return;
     }
+    room(mesh_.normals, mesh_.positions.size() - std::min(mesh_.positions.size(), mesh_.normals.size()),
+         counts_.vertices);
     mesh_.normals.resize(mesh_.positions.size());
+    room(mesh_.normal_triangles, mesh_.triangles.size(), counts_.faces);
     mesh_.normal_triangles = mesh_.triangles;
     const auto& pos = mesh_.positions;
     for (const auto& [first, end] : without_normals_)
@@ -301,7 +300,7 @@ class MeshBuilder {
       return;
     }
     colour_each_vertex(base);
-    make_room(mesh_.colors, count);
+    room(mesh_.colors, count, counts_.vertices);
     for (std::size_t i = 0; i < count; ++i) {
       double c[4] = {factor[0], factor[1], factor[2], factor[3]};
       for (int k = 0; k < colours->components(); ++k) c[k] *= colours->get(i, k);
@@ -316,6 +315,7 @@ class MeshBuilder {
     one_colour_ = false;
     if (vertices == 0) return;
     const Rgba8 c = mesh_.colors.front();
+    room(mesh_.colors, vertices, counts_.vertices);
     mesh_.colors.assign(vertices, c);
   }
 
@@ -456,9 +456,13 @@ class MeshBuilder {
         it != p.attributes.end() && (primitive_texture_ >= 0 || material.metal_rough_texture >= 0);
     if (reads_uvs && !textured_) {
       textured_ = true;
+      room(mesh_.face_textures, mesh_.triangles.size(), counts_.faces);
       mesh_.face_textures.assign(mesh_.triangles.size(), -1);
     }
-    if (textured_) mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
+    if (textured_) {
+      room(mesh_.uvs, mesh_.positions.size() - mesh_.uvs.size(), counts_.vertices);
+      mesh_.uvs.resize(mesh_.positions.size(), {0, 0});
+    }
     if (!reads_uvs) return;
     const AccessorView uv(model_, it->second, where + " TEXCOORD_" + std::to_string(texcoord));
     if (uv.components() != 2 || uv.count() != count) gltf_error(uv.what() + " is not one VEC2 per vertex");
@@ -470,17 +474,27 @@ class MeshBuilder {
     }
   }
 
+  // Room for `more` elements in `v`, an array of one element per vertex (face) of the model: the first time
+  // for every vertex (face) the document draws (check_what_it_builds), asked of the budget once, so no
+  // array grows (a growing array is held twice while it moves).
+  template <typename T>
+  void room(std::vector<T>& v, std::size_t more, std::uint64_t total) {
+    if (v.capacity() - v.size() >= more) return;
+    const std::size_t capacity = std::max<std::size_t>(v.size() + more, static_cast<std::size_t>(total));
+    detail::reserve(limits_, static_cast<std::int64_t>((capacity - v.capacity()) * sizeof(T)),
+                    [&] { return "the model's " + std::to_string(capacity) + " vertices or faces"; });
+    detail::reserve_huge(v, capacity);
+  }
+
   // `more` triangles to come: refused over the face limit, else room made for them.
   void make_room_for_triangles(std::size_t more) {
     meter_.add(more);  // the triangles' loop, counted before it runs
     if (mesh_.triangles.size() + more > static_cast<std::size_t>(limits_.max_model_faces))
       throw SceneError(ErrorKind::limit,
                        "the model has more than " + std::to_string(limits_.max_model_faces) + " faces");
-    detail::reserve(limits_, cost::kGltfPerTriangle * static_cast<std::int64_t>(more),
-                    [&] { return std::to_string(more) + " more triangles"; });
-    make_room(mesh_.triangles, more);
-    if (textured_) make_room(mesh_.face_textures, more);
-    if (!mesh_.materials.empty()) make_room(mesh_.face_materials, more);
+    room(mesh_.triangles, more, counts_.faces);
+    if (textured_) room(mesh_.face_textures, more, counts_.faces);
+    if (!mesh_.materials.empty()) room(mesh_.face_materials, more, counts_.faces);
   }
 
   // `count` triangles that `fill` writes at once (the common case, in straight loops rather than one call a
@@ -527,13 +541,16 @@ class MeshBuilder {
         if (mesh_.points.size() + n > static_cast<std::size_t>(limits_.max_model_points))
           throw SceneError(ErrorKind::limit,
                            "the model has more than " + std::to_string(limits_.max_model_points) + " points");
+        room(mesh_.points, n, counts_.vertices);
         mesh_.points.insert(mesh_.points.end(), v.begin(), v.end());
         break;
       case TINYGLTF_MODE_LINE:
+        room(mesh_.segments, n / 2, counts_.faces);
         for (std::size_t i = 0; i + 1 < n; i += 2) mesh_.segments.push_back({v[i], v[i + 1]});
         break;
       case TINYGLTF_MODE_LINE_STRIP:
       case TINYGLTF_MODE_LINE_LOOP:
+        room(mesh_.segments, n, counts_.faces);
         for (std::size_t i = 0; i + 1 < n; ++i) mesh_.segments.push_back({v[i], v[i + 1]});
         if (mode == TINYGLTF_MODE_LINE_LOOP && n > 2) mesh_.segments.push_back({v[n - 1], v[0]});
         break;
@@ -550,7 +567,8 @@ class MeshBuilder {
   const Uploads& files_;
   detail::ReadMeter meter_{limits_};  ///< the deadline, asked as the work adds up
   const std::uint64_t
-      sent_;  ///< bytes of the model and its uploads: what it may build (check_what_it_builds)
+      sent_;            ///< bytes of the model and its uploads: what it may build (check_what_it_builds)
+  BuiltCounts counts_;  ///< what the drawn primitives build: the arrays are sized to it once
   Mesh mesh_;
   std::vector<bool> visited_;
   std::map<std::pair<int, TexelAlpha>, std::int32_t>

@@ -26,6 +26,8 @@ namespace {
 
 using namespace ply;  // the header's types (model/ply_header.h)
 
+using mesh_triangle = std::array<std::uint32_t, 3>;  // what Mesh::triangles holds
+
 template <typename T>
 T load_as(const unsigned char* p, bool swapped) {
   unsigned char b[sizeof(T)];
@@ -402,15 +404,16 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
     ply_error("the file does not start with \"ply\" and a line break", 1);
   const Header h = read_header(bytes);
   const Layout l = check_elements(h, bytes.size() - h.data, limits);
-  // The header counts what the mesh will hold (faces of more than three corners become more triangles,
-  // each of which the limit counts, so at most max_model_faces of them).
-  const std::uint64_t face_count = l.face ? l.face->count : 0;
+  // The header counts what the mesh will hold: its arrays as they are, a triangle a face (faces of more
+  // corners make more triangles, each of which the limit counts, asked for once they are read).
+  const std::uint64_t face_count = l.face ? l.face->count : 0, vertices = l.vertex->count;
+  const std::uint64_t per_vertex = sizeof(Vec3f) + (l.normals ? sizeof(Vec3f) : 0) +
+                                   (l.colours ? sizeof(Rgba8) : 0) +
+                                   (l.face ? 0 : sizeof(std::uint32_t));  // a cloud's points
   detail::reserve(limits,
-                  cost::kPlyPerFace * static_cast<std::int64_t>(face_count) +
-                      cost::kPlyPerVertex * static_cast<std::int64_t>(l.vertex->count),
-                  [&] {
+                  static_cast<std::int64_t>(face_count * sizeof(mesh_triangle) + vertices * per_vertex), [&] {
                     return "the model's " + std::to_string(face_count) + " faces and " +
-                           std::to_string(l.vertex->count) + " vertices";
+                           std::to_string(vertices) + " vertices";
                   });
 
   Mesh mesh;
@@ -425,7 +428,7 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       if (l.normals) detail::reserve_huge(mesh.normals, e.count), mesh.normals.resize(e.count);
       if (l.colours) detail::reserve_huge(mesh.colors, e.count), mesh.colors.resize(e.count);
     } else if (&e == l.face) {
-      detail::reserve_huge(mesh.triangles, e.count);
+      detail::reserve_huge(mesh.triangles, 2 * e.count);  // quads' two triangles: room taken only as written
     }
     const bool fixed =
         std::none_of(e.properties.begin(), e.properties.end(), [](const Property& p) { return p.list; });
@@ -437,6 +440,10 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
       read_values(e, l, in, mesh, faces);
   }
   faces.add_early();
+  if (mesh.triangles.size() > face_count)  // the triangles beyond a face's one
+    detail::reserve(limits,
+                    static_cast<std::int64_t>((mesh.triangles.size() - face_count) * sizeof(mesh_triangle)),
+                    [] { return std::string("the model's polygons"); });
   if (!l.face) {  // a point cloud: its vertices are its points; they carry no normal (points are unlit)
     mesh.normals.clear();
     mesh.points.resize(mesh.positions.size());

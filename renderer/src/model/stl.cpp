@@ -43,16 +43,37 @@ float le_float(const char* p) {
   return f;
 }
 
-// Room for `more` vertices beyond what `positions` holds, asked of the budget before it is taken: the
-// welded vertex count is known only at the end, so the array grows by doubling, each step asked for.
-void make_room(std::vector<Vec3f>& positions, std::size_t more, const Limits& limits) {
-  const std::size_t need = positions.size() + more;
-  if (need <= positions.capacity()) return;
-  const std::size_t capacity = std::max(need, 2 * positions.capacity());
-  detail::reserve(limits, static_cast<std::int64_t>((capacity - positions.capacity()) * sizeof(Vec3f)),
-                  [&] { return "the model's " + std::to_string(capacity) + " vertices"; });
-  detail::reserve_huge(positions, capacity);
-}
+// The welded positions: room for every corner of `facets` facets (the most there can be), whose pages are
+// taken only as vertices are written; what is written is asked of the budget as it grows (ask()), so a
+// closed mesh (about half as many vertices as facets) is charged for what it holds, not for a soup's three a
+// facet.
+class Positions {
+ public:
+  Positions(std::vector<Vec3f>& positions, std::uint64_t facets, const Limits& limits)
+      : positions_(positions), limits_(limits) {
+    detail::reserve_huge(positions_, static_cast<std::size_t>(3 * facets));
+  }
+  /// Room for three more (a facet's corners), asked of the budget in steps of 1 MiB.
+  void ask() {
+    const auto held = static_cast<std::int64_t>((positions_.size() + 3) * sizeof(Vec3f));
+    if (held <= asked_) return;
+    detail::reserve(limits_, kStep, [] { return std::string("the model's vertices"); });
+    asked_ += kStep;
+  }
+  /// Room for the corners of `facets` more facets, when they outnumber what the text's size suggested
+  /// (ASCII).
+  void more(std::uint64_t facets) {
+    if (positions_.size() + 3 * facets > positions_.capacity())
+      detail::reserve_huge(positions_,
+                           std::max<std::size_t>(positions_.size() + 3 * facets, 2 * positions_.capacity()));
+  }
+
+ private:
+  static constexpr std::int64_t kStep = std::int64_t{1} << 20;
+  std::vector<Vec3f>& positions_;
+  const Limits& limits_;
+  std::int64_t asked_ = 0;
+};
 
 // A closed mesh has about half as many vertices as triangles; a soup of separate facets three times as many
 // (the welder grows to them).
@@ -83,8 +104,8 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
       [&] { return "the model's " + std::to_string(count) + " facets"; });
   detail::reserve_huge(mesh.triangles, count);
   mesh.triangles.resize(count);
-  make_room(mesh.positions, expected, limits);
-  detail::Welder welder(mesh.positions, expected);
+  Positions positions(mesh.positions, count, limits);
+  detail::Welder welder(mesh.positions, expected, limits);
   constexpr std::uint32_t kAhead = 32;  // facets: a table line fetched while eight facets are read
   const bool prefetch = welder.table_bytes() > (std::size_t{1} << 20);
   const char* p = bytes.data() + 84;
@@ -108,10 +129,11 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
         if (!std::isfinite(v[k]))
           stl_error("triangle " + std::to_string(t + 1) + " has a corner that is not a finite number", 0,
                     static_cast<std::size_t>(p + 12 + 12 * (k / 3) - bytes.data()) + 1);
-    if (mesh.positions.size() + 3 > mesh.positions.capacity()) make_room(mesh.positions, 3, limits);
+    positions.ask();
     mesh.triangles[t] = {welder.vertex(v[0], v[1], v[2]), welder.vertex(v[3], v[4], v[5]),
                          welder.vertex(v[6], v[7], v[8])};
   }
+  welder.release();
   return mesh;
 }
 
@@ -193,8 +215,8 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
       static_cast<std::int64_t>(reserved * sizeof(mesh.triangles[0]) + detail::Welder::table_bytes(expected)),
       [] { return std::string("the model's facets"); });
   mesh.triangles.reserve(reserved);
-  make_room(mesh.positions, expected, limits);
-  detail::Welder welder(mesh.positions, expected);
+  Positions positions(mesh.positions, reserved, limits);
+  detail::Welder welder(mesh.positions, expected, limits);
   std::vector<std::uint32_t> corners;  // the facet's welded corners
   detail::ReadMeter meter(limits);     // a facet line or corner a unit: the deadline is asked as lines go by
   std::string_view w = in.next();
@@ -224,7 +246,7 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
       if (iequal(w, "endloop")) break;
       if (!iequal(w, "vertex")) stl_error("expected \"vertex\" or \"endloop\", got " + quoted(w), in.line());
       const double x = number(in), y = number(in), z = number(in);
-      if (mesh.positions.size() == mesh.positions.capacity()) make_room(mesh.positions, 1, limits);
+      positions.more(1), positions.ask();
       const Vec3f p(Vec3{x, y, z});
       corners.push_back(welder.vertex(p.x, p.y, p.z));
       meter.add(1);
@@ -246,6 +268,7 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
     expect(in, "endfacet");
   }
   if (mesh.triangles.empty()) stl_error("the model has no facets");
+  welder.release();
   return mesh;
 }
 

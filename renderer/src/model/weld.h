@@ -6,8 +6,10 @@
 
 #include <bit>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "base/budget_ask.h"
 #include "base/memory.h"
 #include "raster/scene.h"
 
@@ -21,8 +23,11 @@ namespace raster::detail {
 /// and still in the cache).
 class Welder {
  public:
-  /// `expected`: how many distinct positions to make room for before the table grows (it grows as needed).
-  Welder(std::vector<Vec3f>& positions, std::size_t expected) : positions_(positions) {
+  /// `expected`: how many distinct positions to make room for before the table grows (it grows as needed,
+  /// asking `limits`' budget for the larger table before it is made, and giving the smaller one back). The
+  /// first table is the caller's to ask for (table_bytes(expected)); release() gives back the last.
+  Welder(std::vector<Vec3f>& positions, std::size_t expected, const Limits& limits)
+      : positions_(positions), limits_(limits) {
     std::size_t slots = 1024;
     while (slots < 2 * expected) slots *= 2;
     slots_ = ZeroedArray<std::uint64_t>(slots);
@@ -36,6 +41,12 @@ class Welder {
     return slots * sizeof(std::uint64_t);
   }
   std::size_t table_bytes() const { return slots_.size() * sizeof(std::uint64_t); }
+  /// Frees the table (the welding is done) and gives its bytes back to the budget.
+  void release() {
+    const auto bytes = static_cast<std::int64_t>(table_bytes());
+    slots_ = {};
+    detail::release(limits_, bytes);
+  }
 
   /// The vertex at (x, y, z), made when it is new. The coordinates are finite (the caller checks).
   [[gnu::always_inline]] std::uint32_t vertex(float x, float y, float z) {
@@ -77,8 +88,13 @@ class Welder {
     if (2 * positions_.size() > slots_.size()) grow();
     return v;
   }
+  // Twice the slots, every vertex hashed in again (from the positions: the old table is given back first).
   void grow() {
-    slots_ = ZeroedArray<std::uint64_t>(2 * slots_.size());
+    const std::size_t slots = 2 * slots_.size();
+    release();
+    detail::reserve(limits_, static_cast<std::int64_t>(slots * sizeof(std::uint64_t)),
+                    [] { return std::string("the model's welding table"); });
+    slots_ = ZeroedArray<std::uint64_t>(slots);
     mask_ = slots_.size() - 1;
     for (std::uint32_t v = 0; v < positions_.size(); ++v) {
       const Vec3f& p = positions_[v];
@@ -90,6 +106,7 @@ class Welder {
   }
 
   std::vector<Vec3f>& positions_;
+  const Limits& limits_;
   /// 0: empty; else the high 32 bits of the position's hash, and the vertex's number + 1 in the low 32.
   ZeroedArray<std::uint64_t> slots_;
   std::size_t mask_ = 0;  ///< slots_.size() - 1 (a power of two)

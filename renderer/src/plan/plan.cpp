@@ -96,12 +96,28 @@ LightFacts light_facts(const Scene& scene) {
 
 // What the pass over the primitives found, for the decisions made after it.
 struct Tally {
-  bool grey = true;              // every colour the render can make is grey
-  bool any_3d = false;           // some mesh is drawn: depth, a view, multisampled area
-  bool any_union = false;        // some 2D primitive has union coverage (area accumulation storage)
-  std::int64_t work = 0;         // estimated pixel writes, before the samples (RenderPlan::work)
-  std::int64_t vertices_3d = 0;  // corners of the visible meshes, for the budget
+  bool grey = true;             // every colour the render can make is grey
+  bool any_3d = false;          // some mesh is drawn: depth, a view, multisampled area
+  bool any_union = false;       // some 2D primitive has union coverage (area accumulation storage)
+  std::int64_t work = 0;        // estimated pixel writes, before the samples (RenderPlan::work)
+  std::int64_t mesh_bytes = 0;  // what geometry holds for the visible meshes besides records (budget.h)
 };
+
+// What geometry holds for a mesh besides its records (budget.h's per-vertex, per-normal, per-edge and
+// per-segment costs): asked of the budget by the plan.
+std::int64_t geometry_bytes(const Mesh& mesh, const PrimitivePlan& pp, bool draws_triangles) {
+  const auto vertices = static_cast<std::int64_t>(mesh.positions.size());
+  const bool transformed = !(mesh.transform == Mat4{});
+  const std::int64_t normals = pp.compute_normals ? vertices
+                               : pp.varyings.has(Varying::normal)
+                                   ? static_cast<std::int64_t>(mesh.normals.size())
+                                   : 0;
+  const bool edge_list = mesh.wireframe || (mesh.edges.enabled && draws_triangles);
+  return vertices * (cost::kRenderPerVertex + (transformed ? cost::kRenderPerWorldVertex : 0)) +
+         normals * cost::kRenderPerNormal +
+         (edge_list ? cost::kRenderPerEdgeTriangle * static_cast<std::int64_t>(mesh.triangles.size()) : 0) +
+         cost::kRenderPerSegment * static_cast<std::int64_t>(mesh.segments.size());
+}
 
 // The textures of a textured mesh: whether they blend or break grey, and their bytes with the mipmaps.
 void plan_textures(const Mesh& mesh, PrimitivePlan& pp, RenderPlan& out, Tally& tally) {
@@ -212,7 +228,7 @@ bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, Rende
   out.blend_count += pp.blend || draw.point_mode.blend ? 1 : 0;
   out.lit_count += pp.lit ? 1 : 0;
   out.triangles_3d += draws_triangles ? static_cast<std::int64_t>(mesh.triangles.size()) : 0;
-  tally.vertices_3d += static_cast<std::int64_t>(mesh.positions.size() + mesh.segments.size() * 2);
+  tally.mesh_bytes += geometry_bytes(mesh, pp, draws_triangles);
   tally.work += std::int64_t{out.width} * out.height;  // a mesh may cover the whole image
   return true;
 }
@@ -344,18 +360,17 @@ void plan_buffers(RenderPlan& out, bool any_union) {
       t.coverage_floats > 0 ? threads * t.coverage_floats * std::int64_t{sizeof(float)} + expanded_bytes : 0;
 }
 
-// The pixel storage against the limit, then everything the render will allocate asked of the budget: the
-// pixel storage, the PNG (at most about the colour buffer's size), and the setup's records and transformed
-// corners. The bins are asked for by the render once counted.
-void check_memory(const Limits& limits, const RenderPlan& out, std::int64_t vertices_3d) {
+// The pixel storage against the limit, then what the render will allocate asked of the budget: the pixel
+// storage, the PNG (at most about the colour buffer's size), the 2D records and the meshes' transformed
+// vertices and normals. A mesh's records are asked for as geometry makes them, the bins once counted.
+void check_memory(const Limits& limits, const RenderPlan& out, std::int64_t mesh_bytes) {
   if (out.memory.total() > limits.max_buffer_bytes || out.memory.total() < 0)
     throw SceneError(ErrorKind::limit, "the render needs " + std::to_string(out.memory.total()) +
                                            " bytes of pixel storage, over the limit of " +
                                            std::to_string(limits.max_buffer_bytes));
   detail::reserve(limits,
-                  out.memory.total() + out.memory.color_bytes + cost::kRenderPerTriangle * out.triangles_3d +
-                      cost::kRenderPerPoint * out.points_3d + cost::kRenderPerVertex * vertices_3d +
-                      cost::kRenderPerPrimitive * static_cast<std::int64_t>(out.draws.size()),
+                  cost::kRenderPerThread * out.threads + out.memory.total() + out.memory.color_bytes +
+                      mesh_bytes + cost::kRenderPerPrimitive * static_cast<std::int64_t>(out.draws.size()),
                   [&] {
                     return "rendering " + std::to_string(out.draws.size()) + " primitives (" +
                            std::to_string(out.triangles_3d) + " mesh triangles) at " +
@@ -395,7 +410,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   out.simd = std::min(best_simd(), options.max_simd);
   out.tiles_in_place = !tally.any_3d && out.coverage == Coverage::centre && scene.width % 8 == 0;
   plan_buffers(out, tally.any_union);
-  check_memory(limits, out, tally.vertices_3d);
+  check_memory(limits, out, tally.mesh_bytes);
   out.png = png_plan_for(out.format);
   return out;
 }

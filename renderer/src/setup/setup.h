@@ -143,6 +143,23 @@ struct Records {
   /// Room for one more triangle record, made in place; drop_triangle() takes it back if it is not kept.
   TriangleRecord& grow_triangle() { return *triangles.grow(1); }
   void drop_triangle() { triangles.pop_back(); }
+  /// Bytes its records hold (what is written of its arrays: room reserved and never written takes no
+  /// memory, its pages never touched).
+  std::int64_t bytes() const {
+    return static_cast<std::int64_t>(triangles.size() * sizeof(TriangleRecord) +
+                                     wide_edges.size() * sizeof(EdgeFunctions<Wide>) +
+                                     attributes.size() * sizeof(float) + lines.size() * sizeof(LineRecord) +
+                                     points.size() * sizeof(PointRecord) + quads.size() * sizeof(QuadRecord) +
+                                     order.size() * sizeof(RecordRef));
+  }
+  /// Asks `stop`'s budget for what the records have grown by since `asked` bytes were asked, once that is
+  /// kRenderRecordStep or more (or whatever it is, when `all`). False when refused: the render stops.
+  bool account(const Stop& stop, std::int64_t& asked, bool all = false) const {
+    const std::int64_t grown = bytes() - asked;
+    if (grown <= 0 || (!all && grown < cost::kRenderRecordStep)) return true;
+    asked += grown;
+    return stop.reserve(grown);
+  }
 };
 
 /// A triangle in the fast range, snapped (1/256 px, either winding), before its record exists.
