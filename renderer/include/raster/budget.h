@@ -60,8 +60,8 @@ class RenderCancelled : public std::runtime_error {
 namespace cost {
 /// What a render holds besides what it counts, per render thread: the thread's touched stack and its
 /// allocator arena, the shaders' scratch; the 1-2.5 MB by which the measured peaks of
-/// tests/memory_estimate_test (two threads) exceed the counted arrays, rounded up.
-inline constexpr std::int64_t kRenderPerThread = std::int64_t{3} << 19;
+/// tests/memory_estimate_test (two threads) exceed the counted arrays, with room to spare.
+inline constexpr std::int64_t kRenderPerThread = std::int64_t{2} << 20;
 inline constexpr std::int64_t kScenePerByte = 4;  ///< per byte of scene JSON: its primitives, parsed
 // Render, asked by the plan: what the geometry holds per vertex of a mesh (which clip planes it is outside
 // of, 1 byte, and its projected position, 16), per vertex under a transform (its world position) and per
