@@ -24,7 +24,7 @@ struct Flag {
 constexpr Flag kFlags[] = {
     {"host", "address to listen on (default 0.0.0.0)"},
     {"port", "port (default 8080; also PORT); 0 = any free port, named in the \"listening on\" line"},
-    {"max-body-bytes", "request body limit, 413 above (default 33554432 = 32 MiB)"},
+    {"max-body-bytes", "request body limit, 413 above (default 268435456 = 256 MiB)"},
     {"max-width", "image width limit, 422 above (default 8192)"},
     {"max-height", "image height limit, 422 above (default 8192)"},
     {"max-pixels", "width x height limit, 422 above (default 40000000)"},

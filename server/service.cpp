@@ -156,6 +156,7 @@ Service::Service(ServiceConfig config) {
   const int cpus = static_cast<int>(std::max<std::int64_t>(1, cpu_limit().value));
   if (config.workers <= 0) config.workers = cpus;
   if (config.render_threads <= 0) config.render_threads = cpus;
+  if (config.limits.threads <= 0) config.limits.threads = config.render_threads;  // the OBJ reader's pieces
   if (config.memory_budget <= 0) config.memory_budget = default_memory_budget(memory_limit());
   // Each worker's PNG encoder set up now, not on the first requests.
   raster::prepare_png_encoders(config.workers);

@@ -20,8 +20,11 @@
 namespace rasterd {
 
 struct ServiceConfig {
-  raster::Limits limits;                   ///< scene limits, enforced by the library
-  std::size_t max_body_bytes = 32u << 20;  ///< request body cap in bytes (413 above it)
+  raster::Limits limits;  ///< scene limits, enforced by the library
+  /// Request body cap in bytes (413 above it): 256 MiB, which holds the largest binary STL the face limit
+  /// takes (5M facets, 250 MB) and so every 3D-print file rasterd would draw (docs/memory.md: what a 2 GiB
+  /// pod takes of them at once).
+  std::size_t max_body_bytes = 256u << 20;
   /// Most threads one render uses; they take the image's tiles (the plan takes one thread when there is
   /// little to draw, and never more than the tiles). 0 = the CPUs the process may use (cpu_limit()).
   int render_threads = 0;

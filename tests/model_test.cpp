@@ -164,6 +164,45 @@ TEST(Models, StlWeldsEqualNumbersOnly) {
     ASSERT_EQ(stl.positions[i], raster::Vec3f(raster::Vec3{soup.v[i][0], soup.v[i][1], soup.v[i][2]})) << i;
 }
 
+// A large STL is welded on several threads (its facets in ranges, merged in order): the same vertices in the
+// same order, the same triangles, and the same first wrong corner, at any thread count. What would break: a
+// vertex of two ranges made twice, numbered out of the file's order, or a wrong corner of a later range
+// reported before an earlier one.
+TEST(Models, StlWeldsAlikeOnAnyThreadCount) {
+  const TestMesh m = make_mesh(9, 230, 160);  // 36,800 vertices, ~66,000 facets: over the threshold
+  std::string big = write_stl_binary(m);
+  // And every facet again, reversed: a second half naming the first half's vertices.
+  std::uint32_t facets = 0;
+  std::memcpy(&facets, big.data() + 80, 4);
+  std::string twice = big.substr(0, 80);
+  test::put<std::uint32_t>(twice, 2 * facets);
+  twice += big.substr(84);
+  for (std::uint32_t t = facets; t-- > 0;) twice += big.substr(84 + 50 * std::size_t{t}, 50);
+  const auto read = [&](const std::string& bytes, int threads) {
+    raster::Limits limits;
+    limits.threads = threads;
+    return raster::parse_stl(bytes, limits);
+  };
+  const raster::Mesh one = read(twice, 1);
+  EXPECT_EQ(one.positions.size(), m.v.size());
+  for (const int threads : {2, 3, 7}) EXPECT_EQ(read(twice, threads), one) << threads << " threads";
+  std::string wrong = twice;
+  const float nan = std::nanf("");
+  std::memcpy(&wrong[84 + 50 * std::size_t{facets + 100} + 12 + 12 + 4], &nan,
+              4);                                                            // facet facets+101, corner 2
+  std::memcpy(&wrong[84 + 50 * std::size_t{2 * facets - 5} + 12], &nan, 4);  // a later one
+  std::string first;
+  for (const int threads : {1, 2, 3}) try {
+      read(wrong, threads);
+      ADD_FAILURE() << "a corner that is not a number was read";
+    } catch (const SceneError& e) {
+      if (first.empty()) first = std::string(e.what()) + " @" + std::to_string(e.where().byte);
+      EXPECT_EQ(std::string(e.what()) + " @" + std::to_string(e.where().byte), first)
+          << threads << " threads";
+    }
+  EXPECT_NE(first.find("triangle " + std::to_string(facets + 101)), std::string::npos) << first;
+}
+
 // Welding changes no pixel: the welded mesh draws what the same facets with three corners each draw.
 TEST(Models, WeldedStlDrawsAsItsFacetsDo) {
   const TestMesh m = make_mesh(5, 40, 24);

@@ -4,13 +4,17 @@
 // positions are one vertex), so a mesh of a million vertices costs the renderer a million, not the six
 // million corners of its two million facets.
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
+#include <thread>
 
 #include "base/budget_ask.h"
+#include "base/parallel.h"
 #include "model/weld.h"
 #include "raster/model.h"
 
@@ -81,9 +85,124 @@ std::size_t expected_vertices(std::uint64_t facets) {
   return static_cast<std::size_t>(facets / 2 + 3);
 }
 
-// The facets straight from the bytes: 50 each (a normal, three corners of three little-endian floats, two
-// attribute bytes), every corner checked finite and welded as it is read. The welder's table is looked up
-// a few facets ahead of time (a prefetch), since a large model's table is far larger than the cache.
+// Facet t's nine coordinates (12 bytes of facet normal, not read: see parse_stl; three corners of 12 bytes;
+// 2 attribute bytes), and the first corner of it that is not a finite number (-1: none).
+int load_facet(const char* facet, float (&v)[9]) {
+  std::uint32_t exponents = 0;  // an exponent of all ones is an infinity or a NaN
+  for (int k = 0; k < 9; ++k) {
+    v[k] = le_float(facet + 12 + 4 * k);
+    exponents |= (std::bit_cast<std::uint32_t>(v[k]) & 0x7f800000u) == 0x7f800000u;
+  }
+  if (exponents)
+    for (int k = 0; k < 9; ++k)
+      if (!std::isfinite(v[k])) return k / 3;
+  return -1;
+}
+
+[[noreturn]] void not_finite(std::uint64_t facet, int corner) {
+  stl_error("triangle " + std::to_string(facet + 1) + " has a corner that is not a finite number", 0,
+            static_cast<std::size_t>(84 + 50 * facet + 12 + 12 * static_cast<std::uint64_t>(corner)) + 1);
+}
+
+// Binary facets of more than this many are welded on every thread the limits allow (weld_shared).
+constexpr std::uint32_t kSharedFacets = 1u << 16;
+
+// Welds facets [begin, end) into `positions` with `welder` (its vertices numbered from 0 in the order the
+// range first names them), the corners' numbers into `corners`. The corner of the first facet that is not
+// finite, when there is one, into `bad` (the range stops there).
+void weld_range(std::string_view bytes, std::uint32_t begin, std::uint32_t end, detail::Welder& welder,
+                Positions& room, std::uint32_t* corners, std::uint64_t& bad, const Limits& limits) {
+  constexpr std::uint32_t kAhead = 32;  // facets: a table line fetched while 32 facets are read
+  const bool prefetch = welder.table_bytes() > (std::size_t{1} << 20);
+  detail::ReadMeter meter(limits);  // a corner or a triangle a unit, as for the other readers
+  for (std::uint32_t t = begin; t < end; ++t) {
+    meter.add(4);
+    const char* p = bytes.data() + 84 + 50 * std::size_t{t};
+    if (prefetch && t + kAhead < end)
+      for (int k = 0; k < 3; ++k) {
+        const char* c = p + 50 * kAhead + 12 + 12 * k;
+        __builtin_prefetch(welder.slot_of(le_float(c), le_float(c + 4), le_float(c + 8)));
+      }
+    float v[9];
+    if (const int wrong = load_facet(p, v); wrong >= 0) {
+      bad = 3 * std::uint64_t{t} + static_cast<std::uint64_t>(wrong);
+      return;
+    }
+    room.ask();
+    for (int k = 0; k < 3; ++k)
+      corners[3 * std::size_t{t} + k] = welder.vertex(v[3 * k], v[3 * k + 1], v[3 * k + 2]);
+  }
+}
+
+// The facets' corners welded on `threads` threads at once, into the same mesh one thread makes: the facets
+// in ranges, one a thread, each welded into vertices of its own (the first straight into the mesh), then
+// each later range's vertices, in the order it first named them, welded into the first's (a vertex the
+// mesh has keeps its number, a new one is numbered next: the order the file first names them), and its
+// corners renumbered.
+void weld_shared(std::string_view bytes, std::uint32_t count, Mesh& mesh, const Limits& limits, int threads) {
+  const auto n = static_cast<std::uint32_t>(threads);
+  struct Range {
+    std::vector<Vec3f> own;         ///< a later range's vertices (the first's are the mesh's)
+    std::vector<Vec3f>* positions;  ///< where its vertices go
+    std::optional<Positions> room;  ///< their pages, asked for as they are written
+    std::optional<detail::Welder> welder;
+    std::uint64_t bad = UINT64_MAX;  ///< the first corner that is not finite, if any
+  };
+  std::vector<Range> ranges(n);
+  const std::size_t expected = expected_vertices(count) / n + 1024;
+  auto* corners = reinterpret_cast<std::uint32_t*>(mesh.triangles.data());
+  auto bounds = [&](std::uint32_t k) { return static_cast<std::uint32_t>(std::uint64_t{count} * k / n); };
+  detail::run_pieces(threads, n, [&](std::size_t k) {
+    Range& r = ranges[k];
+    r.positions = k == 0 ? &mesh.positions : &r.own;
+    const std::uint32_t begin = bounds(static_cast<std::uint32_t>(k)),
+                        end = bounds(static_cast<std::uint32_t>(k) + 1);
+    r.room.emplace(*r.positions, k == 0 ? count : end - begin, limits);  // the first takes the others' in too
+    if (k > 0)  // the first range's table is the reader's first ask
+      detail::reserve(limits, static_cast<std::int64_t>(detail::Welder::table_bytes(expected)),
+                      [] { return std::string("the model's welding tables"); });
+    // The first range's table takes every range's vertices in the end: made for all of them at once.
+    r.welder.emplace(*r.positions, expected, limits);
+    weld_range(bytes, begin, end, *r.welder, *r.room, corners, r.bad, limits);
+    if (k > 0) r.welder->release();
+  });
+  for (const Range& r : ranges)
+    if (r.bad != UINT64_MAX) not_finite(r.bad / 3, static_cast<int>(r.bad % 3));
+  detail::Welder& mesh_welder = *ranges[0].welder;
+  Positions& room = *ranges[0].room;
+  for (std::uint32_t k = 1; k < n; ++k) {
+    Range& r = ranges[k];
+    detail::reserve(limits, static_cast<std::int64_t>(r.own.size() * sizeof(std::uint32_t)),
+                    [] { return std::string("the model's vertices"); });
+    std::vector<std::uint32_t> number(r.own.size());
+    // The last range's new vertices need no table: no later range looks for them.
+    const bool last = k + 1 == n;
+    constexpr std::size_t kAhead = 16;  // vertices: their table lines fetched this far ahead
+    for (std::size_t i = 0; i < r.own.size(); ++i) {
+      if (i + kAhead < r.own.size()) {
+        const Vec3f& q = r.own[i + kAhead];
+        __builtin_prefetch(mesh_welder.slot_of(q.x, q.y, q.z));
+      }
+      room.ask();
+      const Vec3f& p = r.own[i];
+      if (!last) {
+        number[i] = mesh_welder.vertex(p.x, p.y, p.z);
+        continue;
+      }
+      const std::uint32_t found = mesh_welder.find(p.x, p.y, p.z);
+      number[i] = found != UINT32_MAX ? found : static_cast<std::uint32_t>(mesh.positions.size());
+      if (found == UINT32_MAX) mesh.positions.push_back(p);
+    }
+    r.own = {};
+    const std::size_t first = 3 * std::size_t{bounds(k)}, end = 3 * std::size_t{bounds(k + 1)};
+    for (std::size_t c = first; c < end; ++c) corners[c] = number[corners[c]];
+  }
+  mesh_welder.release();
+}
+
+// The facets straight from the bytes: 50 each, every corner checked finite and welded as it is read. The
+// welder's table is looked up a few facets ahead of time (a prefetch), since a large model's table is far
+// larger than the cache. A large model is welded on every thread the limits allow (weld_shared).
 Mesh read_binary(std::string_view bytes, const Limits& limits) {
   const std::uint32_t count = le_u32(bytes.data() + 80);
   // sniff_model matched the size to the count already; a caller naming the format did not. Bytes after the
@@ -104,6 +223,13 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
       [&] { return "the model's " + std::to_string(count) + " facets"; });
   detail::reserve_huge(mesh.triangles, count);
   mesh.triangles.resize(count);
+  const int threads =
+      std::min(15, limits.threads > 0 ? limits.threads
+                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  if (threads > 1 && count > kSharedFacets) {
+    weld_shared(bytes, count, mesh, limits, threads);
+    return mesh;
+  }
   Positions positions(mesh.positions, count, limits);
   detail::Welder welder(mesh.positions, expected, limits);
   constexpr std::uint32_t kAhead = 32;  // facets: a table line fetched while eight facets are read
@@ -117,18 +243,8 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
         const char* c = p + 50 * kAhead + 12 + 12 * k;
         __builtin_prefetch(welder.slot_of(le_float(c), le_float(c + 4), le_float(c + 8)));
       }
-    // 12 bytes of facet normal (not read: see parse_stl), 3 corners of 12 bytes, 2 attribute bytes.
     float v[9];
-    std::uint32_t exponents = 0;  // an exponent of all ones is an infinity or a NaN
-    for (int k = 0; k < 9; ++k) {
-      v[k] = le_float(p + 12 + 4 * k);
-      exponents |= (std::bit_cast<std::uint32_t>(v[k]) & 0x7f800000u) == 0x7f800000u;
-    }
-    if (exponents)
-      for (int k = 0; k < 9; ++k)
-        if (!std::isfinite(v[k]))
-          stl_error("triangle " + std::to_string(t + 1) + " has a corner that is not a finite number", 0,
-                    static_cast<std::size_t>(p + 12 + 12 * (k / 3) - bytes.data()) + 1);
+    if (const int wrong = load_facet(p, v); wrong >= 0) not_finite(t, wrong);
     positions.ask();
     mesh.triangles[t] = {welder.vertex(v[0], v[1], v[2]), welder.vertex(v[3], v[4], v[5]),
                          welder.vertex(v[6], v[7], v[8])};

@@ -50,8 +50,11 @@ class Welder {
 
   /// The vertex at (x, y, z), made when it is new. The coordinates are finite (the caller checks).
   [[gnu::always_inline]] std::uint32_t vertex(float x, float y, float z) {
+    return vertex(x, y, z, hash_of(x, y, z));
+  }
+  /// The same, with the position's hash_of already known (a parallel weld sorts corners by it).
+  [[gnu::always_inline]] std::uint32_t vertex(float x, float y, float z, std::uint64_t h) {
     const std::uint32_t a = bits(x), b = bits(y), c = bits(z);
-    const std::uint64_t h = hash(a, b, c);
     const std::uint64_t tag = h >> 32 << 32;
     for (std::size_t i = h & mask_;; i = (i + 1) & mask_) {
       const std::uint64_t s = slots_[i];
@@ -63,10 +66,27 @@ class Welder {
     }
   }
 
-  /// Where vertex(x, y, z) will look first, for a prefetch a few corners ahead.
-  const std::uint64_t* slot_of(float x, float y, float z) const {
-    return slots_.data() + (hash(bits(x), bits(y), bits(z)) & mask_);
+  /// The vertex at (x, y, z) when there is one, else UINT32_MAX (nothing is made).
+  std::uint32_t find(float x, float y, float z) const {
+    const std::uint32_t a = bits(x), b = bits(y), c = bits(z);
+    const std::uint64_t h = hash(a, b, c), tag = h >> 32 << 32;
+    for (std::size_t i = h & mask_;; i = (i + 1) & mask_) {
+      const std::uint64_t s = slots_[i];
+      if (s == 0) return UINT32_MAX;
+      if ((s & ~0xFFFFFFFFull) != tag) continue;
+      const auto v = static_cast<std::uint32_t>(s) - 1;
+      const Vec3f& p = positions_[v];
+      if (bits(p.x) == a && bits(p.y) == b && bits(p.z) == c) return v;
+    }
   }
+
+  /// Where vertex(x, y, z) will look first, for a prefetch a few corners ahead.
+  const std::uint64_t* slot_of(float x, float y, float z) const { return slot_of(hash_of(x, y, z)); }
+  const std::uint64_t* slot_of(std::uint64_t h) const { return slots_.data() + (h & mask_); }
+
+  /// The hash the table files (x, y, z) under: equal positions (0 and -0 alike), equal hashes. Its low bits
+  /// pick the slot; its high 32 are the slot's tag.
+  static std::uint64_t hash_of(float x, float y, float z) { return hash(bits(x), bits(y), bits(z)); }
 
  private:
   // A coordinate's bits with -0 taken as 0: equal numbers, equal bits (NaN never reaches here).
