@@ -227,6 +227,12 @@ TEST(ObjTexture, ObjFilesNamesTheLibrariesAndThenTheTexturesTheyName) {
             (std::vector<std::string>{"a.mtl b.mtl", "a.mtl", "b.mtl"}));
   EXPECT_EQ(raster::obj_files("mtllib my materials.mtl\n"),
             (std::vector<std::string>{"my materials.mtl", "my", "materials.mtl"}));
+  // Only a line whose first word is mtllib names libraries, and each such line once, wherever else the word
+  // appears (in a comment, a name, a longer word, a last line without its end).
+  EXPECT_EQ(raster::obj_files("# mtllib no.mtl\n\t mtllib mtllib.mtl\nusemtl mtllib\nmtllibs x.mtl\nv 0 0 0\n"
+                              "mtllib  last.mtl"),
+            (std::vector<std::string>{"mtllib.mtl", "last.mtl"}));
+  EXPECT_EQ(raster::obj_files("mtllib"), (std::vector<std::string>{}));
   // A broken MTL is parse_obj's to report, not this function's.
   EXPECT_NO_THROW(raster::obj_files(quad, test::read_file(kDir + "bad-option.mtl")));
 }
