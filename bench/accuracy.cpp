@@ -18,15 +18,9 @@
 #include <string>
 #include <vector>
 
-#define STB_EASY_FONT_IMPLEMENTATION
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <stb/stb_easy_font.h>
-#pragma GCC diagnostic pop
-
 #include <cairo/cairo.h>
 
+#include "plot.h"
 #include "raster/raster.h"
 #include "scenes.h"
 
@@ -371,25 +365,6 @@ void supersampled_reference(const Suite& s, std::vector<double>& rgb, std::vecto
     }
 }
 
-// ---- the plot, drawn by rasterd ------------------------------------------------------------------------
-
-struct PlotScene {
-  raster::Scene scene;
-  void tri(Point2 a, Point2 b, Point2 c, Rgba8 col) { bench::add_triangle(scene, {a, b, c}, &col, 1); }
-  void line(Point2 a, Point2 b, Rgba8 col, float width = 1) { bench::add_line(scene, a, b, col, width); }
-  void text(double x, double y, const std::string& s, Rgba8 col, double scale = 1.5) {
-    static char buffer[60000];  // stb_easy_font: 4 vertices of 16 bytes per quad
-    const int quads = stb_easy_font_print(0, 0, const_cast<char*>(s.c_str()), nullptr, buffer, sizeof buffer);
-    const float* v = reinterpret_cast<const float*>(buffer);
-    for (int q = 0; q < quads; ++q) {
-      Point2 p[4];
-      for (int k = 0; k < 4; ++k) p[k] = {x + v[(q * 4 + k) * 4] * scale, y + v[(q * 4 + k) * 4 + 1] * scale};
-      tri(p[0], p[1], p[2], col);
-      tri(p[0], p[2], p[3], col);
-    }
-  }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -591,7 +566,7 @@ int main(int argc, char** argv) {
 
   // docs/accuracy.png: mean error against time, log-log, one line per scene through the sample counts,
   // a square for area and a cross for Cairo, drawn with rasterd.
-  PlotScene plot;
+  bench::PlotScene plot;
   plot.scene.width = 720;
   plot.scene.height = 460;
   plot.scene.background = {255, 255, 255, 255};

@@ -7,6 +7,9 @@
 // every pixel in a GLSL fragment shader, the work rasterd does; "sphere-gouraud" and "bunny-gouraud"
 // light every vertex through GL's fixed function. With OSMESA_PEER_PNG=dir each 3D picture is also written
 // to dir/<scene>.png, to compare by eye with `rasterd render` of the same scene.
+// `osmesa_peer runs --models file...` draws only the model files given, each as rasterd draws a bare model
+// aliased on black (raster::model_scene: its camera and lights), lit per pixel: one "file-name milliseconds"
+// line each (bench/models.cpp's llvmpipe column).
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -17,11 +20,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "raster/plan.h"
 #include "raster/png.h"
+#include "raster/scene_checks.h"
 #include "scenes.h"
 #include "timing.h"
 
@@ -204,6 +209,91 @@ void write_debug_png(const std::string& name, int width, int height) {
   }
 }
 
+// Draws `s`'s first mesh as rasterd's plan of `s` does (its camera matrix, its lights per pixel in GLSL),
+// printing "name ms" (the median of `runs` draws, clear to glFinish); with `gouraud`, then the same lights
+// per vertex through GL's fixed function, "name-gouraud ms". The framebuffer must hold s.width x s.height.
+void draw_mesh(const raster::Scene& s, const std::string& name, int runs, bool gouraud) {
+  const raster::RenderPlan plan = raster::plan(s);
+  const raster::Mesh& m = s.meshes[0];
+  // Area-weighted vertex normals (rasterd weighs by angle; the lighting work is the same).
+  std::vector<float> xyz, normal(m.positions.size() * 3, 0.0f);
+  for (const raster::Vec3f& p : m.positions) xyz.insert(xyz.end(), {p.x, p.y, p.z});
+  std::vector<GLuint> index;
+  for (const auto& t : m.triangles) {
+    const raster::Vec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+    const double u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, v[3] = {c.x - a.x, c.y - a.y, c.z - a.z};
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    for (int k = 0; k < 3; ++k) {
+      index.push_back(t[k]);
+      for (int d = 0; d < 3; ++d) normal[t[k] * 3 + d] += static_cast<float>(n[d]);
+    }
+  }
+  // GL matrices are column-major; rasterd's clip z runs 0 (far) .. w (near), GL's -w (near) .. w (far).
+  const raster::Mat4& mvp = plan.view.world_to_clip;
+  double gl[16];
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) gl[c * 4 + r] = r == 2 ? mvp(3, c) - 2 * mvp(2, c) : mvp(r, c);
+  glViewport(0, 0, s.width, s.height);
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixd(gl);
+  // World space is eye space for GL: lights placed under this identity keep the plan's world vectors.
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glShadeModel(GL_SMOOTH);
+  glDisableClientState(GL_COLOR_ARRAY);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, xyz.data());
+  glNormalPointer(GL_FLOAT, 0, normal.data());
+  const raster::Rgba8 col = m.colors.empty() ? raster::Rgba8{200, 200, 200, 255} : m.colors[0];
+  const float color[4] = {col.r / 255.0f, col.g / 255.0f, col.b / 255.0f, col.a / 255.0f};
+  auto draw = [&] {
+    glClearColor(0, 0, 0, 1);
+    glClearDepth(1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(index.size()), GL_UNSIGNED_INT, index.data());
+    glFinish();
+  };
+
+  // Per pixel, what rasterd does: the plan's lights (rasterd's default rig) in a fragment shader.
+  if (const GLuint program = lit_program(plan.view.lights, color)) {
+    glUseProgram(program);
+    std::printf("%s %.3f\n", name.c_str(), bench::median_ms(runs, draw));
+    write_debug_png(name, s.width, s.height);
+    glUseProgram(0);
+    glDeleteProgram(program);
+  }
+
+  // Per vertex: the same lights through GL's fixed function (Gouraud), the cheaper work GL offers.
+  if (gouraud && fixed_function_lights(plan.view.lights)) {
+    const float ambient_and_diffuse[4] = {color[0], color[1], color[2], color[3]};
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, ambient_and_diffuse);
+    glEnable(GL_NORMALIZE);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glEnable(GL_LIGHTING);
+    std::printf("%s-gouraud %.3f\n", name.c_str(), bench::median_ms(runs, draw));
+    write_debug_png(name + "-gouraud", s.width, s.height);
+    glDisable(GL_LIGHTING);
+  }
+  std::fflush(stdout);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+}
+
+// A model file as rasterd draws a bare model (read as the service reads it: grey without colours of its
+// own; raster::model_scene's camera and lights), aliased on black: the picture bench/models.cpp times
+// rasterd's service drawing.
+raster::Scene model_file_scene(const std::string& path) {
+  bench::ModelFile file = bench::read_model_file(path);
+  raster::Scene s = raster::model_scene(
+      raster::checks::model_mesh(file.bytes, file.format, {}, file.files, {}, "", 0), file.format);
+  s.antialias = raster::Antialias::none;
+  s.background = {0, 0, 0, 255};
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -215,6 +305,20 @@ int main(int argc, char** argv) {
   }
   std::vector<unsigned char> buffer(1024 * 1024 * 4);
   if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, 1024, 1024)) return 1;
+  if (argc > 2 && std::string(argv[2]) == "--models") {
+    for (int i = 3; i < argc; ++i) {
+      try {
+        const raster::Scene s = model_file_scene(argv[i]);
+        if (s.width > 1024 || s.height > 1024) throw std::runtime_error("larger than 1024x1024");
+        const std::string path = argv[i];
+        draw_mesh(s, path.substr(path.find_last_of('/') + 1), runs, false);  // by its file name
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "osmesa_peer: %s: %s\n", argv[i], e.what());
+      }
+    }
+    OSMesaDestroyContext(ctx);
+    return 0;
+  }
   for (const char* kind : {"small", "large", "flat", "grid"}) {
     const raster::Scene s = bench::make_scene(kind, 1);
     // Vertex arrays of the same triangles: pixel coordinates, per-vertex colours (flat ones repeated).
@@ -260,74 +364,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "osmesa_peer: %s\n", e.what());
       continue;
     }
-    const raster::RenderPlan plan = raster::plan(s);
-    const raster::Mesh& m = s.meshes[0];
-    // Area-weighted vertex normals (rasterd weighs by angle; the lighting work is the same).
-    std::vector<float> xyz, normal(m.positions.size() * 3, 0.0f);
-    for (const raster::Vec3f& p : m.positions) xyz.insert(xyz.end(), {p.x, p.y, p.z});
-    std::vector<GLuint> index;
-    for (const auto& t : m.triangles) {
-      const raster::Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
-      const double u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, v[3] = {c.x - a.x, c.y - a.y, c.z - a.z};
-      const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-      for (int k = 0; k < 3; ++k) {
-        index.push_back(t[k]);
-        for (int d = 0; d < 3; ++d) normal[t[k] * 3 + d] += static_cast<float>(n[d]);
-      }
-    }
-    // GL matrices are column-major; rasterd's clip z runs 0 (far) .. w (near), GL's -w (near) .. w (far).
-    const raster::Mat4& mvp = plan.view.world_to_clip;
-    double gl[16];
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) gl[c * 4 + r] = r == 2 ? mvp(3, c) - 2 * mvp(2, c) : mvp(r, c);
-    glViewport(0, 0, s.width, s.height);
-    glMatrixMode(GL_PROJECTION);
-    glLoadMatrixd(gl);
-    // World space is eye space for GL: lights placed under this identity keep the plan's world vectors.
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glShadeModel(GL_SMOOTH);
-    glDisableClientState(GL_COLOR_ARRAY);
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glEnableClientState(GL_NORMAL_ARRAY);
-    glVertexPointer(3, GL_FLOAT, 0, xyz.data());
-    glNormalPointer(GL_FLOAT, 0, normal.data());
-    const raster::Rgba8 col = m.colors.empty() ? raster::Rgba8{200, 200, 200, 255} : m.colors[0];
-    const float color[4] = {col.r / 255.0f, col.g / 255.0f, col.b / 255.0f, col.a / 255.0f};
-    auto draw = [&] {
-      glClearColor(0, 0, 0, 1);
-      glClearDepth(1);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(index.size()), GL_UNSIGNED_INT, index.data());
-      glFinish();
-    };
-    const std::string name = kind;
-
-    // Per pixel, what rasterd does: the plan's lights (rasterd's default rig) in a fragment shader.
-    if (const GLuint program = lit_program(plan.view.lights, color)) {
-      glUseProgram(program);
-      std::printf("%s %.3f\n", kind, bench::median_ms(runs, draw));
-      write_debug_png(name, s.width, s.height);
-      glUseProgram(0);
-      glDeleteProgram(program);
-    }
-
-    // Per vertex: the same lights through GL's fixed function (Gouraud), the cheaper work GL offers.
-    if (fixed_function_lights(plan.view.lights)) {
-      const float ambient_and_diffuse[4] = {color[0], color[1], color[2], color[3]};
-      glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, ambient_and_diffuse);
-      glEnable(GL_NORMALIZE);
-      glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
-      glEnable(GL_LIGHTING);
-      std::printf("%s-gouraud %.3f\n", kind, bench::median_ms(runs, draw));
-      write_debug_png(name + "-gouraud", s.width, s.height);
-      glDisable(GL_LIGHTING);
-    }
-    std::fflush(stdout);
-    glDisableClientState(GL_NORMAL_ARRAY);
-    glEnableClientState(GL_COLOR_ARRAY);
+    draw_mesh(s, kind, runs, true);
   }
   OSMesaDestroyContext(ctx);
 }

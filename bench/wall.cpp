@@ -90,10 +90,12 @@ ServerTimes server_times(const std::string& rasterd, const std::string& body, co
   client.set_read_timeout(120, 0);
   for (int tries = 0; !client.Get("/healthz") && tries < 200; ++tries)
     std::this_thread::sleep_for(std::chrono::milliseconds(25));
-  std::vector<double> stage[3];
+  std::vector<double> stage[3], wall;
   // Warm-up requests are not counted: a fresh server settles (kept blocks, malloc thresholds) in ~4.
   for (int r = 0; r < warm_up + runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
     const auto res = client.Post("/render?" + query, body, content_type);
+    if (r >= warm_up) wall.push_back(ms_since(t0));
     if (!res || res->status != 200) {
       kill(server, SIGKILL);
       waitpid(server, nullptr, 0);
@@ -107,8 +109,12 @@ ServerTimes server_times(const std::string& rasterd, const std::string& body, co
   }
   kill(server, SIGTERM);
   waitpid(server, nullptr, 0);
-  return {median(stage[0]), median(stage[1]), median(stage[2]), stage[1].empty() ? 0 : stage[1][0],
-          stage[2].empty() ? 0 : stage[2][0]};
+  return {median(stage[0]),
+          median(stage[1]),
+          median(stage[2]),
+          stage[1].empty() ? 0 : stage[1][0],
+          stage[2].empty() ? 0 : stage[2][0],
+          median(wall)};
 }
 
 }  // namespace bench

@@ -20,6 +20,7 @@ WallTimes wall_times(const std::string& rasterd, const std::string& scene_json, 
 struct ServerTimes {
   double parse_ms = 0, raster_ms = 0, encode_ms = 0;
   double first_raster_ms = 0, first_encode_ms = 0;
+  double wall_ms = 0;  ///< the client's median: the body sent to the whole PNG received, on loopback
 };
 
 /// POSTs `body` (a model, or with `content_type` "application/json" a scene) to a new `rasterd serve` at
