@@ -3,7 +3,9 @@
 // against the scalar path of the same routine, and one test per contract so none can silently come back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <string>
 #include <thread>
@@ -246,6 +248,7 @@ raster::Scene sphere_scene(int n, int side) {
 // guard band, aliased and multisampled.
 TEST(Core, MeshPartsGiveTheBytesOfOneThread) {
   std::vector<std::pair<std::string, raster::Scene>> cases;
+  cases.reserve(8);  // g++ 12 warns of a bound it cannot see when the vector grows
   const raster::Scene lit = sphere_scene(130, 160);
   cases.emplace_back("smooth, computed normals, textured", lit);
   raster::Scene flat = lit;
@@ -268,6 +271,55 @@ TEST(Core, MeshPartsGiveTheBytesOfOneThread) {
     for (int threads : {2, 3, 7})
       EXPECT_EQ(render_with(scene, 64, threads).pixels, one.pixels) << name << ", " << threads << " threads";
   }
+}
+
+// A mesh of more triangles than pixels has its normals computed only at the corners of the triangles that
+// may draw, those found first (PrimitivePlan::normals_where_drawn): the bytes of every vertex's normals
+// computed, whatever is culled, clipped or multisampled, at any thread count, and with the triangles in a
+// shuffled order (no run of them keeps to a few vertices).
+TEST(Core, NormalsWhereDrawnGiveTheBytesOfEveryNormal) {
+  std::vector<std::pair<std::string, raster::Scene>> cases;
+  cases.reserve(8);
+  const raster::Scene lit = sphere_scene(130, 160);  // 33,800 triangles on 25,600 pixels
+  cases.emplace_back("smooth, textured", lit);
+  raster::Scene culled = lit;
+  culled.meshes[0].cull = raster::Cull::back;
+  cases.emplace_back("back faces culled", culled);
+  raster::Scene clipped = lit;
+  clipped.camera.has_eye = clipped.camera.has_target = true;
+  clipped.camera.eye = {0.2, 0.3, 0.95}, clipped.camera.target = {0, 0, 0}, clipped.camera.fov_deg = 100;
+  cases.emplace_back("clipped by the near plane", clipped);
+  raster::Scene msaa = lit;
+  msaa.antialias = raster::Antialias::msaa4;
+  cases.emplace_back("4 samples", msaa);
+  raster::Scene shuffled = lit;
+  raster::Mesh& m = shuffled.meshes[0];
+  std::vector<std::size_t> order(m.triangles.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::shuffle(order.begin(), order.end(), std::mt19937(7));
+  const raster::Mesh before = m;
+  for (std::size_t t = 0; t < order.size(); ++t) {
+    m.triangles[t] = before.triangles[order[t]], m.uv_triangles[t] = before.uv_triangles[order[t]];
+    m.face_textures[t] = before.face_textures[order[t]];
+  }
+  cases.emplace_back("triangles shuffled", shuffled);
+  for (const auto& [name, scene] : cases) {
+    raster::RenderPlan plan = raster::plan(scene);
+    ASSERT_TRUE(plan.draws[0].mode.compute_normals && plan.draws[0].mode.normals_where_drawn) << name;
+    plan.draws[0].mode.normals_where_drawn = false;  // every vertex's normal: what it must equal
+    plan.threads = 1;
+    const raster::Image every = raster::render(scene, plan);
+    EXPECT_GT(test::count_not(every, {0, 0, 0, 255}), 1000) << name << ": the mesh is drawn";
+    plan.draws[0].mode.normals_where_drawn = true;
+    for (int threads : {1, 2, 3, 7}) {
+      plan.threads = threads;
+      EXPECT_EQ(raster::render(scene, plan).pixels, every.pixels) << name << ", " << threads << " threads";
+    }
+  }
+  // At no more triangles than pixels every normal is computed, as before.
+  raster::Scene coarse = lit;
+  coarse.width = coarse.height = 184;  // 33,856 pixels
+  EXPECT_FALSE(raster::plan(coarse).draws[0].mode.normals_where_drawn);
 }
 
 // The 3D cases of the SIMD comparison below, each a variation of a seeded sphere: lit smooth with computed

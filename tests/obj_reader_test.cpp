@@ -181,9 +181,9 @@ Generated generate(unsigned seed, bool colours, bool textured) {
           const int i = 1 + static_cast<int>(rng() % static_cast<unsigned>(count));
           return rng() % 3 ? std::to_string(i) : std::to_string(i - count - 1);  // some relative
         };
-        s += " " + ref(v);
-        if ((kind == 1 || kind == 3) && vt > 0) s += "/" + ref(vt);
-        if (kind == 2 && vn > 0) s += "//" + ref(vn);
+        s += ' ', s += ref(v);  // (not " " + ref(v): g++ 12 warns of an overlap that cannot be, -Wrestrict)
+        if ((kind == 1 || kind == 3) && vt > 0) s += '/', s += ref(vt);
+        if (kind == 2 && vn > 0) s += "//", s += ref(vn);
         if (kind == 3 && vn > 0) s += (vt > 0 ? "/" : "//") + ref(vn);
       }
       s += eol;

@@ -60,11 +60,12 @@ TEST(SetupBatch, BatchesKeepEveryTriangleThatCoversASample) {
       const int n = static_cast<int>(std::min<std::size_t>(8, t.indices.size() - first));
       const std::uint32_t bits = raster::detail::sample_candidates(
           &t.indices[first], n, t.screen.data(), pattern, samples, width, height, raster::Simd::sse2);
-      if (raster::best_simd() == raster::Simd::avx2)
+      if (raster::best_simd() == raster::Simd::avx2) {
         EXPECT_EQ(raster::detail::sample_candidates(&t.indices[first], n, t.screen.data(), pattern, samples,
                                                     width, height, raster::Simd::avx2),
                   bits)
             << samples << " samples, triangles " << first << "..";
+      }
       for (int i = 0; i < n; ++i) {
         const auto& tri = t.indices[first + static_cast<std::size_t>(i)];
         bool projected = true;

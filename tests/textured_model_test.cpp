@@ -204,7 +204,8 @@ TEST(TexturedModel, InlineJsonGivesTheSamePictureAsMultipart) {
                              {"data", box.obj},
                              {"mtl", box.mtl},
                              {"textures", {{"box_diffuse.png", base64(box.png)}}}}}}};
-  scene.update(nlohmann::json::parse("{" + test::model_picture_fields() + "}"));  // the bare model's picture
+  const std::string picture = test::model_picture_fields();  // the bare model's picture
+  scene.update(nlohmann::json::parse("{" + picture + "}"));
   auto inline_r = server.client().Post("/render", scene.dump(), "application/json");
   auto multipart = server.client().Post(
       kQuery, httplib::MultipartFormDataItems{{"model", box.obj, "box.obj", "model/obj"},

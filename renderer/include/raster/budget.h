@@ -65,14 +65,15 @@ inline constexpr std::int64_t kRenderPerThread = std::int64_t{2} << 20;
 inline constexpr std::int64_t kScenePerByte = 4;  ///< per byte of scene JSON: its primitives, parsed
 // Render, asked by the plan: what the geometry holds per vertex of a mesh (which clip planes it is outside
 // of, 1 byte, and its projected position, 16), per vertex under a transform (its world position) and per
-// normal it lights with (computed per vertex, or the mesh's own turned into world space), per triangle of a
+// normal it lights with (computed per vertex, or the mesh's own turned into world space; 24, and 1 for a
+// computed one's mark of whether its vertex is drawn), per triangle of a
 // mesh drawn with feature edges or as a wireframe (its three edges, listed and sorted), per segment (its
 // ends and colours), per 2D primitive; the pixel buffers are the plan's. The records are asked for as
 // geometry makes them (their bytes, in steps of kRenderRecordStep: most of a dense mesh's triangles get
 // none), and 4 bytes per bin entry once the bins are counted.
 inline constexpr std::int64_t kRenderPerVertex = 17;
 inline constexpr std::int64_t kRenderPerWorldVertex = 24;
-inline constexpr std::int64_t kRenderPerNormal = 24;
+inline constexpr std::int64_t kRenderPerNormal = 24 + 1;
 inline constexpr std::int64_t kRenderPerEdgeTriangle = 3 * 16;
 inline constexpr std::int64_t kRenderPerSegment = 16;
 inline constexpr std::int64_t kRenderPerPrimitive = 160;

@@ -89,6 +89,10 @@ struct PrimitivePlan {
   bool depth = false;   ///< 3D: depth-tested and depth-written; 2D overlays are not
   bool lit = false;     ///< 3D: Lambert lighting (flat: once per face; smooth: per pixel)
   bool compute_normals = false;  ///< per-pixel lighting of a mesh without normals: computed, angle-weighted
+  /// With compute_normals, a mesh of more triangles than the image has pixels (most of which draw nothing):
+  /// the triangles that may draw are found first, and only their corners' normals are computed (each still
+  /// the sum of all its faces: the same bits as every vertex's).
+  bool normals_where_drawn = false;
   /// 3D textured: some texel of the mesh's textures has alpha 0 (glTF's MASK cut-outs). Its pixels are shaded
   /// before their depth is written, and one whose alpha comes out 0 writes neither colour nor depth, so what
   /// is drawn later behind a cut-out shows through it. Found once per texture by the plan; meshes without

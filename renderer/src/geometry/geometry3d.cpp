@@ -3,6 +3,7 @@
 // mesh's lines, edges and points are geometry3d_lines.cpp's; what both use is geometry/mesh_view.h.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <span>
 
@@ -42,11 +43,31 @@ struct TriangleJob {
   PodArray<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
   Vec3 forward;            ///< unit view direction
   MaterialCalls material_calls;  ///< specular meshes: the call of each (texture, material) pair
+  /// A dense mesh's triangles that may draw, found before its normals (mark()): bit t % 8 of byte t / 8, and
+  /// a spare byte. Empty otherwise: run() then asks candidates() itself.
+  PodArray<std::uint8_t> kept;
 
   // Triangles [begin, end) into `part`, in order.
   void run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const;
   // Triangle t into `part`, when it draws anything.
   void triangle(std::size_t t, Records& part) const;
+  // Every triangle of [begin, end) (begin a multiple of 8) that triangle() could keep, into `kept`, and its
+  // corners marked in `needed` (a byte a vertex, set to 1 by any thread): the same decisions as triangle()
+  // makes, without a record kept.
+  void mark(std::size_t begin, std::size_t end, std::uint8_t* needed, StopMeter& meter);
+
+  // The triangles of the 8 from `first` (n of them) that may cover a sample, as bits (setup/batch.h): with
+  // centre coverage or multisampling, whose sample positions are known here; else all n.
+  std::uint32_t candidates(std::size_t first, int n) const;
+  // The planes some corner of `tri` is outside of (0: inside every one, its corners projected), or -1 when
+  // it draws nothing: beyond one plane, or a corner without a position (a user matrix can overflow doubles,
+  // 1e300 x 1e30, and clipping arithmetic on inf/NaN would make NaN coordinates).
+  int outside_of(const std::array<std::uint32_t, 3>& tri) const;
+  // Inside every plane: the record from the projected corners, into `r`; false when it covers no sample.
+  bool fast(const std::array<std::uint32_t, 3>& tri, TriangleRecord& r, int (&order)[3]) const;
+  // The counter-clockwise world normal of `tri`, and whether it faces away from the eye (from world
+  // geometry, valid on both sides of the eye, unlike a post-divide winding test).
+  bool back_facing(const std::array<std::uint32_t, 3>& tri, Vec3& face) const;
   // What the shading of triangle `t` interpolates, per vertex: colours (lit per face when flat), normals,
   // texture coordinates, world positions. Returns the triangle's draw call (its texture's, when textured).
   // `face`: its counter-clockwise world normal; `back`: seen from behind.
@@ -97,64 +118,97 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
   return triangle_call;
 }
 
+std::uint32_t TriangleJob::candidates(std::size_t first, int n) const {
+  static constexpr SamplePoint kCentre{};
+  if (!setup.centre_samples && !setup.pattern) return (1u << n) - 1;
+  return sample_candidates(
+      &view.mesh.triangles[first], n, view.screen.data(), setup.centre_samples ? &kCentre : setup.pattern,
+      setup.centre_samples ? 1 : setup.pattern_size, view.plan.width, view.plan.height, view.plan.simd);
+}
+
+int TriangleJob::outside_of(const std::array<std::uint32_t, 3>& tri) const {
+  const std::uint8_t any_out = view.outside[tri[0]] | view.outside[tri[1]] | view.outside[tri[2]];
+  if (any_out & 0xc0) return -1;
+  if (view.outside[tri[0]] & view.outside[tri[1]] & view.outside[tri[2]]) return -1;
+  return any_out;
+}
+
+bool TriangleJob::fast(const std::array<std::uint32_t, 3>& tri, TriangleRecord& r, int (&order)[3]) const {
+  FastTriangle f;
+  for (int k = 0; k < 3; ++k) f.x[k] = view.screen[tri[k]].x, f.y[k] = view.screen[tri[k]].y;
+  return setup.fast_record(f, r, order);
+}
+
+bool TriangleJob::back_facing(const std::array<std::uint32_t, 3>& tri, Vec3& face) const {
+  const ViewPlan& camera = view.plan.view;
+  const Vec3 a = view.world_at(tri[0]);
+  face = cross(view.world_at(tri[1]) - a, view.world_at(tri[2]) - a);
+  const Vec3 toward_eye = camera.projection == Projection::perspective ? camera.eye - a : forward * -1.0;
+  return dot(face, toward_eye) < 0;
+}
+
 void TriangleJob::run(std::size_t begin, std::size_t end, Records& part, StopMeter& meter) const {
-  const Mesh& mesh = view.mesh;
   const VaryingLayout& with = setup.calls[call].layout;
   const std::size_t floats = static_cast<std::size_t>(with.record_floats());
   part.triangles.reserve_more(end - begin), part.order.reserve_more(end - begin);
   part.attributes.reserve_more((end - begin) * floats);
-  // Eight triangles at a time, those that cannot cover a sample left out at once (setup/batch.h): with
-  // centre coverage or multisampling, whose sample positions are known here.
-  static constexpr SamplePoint kCentre{};
-  const bool sampled = setup.centre_samples || setup.pattern;
-  const SamplePoint* pattern = setup.centre_samples ? &kCentre : setup.pattern;
-  const int pattern_size = setup.centre_samples ? 1 : setup.pattern_size;
   // The records are asked of the budget as they are made (Records::account): most triangles make none.
   std::int64_t asked = part.bytes();
   for (std::size_t first = begin; first < end; first += 8) {
     const int n = static_cast<int>(std::min<std::size_t>(8, end - first));
     if (meter.add(n * StopMeter::kPrimitiveWork)) return;  // deadline: a mesh can be millions of triangles
     if (!part.account(meter.stop(), asked)) return;
-    std::uint32_t batch =
-        sampled ? sample_candidates(&mesh.triangles[first], n, view.screen.data(), pattern, pattern_size,
-                                    view.plan.width, view.plan.height, view.plan.simd)
-                : (1u << n) - 1;
-    for (; batch; batch &= batch - 1) {
-      const std::size_t t = first + static_cast<std::size_t>(__builtin_ctz(batch));
-      triangle(t, part);
+    std::uint32_t batch;
+    if (kept.empty()) {
+      batch = candidates(first, n);
+    } else {  // the bits of [first, first + n), from the bytes they lie in
+      const std::uint32_t window = kept[first / 8] | std::uint32_t{kept[first / 8 + 1]} << 8;
+      batch = (window >> (first % 8)) & ((1u << n) - 1);
     }
+    for (; batch; batch &= batch - 1) triangle(first + static_cast<std::size_t>(__builtin_ctz(batch)), part);
   }
   part.account(meter.stop(), asked, true);
 }
 
+void TriangleJob::mark(std::size_t begin, std::size_t end, std::uint8_t* needed, StopMeter& meter) {
+  const Mesh& mesh = view.mesh;
+  TriangleRecord scratch;
+  for (std::size_t first = begin; first < end; first += 8) {
+    const int n = static_cast<int>(std::min<std::size_t>(8, end - first));
+    if (meter.add(n * StopMeter::kPrimitiveWork)) return;
+    std::uint8_t bits = 0;
+    for (std::uint32_t batch = candidates(first, n); batch; batch &= batch - 1) {
+      const int i = __builtin_ctz(batch);
+      const auto& tri = mesh.triangles[first + static_cast<std::size_t>(i)];
+      const int out = outside_of(tri);
+      int order[3];
+      Vec3 face;
+      if (out < 0 || (out == 0 && !fast(tri, scratch, order)) ||
+          (mesh.cull == Cull::back && back_facing(tri, face)))
+        continue;
+      bits |= static_cast<std::uint8_t>(1u << i);
+      for (std::uint32_t v : tri)
+        std::atomic_ref<std::uint8_t>(needed[v]).store(1, std::memory_order_relaxed);
+    }
+    kept[first / 8] = bits;
+  }
+}
+
 void TriangleJob::triangle(std::size_t t, Records& part) const {
   const Mesh& mesh = view.mesh;
-  const ViewPlan& camera = view.plan.view;
   const VaryingLayout& with = setup.calls[call].layout;
   const auto& tri = mesh.triangles[t];
-  // A user matrix can overflow doubles (1e300 x 1e30): such a vertex has no position, and clipping
-  // arithmetic on inf/NaN would produce NaN coordinates. The triangle is dropped.
-  const std::uint8_t any_out = view.outside[tri[0]] | view.outside[tri[1]] | view.outside[tri[2]];
-  if (any_out & 0xc0) return;
-  if (view.outside[tri[0]] & view.outside[tri[1]] & view.outside[tri[2]]) return;  // beyond one plane
-
+  const int any_out = outside_of(tri);
+  if (any_out < 0) return;
   // Inside every plane, the record first: most of a dense mesh's triangles cover no pixel centre and are
   // dropped before their world positions (or any attribute) are looked at.
   int order[3] = {0, 1, 2};
-  if (any_out == 0) {  // the record is made where it will stay
-    FastTriangle fast;
-    for (int k = 0; k < 3; ++k) fast.x[k] = view.screen[tri[k]].x, fast.y[k] = view.screen[tri[k]].y;
-    if (!setup.fast_record(fast, part.grow_triangle(), order)) {
-      part.drop_triangle();
-      return;
-    }
+  if (any_out == 0 && !fast(tri, part.grow_triangle(), order)) {  // made where it will stay
+    part.drop_triangle();
+    return;
   }
-  // Facing from world geometry (valid on both sides of the eye, unlike a post-divide winding test):
-  // front when the counter-clockwise normal points toward the eye.
-  const Vec3 a = view.world_at(tri[0]);
-  const Vec3 face = cross(view.world_at(tri[1]) - a, view.world_at(tri[2]) - a);
-  const Vec3 toward_eye = camera.projection == Projection::perspective ? camera.eye - a : forward * -1.0;
-  const bool back = dot(face, toward_eye) < 0;
+  Vec3 face;
+  const bool back = back_facing(tri, face);
   if (back && mesh.cull == Cull::back) {
     if (any_out == 0) part.drop_triangle();
     return;
@@ -182,14 +236,31 @@ void TriangleJob::triangle(std::size_t t, Records& part) const {
 void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup, StopMeter& meter) {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
-  TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye), {}};
+  TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye), {}, {}};
   if (mode.varyings.has(Varying::normal)) {
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
-    if (mode.compute_normals)
-      job.normals =
-          vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()),
-                         mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1, view.plan.simd, meter);
-    else
+    if (mode.compute_normals) {
+      const int threads = mesh.triangles.size() >= 2 * kPiece ? view.plan.threads : 1;
+      // A mesh of more triangles than pixels draws few of them (a 2M-triangle scan at 512x512: 6%), and only
+      // their corners need a normal: the triangles that may draw are found first, in pieces (and kept: run()
+      // then makes the records of those alone), and only the faces around their corners are measured.
+      PodArray<std::uint8_t> needed;
+      if (mode.normals_where_drawn) {
+        needed.resize_uninitialized(mesh.positions.size());
+        std::fill_n(needed.data(), needed.size(), std::uint8_t{0});
+        job.kept.resize_uninitialized(mesh.triangles.size() / 8 + 2);  // a byte for 8, the last's, a spare
+        job.kept[job.kept.size() - 2] = job.kept[job.kept.size() - 1] = 0;
+        constexpr std::size_t kMarkPiece = 16 * kPiece;
+        parallel_for(threads, (mesh.triangles.size() + kMarkPiece - 1) / kMarkPiece, meter.stop(),
+                     [&](std::size_t piece, StopMeter& own, int) {
+                       job.mark(piece * kMarkPiece, std::min(mesh.triangles.size(), (piece + 1) * kMarkPiece),
+                                needed.data(), own);
+                     });
+        if (meter.check()) return;
+      }
+      job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()), threads,
+                                   view.plan.simd, meter, needed.empty() ? nullptr : needed.data());
+    } else
       for (const Vec3 n : mesh.normals) job.normals.push_back(normalize(transform_point(to_world_normal, n)));
     if (meter.stopped()) return;
   }

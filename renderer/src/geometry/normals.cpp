@@ -1,6 +1,7 @@
 #include "geometry/normals.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -90,34 +91,64 @@ struct Corners {
   }
 }
 
-// The normals of vertices [v0, v1): every triangle with a corner there adds its face normal times that
-// corner's angle, in triangle order; batches of kTriangles measure their triangles together.
-template <bool kIdentity>
-[[gnu::always_inline]] inline void accumulate(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v0,
-                                              std::uint32_t v1, PodArray<Vec3>& normals, StopMeter& own) {
-  auto mine = [&](std::uint32_t v) { return v >= v0 && v < v1; };
+// What every thread's accumulate reads, and the normals they write (each its own vertices).
+struct NormalsJob {
+  const Mesh& mesh;
+  std::span<const Vec3> world;  ///< as vertex_normals takes it
+  const std::uint8_t* needed;   ///< as vertex_normals takes it
+  /// With more than one thread: the lowest and highest corner of each kSpan triangles in order, so that a
+  /// thread skips the spans that cannot touch its vertices (in a scan's or a generator's order, most of
+  /// them). Null with one thread, whose vertices are all.
+  const std::array<std::uint32_t, 2>* spans;
+  PodArray<Vec3>& normals;
+};
+constexpr std::size_t kSpan = 256;
+
+// The normals of vertices [v0, v1) (those marked in `needed`, with kMarked): every triangle with a corner
+// there adds its face normal times that corner's angle, in triangle order; batches of kTriangles measure
+// their triangles together.
+template <bool kIdentity, bool kMarked>
+[[gnu::always_inline]] inline void accumulate(const NormalsJob& job, std::uint32_t v0, std::uint32_t v1,
+                                              StopMeter& own) {
+  const Mesh& mesh = job.mesh;
+  PodArray<Vec3>& normals = job.normals;
+  auto mine = [&](std::uint32_t v) { return v >= v0 && v < v1 && (!kMarked || job.needed[v]); };
   const std::size_t count = mesh.triangles.size();
   std::size_t batch[kTriangles];
   for (std::size_t t = 0; t < count;) {
     if (own.add(StopMeter::kRowWork)) return;  // the caller sees meter.stopped() and draws nothing
     int n = 0;
     for (; t < count && n < kTriangles; ++t) {
+      if (job.spans && t % kSpan == 0) {  // a span none of whose corners can be mine is passed whole
+        const auto [lo, hi] = job.spans[t / kSpan];
+        if (hi < v0 || lo >= v1) {
+          t += kSpan - 1;
+          continue;
+        }
+      }
       const auto& tri = mesh.triangles[t];
       if (mine(tri[0]) || mine(tri[1]) || mine(tri[2])) batch[n++] = t;
     }
     if (n == 0) continue;
-    Lanes p[3][3] = {};
-    for (int i = 0; i < n; ++i) {
-      const auto& tri = mesh.triangles[batch[i]];
-      for (int k = 0; k < 3; ++k) {
+    // The lanes are built whole from the corners (a lane written into a vector in memory and the vector
+    // read back stalled on each of the nine, a third of the time); spare lanes repeat a triangle, unused.
+    for (int i = n; i < kTriangles; ++i) batch[i] = batch[n - 1];
+    static_assert(kTriangles == 4);
+    Lanes p[3][3] = {};  // each written below (the zeros are dead stores)
+    for (int k = 0; k < 3; ++k) {
+      Vec3 q[kTriangles];
+      for (int i = 0; i < kTriangles; ++i) {
+        const std::uint32_t v = mesh.triangles[batch[i]][k];
         if constexpr (kIdentity) {  // MeshView::world_at's bits
-          const Vec3f& q = mesh.positions[tri[k]];
-          p[k][0][i] = q.x + 0.0, p[k][1][i] = q.y + 0.0, p[k][2][i] = q.z + 0.0;
+          const Vec3f& f = mesh.positions[v];
+          q[i] = {f.x + 0.0, f.y + 0.0, f.z + 0.0};
         } else {
-          const Vec3& q = world[tri[k]];
-          p[k][0][i] = q.x, p[k][1][i] = q.y, p[k][2][i] = q.z;
+          q[i] = job.world[v];
         }
       }
+      p[k][0] = Lanes{q[0].x, q[1].x, q[2].x, q[3].x};
+      p[k][1] = Lanes{q[0].y, q[1].y, q[2].y, q[3].y};
+      p[k][2] = Lanes{q[0].z, q[1].z, q[2].z, q[3].z};
     }
     Corners c;
     measure(p, c);
@@ -131,37 +162,54 @@ template <bool kIdentity>
   for (std::uint32_t v = v0; v < v1; ++v) normals[v] = normalize(normals[v]);
 }
 
-void accumulate_sse2(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v0, std::uint32_t v1,
-                     PodArray<Vec3>& normals, StopMeter& own) {
-  if (world.empty()) return accumulate<true>(mesh, world, v0, v1, normals, own);
-  accumulate<false>(mesh, world, v0, v1, normals, own);
+// The four kinds of accumulate: under the identity or a transform, every vertex or the marked ones.
+#define RASTER_ACCUMULATE_KINDS                                    \
+  if (job.world.empty())                                           \
+    return job.needed ? accumulate<true, true>(job, v0, v1, own)   \
+                      : accumulate<true, false>(job, v0, v1, own); \
+  return job.needed ? accumulate<false, true>(job, v0, v1, own) : accumulate<false, false>(job, v0, v1, own);
+
+void accumulate_sse2(const NormalsJob& job, std::uint32_t v0, std::uint32_t v1, StopMeter& own) {
+  RASTER_ACCUMULATE_KINDS
 }
 #if defined(__x86_64__)
-__attribute__((target("avx2"))) void accumulate_avx2(const Mesh& mesh, std::span<const Vec3> world,
-                                                     std::uint32_t v0, std::uint32_t v1,
-                                                     PodArray<Vec3>& normals, StopMeter& own) {
-  if (world.empty()) return accumulate<true>(mesh, world, v0, v1, normals, own);
-  accumulate<false>(mesh, world, v0, v1, normals, own);
+__attribute__((target("avx2"))) void accumulate_avx2(const NormalsJob& job, std::uint32_t v0,
+                                                     std::uint32_t v1, StopMeter& own) {
+  RASTER_ACCUMULATE_KINDS
 }
 #endif
+#undef RASTER_ACCUMULATE_KINDS
 
 }  // namespace
 
 PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, Simd simd,
-                              StopMeter& meter) {
-  const std::size_t nv = mesh.positions.size();
+                              StopMeter& meter, const std::uint8_t* needed) {
+  const std::size_t nv = mesh.positions.size(), count = mesh.triangles.size();
   PodArray<Vec3> normals;
   normals.resize_uninitialized(nv);
   const std::size_t pieces = static_cast<std::size_t>(std::max(threads, 1));
+  PodArray<std::array<std::uint32_t, 2>> spans;
+  if (pieces > 1) {
+    spans.resize_uninitialized((count + kSpan - 1) / kSpan);
+    parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter&, int) {
+      for (std::size_t s = spans.size() * piece / pieces; s < spans.size() * (piece + 1) / pieces; ++s) {
+        std::uint32_t lo = 0xffffffffu, hi = 0;
+        for (std::size_t t = s * kSpan; t < std::min(count, (s + 1) * kSpan); ++t)
+          for (std::uint32_t v : mesh.triangles[t]) lo = std::min(lo, v), hi = std::max(hi, v);
+        spans[s] = {lo, hi};
+      }
+    });
+  }
+  const NormalsJob job{mesh, world, needed, spans.empty() ? nullptr : spans.data(), normals};
   parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
     const std::uint32_t v0 = static_cast<std::uint32_t>(nv * piece / pieces),
                         v1 = static_cast<std::uint32_t>(nv * (piece + 1) / pieces);
     std::fill(normals.data() + v0, normals.data() + v1, Vec3{});
 #if defined(__x86_64__)
-    if (simd == Simd::avx2) return accumulate_avx2(mesh, world, v0, v1, normals, own);
+    if (simd == Simd::avx2) return accumulate_avx2(job, v0, v1, own);
 #endif
     (void)simd;
-    accumulate_sse2(mesh, world, v0, v1, normals, own);
+    accumulate_sse2(job, v0, v1, own);
   });
   meter.check();
   return normals;

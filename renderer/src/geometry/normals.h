@@ -20,7 +20,10 @@ namespace raster::detail {
 /// measured four at a time, on `simd`'s instruction set, with the bits of one at a time.
 /// `world`: the mesh's world positions, one per position; empty when the mesh is in world space already (its
 /// transform the identity), whose positions are then read as MeshView::world_at reads them.
+/// `needed`: null for every vertex's normal; else a byte per vertex, and only the vertices marked non-zero
+/// get theirs (the others are zero), each the same bits, and only the triangles with such a corner are
+/// measured.
 PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, Simd simd,
-                              StopMeter& meter);
+                              StopMeter& meter, const std::uint8_t* needed = nullptr);
 
 }  // namespace raster::detail

@@ -177,6 +177,8 @@ bool plan_mesh(const Mesh& mesh, const LightFacts& lights, DrawPlan& draw, Rende
   pp.face_normals = pp.specular && mesh.shading == Shading::flat;
   const bool light_per_pixel = pp.lit && (mesh.shading == Shading::smooth || pp.specular);
   pp.compute_normals = light_per_pixel && !pp.face_normals && mesh.normals.empty();
+  pp.normals_where_drawn =
+      pp.compute_normals && mesh.triangles.size() > static_cast<std::size_t>(out.width) * out.height;
   tally.grey &= lights.grey || !pp.lit;
   const auto& colors = mesh.face_colors.empty() ? mesh.colors : mesh.face_colors;
   bool varied = false;
