@@ -292,7 +292,7 @@ std::string fmt(const char* f, double v) {
 void plot(const std::map<std::string, Measured>& m, const std::map<std::string, double>& llvmpipe,
           const std::string& path) {
   bench::PlotScene p;
-  p.scene.width = 960;
+  p.scene.width = 1040;
   p.scene.height = 420;
   p.scene.background = {255, 255, 255, 255};
   p.scene.antialias = raster::Antialias::area;
@@ -310,7 +310,7 @@ void plot(const std::map<std::string, Measured>& m, const std::map<std::string, 
     const char* title;
     const char* unit;
   };
-  const Panel panels[2] = {{60, 400, 40, 360, 1, 4, "whole run, default picture (ms)", "ms"},
+  const Panel panels[2] = {{60, 400, 40, 360, 1, 4, "ms: the CLI's whole run of the default picture", "ms"},
                            {500, 840, 40, 360, 1, 3, "peak resident memory (MB)", "MB"}};
   auto px = [&](const Panel& q, double tris) {
     return q.left + (std::log10(tris) - tri_lo) / (tri_hi - tri_lo) * (q.right - q.left);
@@ -321,7 +321,8 @@ void plot(const std::map<std::string, Measured>& m, const std::map<std::string, 
   for (const Panel& q : panels) {
     for (double d = q.lo; d <= q.hi; ++d) {
       p.line({q.left, py(q, std::pow(10, d))}, {q.right, py(q, std::pow(10, d))}, grid);
-      p.text(q.left - 44, py(q, std::pow(10, d)) - 5, fmt("%g", std::pow(10, d)), ink);
+      const std::string label = fmt("%g", std::pow(10, d));
+      p.text(q.left - 6 - bench::PlotScene::text_width(label), py(q, std::pow(10, d)) - 5, label, ink);
     }
     for (double t : {1e5, 1e6}) {
       p.line({px(q, t), q.top}, {px(q, t), q.bottom}, grid);
@@ -369,8 +370,8 @@ void plot(const std::map<std::string, Measured>& m, const std::map<std::string, 
     theirs.push_back(it == llvmpipe.end() ? 0 : it->second);
   }
   series(panels[0], ours, {0, 0, 0, 255}), series(panels[0], theirs, {150, 150, 150, 255});
-  key("rasterd raster", {0, 0, 0, 255});
-  key("llvmpipe raster", {150, 150, 150, 255});
+  key("rasterd aliased raster, PLY", {0, 0, 0, 255});
+  key("llvmpipe raster, PLY", {150, 150, 150, 255});
   const raster::RenderPlan plan = raster::plan(p.scene);
   const std::vector<std::uint8_t> png = raster::encode_png(raster::render(p.scene, plan), plan.png);
   std::ofstream(path, std::ios::binary)

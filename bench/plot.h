@@ -38,6 +38,10 @@ struct PlotScene {
       tri(p[0], p[2], p[3], col);
     }
   }
+  /// The width in pixels `s` takes at `scale`: to end a label at a given x.
+  static double text_width(const std::string& s, double scale = 1.5) {
+    return stb_easy_font_width(const_cast<char*>(s.c_str())) * scale;
+  }
   /// A filled square of side `2 r` around `c`: a plot's marker.
   void mark(raster::Point2 c, double r, raster::Rgba8 col) {
     tri({c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y + r}, col);
