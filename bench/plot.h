@@ -27,7 +27,9 @@ struct PlotScene {
   }
   /// `s` from its top-left corner at (x, y), stb_easy_font's glyphs (about 7 px tall) times `scale`.
   void text(double x, double y, const std::string& s, raster::Rgba8 col, double scale = 1.5) {
-    std::vector<char> buffer(s.size() * 270 + 64);  // stb_easy_font: at most ~270 bytes of quads a glyph
+    // stb_easy_font writes 64 bytes a quad and stops at the buffer's end; a glyph is at most 11 quads ("0" is
+    // 6: its ~270 bytes a glyph are an average, which cut the last digits of numbers off).
+    std::vector<char> buffer(s.size() * 1024 + 64);
     const int quads = stb_easy_font_print(0, 0, const_cast<char*>(s.c_str()), nullptr, buffer.data(),
                                           static_cast<int>(buffer.size()));
     const float* v = reinterpret_cast<const float*>(buffer.data());

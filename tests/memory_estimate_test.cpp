@@ -85,7 +85,7 @@ Measurement measure(const raster::Uploads& uploads, const std::string& scene = k
     ::close(fds[0]);
     Measurement m;
     // server/main.cpp's settings (rasterd::kMmapBytes, kTrimBytes, kArenas): the allocator the costs are for.
-    mallopt(M_MMAP_THRESHOLD, 4 << 20);
+    mallopt(M_MMAP_THRESHOLD, 16 << 20);
     mallopt(M_TRIM_THRESHOLD, 32 << 20);
     mallopt(M_ARENA_MAX, 4);
     // The peak so far is the parent's (the input's making); "5" resets it to the resident size now.
