@@ -228,6 +228,21 @@ TEST(ObjReader, SpoiledFilesAreRefusedAsTheOracleRefusesThem) {
   EXPECT_GT(refused, 100);
 }
 
+// MTL text sent with a model is checked whether or not the model names a library (obj_fuzzer's finding: an
+// MTL error was reported by the oracle alone when no `mtllib` line named it), and its materials are used only
+// where a library is named.
+TEST(ObjReader, GivenMaterialsAreCheckedWhenNoLibraryNamesThem) {
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string bad_mtl = "newmtl m\nmap_Kd -o x\n";
+  for (const std::string& obj : {triangle, "usemtl mtllib a.mtl\n" + triangle, "mtllib a.mtl\n" + triangle}) {
+    expect_agree(obj, bad_mtl, {}, obj);
+    EXPECT_FALSE(outcome([&] { return raster::parse_obj(obj, bad_mtl); }).read) << obj;
+  }
+  const std::string red = "newmtl m\nKd 1 0 0\n";
+  for (const std::string& obj : {"usemtl m\n" + triangle, "mtllib a.mtl\nusemtl m\n" + triangle})
+    expect_agree(obj, red, {}, obj);
+}
+
 // The limits on faces and points name the line that passed them, as the oracle does.
 TEST(ObjReader, LimitsAreRefusedAtTheLineThatPassesThem) {
   raster::Limits limits;

@@ -557,6 +557,12 @@ Mesh read_obj_text(std::string_view obj_text, std::string_view mtl_text, const L
       mtl_failed = std::current_exception();  // the text is still read, for an error of its own first
       mesh.materials.clear();
     }
+  else if (!mtl_text.empty())
+    try {                        // given with a model that names no library: unused, but still checked,
+      (void)read_mtl(mtl_text);  // as the client sent it for this model (and rasterd 0.4 did)
+    } catch (const SceneError&) {
+      mtl_failed = std::current_exception();
+    }
   w.plan.materials = w.any_usemtl && !w.plan.materials_of.list.empty();
   w.plan.textured = !w.plan.materials_of.textures.maps.empty();
   w.plan.no_uv = static_cast<std::uint32_t>(w.plan.vt);
