@@ -243,6 +243,23 @@ TEST(ObjReader, GivenMaterialsAreCheckedWhenNoLibraryNamesThem) {
     expect_agree(obj, red, {}, obj);
 }
 
+// A CR with more of its line after it (classic Mac OS line ends, which tinyobjloader takes for line ends) is
+// refused at its line, not read as more of the statement; CR LF, and a CR before the line's end, are blanks.
+TEST(ObjReader, ACarriageReturnInsideALineIsRefusedAtItsLine) {
+  const std::string triangle = "v 0 0 0\r\nv 1 0 0 \r \nv 0 1 0\r\r\nf 1 2 3\r\n";
+  EXPECT_TRUE(outcome([&] { return raster::parse_obj(triangle); }).read);
+  expect_agree(triangle, {}, {}, "CR LF");
+  for (const char* obj :
+       {"v 0 0 0\nv 0 03 \r-2 -1\nv 0 1 0\nf 1 2 3\n", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\n# a\rb\nf 1 2 3\n"}) {
+    const Outcome o = outcome([&] { return raster::parse_obj(obj); });
+    EXPECT_FALSE(o.read) << obj;
+    EXPECT_NE(o.error.find("a carriage return (CR)"), std::string::npos) << o.error;
+  }
+  EXPECT_NE(outcome([&] { return raster::parse_obj("v 0 0 0\nv 0 03 \r-2 -1\n"); }).error.find("line 2"),
+            std::string::npos);
+}
+
 // The limits on faces and points name the line that passed them, as the oracle does.
 TEST(ObjReader, LimitsAreRefusedAtTheLineThatPassesThem) {
   raster::Limits limits;

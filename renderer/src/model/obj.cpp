@@ -101,6 +101,9 @@ void count_piece(std::string_view text, Piece& piece, const Limits& limits) {
   meter.check();  // every piece asks as it starts, however little it holds
   each_line(text, piece.begin, piece.end, [&](const char* begin, const char* end) {
     meter.add(1);
+    if (std::memchr(begin, '\r', static_cast<std::size_t>(end - begin)) &&
+        inner_carriage_return({begin, static_cast<std::size_t>(end - begin)}))
+      piece.wrong = true;
     LineWords w{begin, end};
     switch (statement(w)) {
       case Statement::v:

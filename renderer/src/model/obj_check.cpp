@@ -71,6 +71,11 @@ void check_obj_text(std::string_view text, const Limits& limits) {
     const std::string_view line = text.substr(pos, end - pos);
     pos = end + 1;
     ++line_no;
+    if (inner_carriage_return(line))
+      model_error(
+          line_no,
+          "a carriage return (CR) with more of the line after it: rasterd reads lines ended by LF or CR "
+          "LF, not by CR alone (classic Mac OS); convert the line ends");
     split_words(line, w);
     meter.add(1 + w.size());
     if (w.empty() || w[0][0] == '#') continue;

@@ -46,6 +46,16 @@ struct LineWords {
   }
 };
 
+/// Whether `line` (without its '\n') holds a carriage return with something other than blanks after it: a
+/// line end of classic Mac OS, which tinyobjloader took for one, and which rasterd refuses rather than read
+/// the rest as more of the same statement. A CR before the '\n' (CR LF) is a blank.
+inline bool inner_carriage_return(std::string_view line) {
+  for (std::size_t cr = line.find('\r'); cr != std::string_view::npos; cr = line.find('\r', cr + 1))
+    for (std::size_t k = cr + 1; k < line.size() && line[k] != '\r'; ++k)
+      if (!LineWords::blank(line[k])) return true;
+  return false;
+}
+
 /// The digits of a plain decimal, as number() takes them: [-]digits[.digits], with the integer they make and
 /// how many follow the point. `at` is left at the first character that is not part of it.
 struct Decimal {
