@@ -74,6 +74,19 @@ void compare(const raster::Mesh& ours, raster::Mesh oracle, std::string_view obj
     disagree("lines or points");
 }
 
+// tinyobjloader (2.0.0~rc10's LoadObj) takes any line that begins with "usemtl" for a `usemtl` statement
+// ("usemtl)m" names the material ")m"); rasterd's reader, like OBJ, takes only the keyword followed by a
+// blank. A documented difference: such a model's looks are not compared.
+bool glued_usemtl(std::string_view obj) {
+  for (std::size_t at = obj.find("usemtl"); at != std::string_view::npos; at = obj.find("usemtl", at + 6)) {
+    const std::size_t start = obj.rfind('\n', at) == std::string_view::npos ? 0 : obj.rfind('\n', at) + 1;
+    const bool first_word = obj.find_first_not_of(" \t\r", start) == at;
+    const char next = at + 6 < obj.size() ? obj[at + 6] : '\n';
+    if (first_word && next != ' ' && next != '\t' && next != '\r' && next != '\n') return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -118,7 +131,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (our_error != oracle_error && !oracle_own)
     disagree(("the readers' errors: \"" + our_error + "\" and \"" + oracle_error + "\"").c_str());
   if (!our_error.empty()) return 0;
-  if (oracle_error.empty()) compare(ours, oracle, obj);
+  if (oracle_error.empty() && !glued_usemtl(obj)) compare(ours, oracle, obj);
   try {
     raster::Scene scene;
     scene.width = 64;
