@@ -239,8 +239,12 @@ TEST(ObjReader, GivenMaterialsAreCheckedWhenNoLibraryNamesThem) {
     EXPECT_FALSE(outcome([&] { return raster::parse_obj(obj, bad_mtl); }).read) << obj;
   }
   const std::string red = "newmtl m\nKd 1 0 0\n";
-  for (const std::string& obj : {"usemtl m\n" + triangle, "mtllib a.mtl\nusemtl m\n" + triangle})
+  // "mtllib " with no name loads the given text too (tinyobjloader: a blank after the keyword); "mtllib"
+  // alone does not.
+  for (const std::string& obj : {"usemtl m\n" + triangle, "mtllib a.mtl\nusemtl m\n" + triangle,
+                                 "mtllib \nusemtl m\n" + triangle, "mtllib\nusemtl m\n" + triangle})
     expect_agree(obj, red, {}, obj);
+  EXPECT_FALSE(raster::parse_obj("mtllib \nusemtl m\n" + triangle, red).face_colors.empty());
 }
 
 // A CR with more of its line after it (classic Mac OS line ends, which tinyobjloader takes for line ends) is

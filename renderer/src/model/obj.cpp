@@ -92,6 +92,11 @@ struct Plan {
 
 // ---- Pass 1: counting --------------------------------------------------------------------------------
 
+// tinyobjloader loads the materials at an `mtllib` (keyword read) with a blank after it, name or not.
+bool loads_materials(const LineWords& w) {
+  return w.at < w.end && (*w.at == ' ' || *w.at == '\t');
+}
+
 void count_piece(std::string_view text, Piece& piece, const Limits& limits) {
   if (first_invalid_utf8(text.substr(piece.begin, piece.end - piece.begin)) != std::string_view::npos) {
     piece.bad_utf8 = true;  // a piece ends at a '\n', which no multi-byte sequence holds: it is the text's
@@ -101,9 +106,7 @@ void count_piece(std::string_view text, Piece& piece, const Limits& limits) {
   meter.check();  // every piece asks as it starts, however little it holds
   each_line(text, piece.begin, piece.end, [&](const char* begin, const char* end) {
     meter.add(1);
-    if (std::memchr(begin, '\r', static_cast<std::size_t>(end - begin)) &&
-        inner_carriage_return({begin, static_cast<std::size_t>(end - begin)}))
-      piece.wrong = true;
+    piece.wrong |= inner_carriage_return({begin, static_cast<std::size_t>(end - begin)});
     LineWords w{begin, end};
     switch (statement(w)) {
       case Statement::v:
@@ -143,7 +146,7 @@ void count_piece(std::string_view text, Piece& piece, const Limits& limits) {
         break;
       }
       case Statement::mtllib:
-        if (!w.rest().empty()) piece.mtllibs.push_back(w.rest());
+        if (loads_materials(w)) piece.mtllibs.push_back(w.rest());
         break;
       case Statement::none:
         break;
@@ -349,7 +352,7 @@ void read_piece(std::string_view text, Piece& piece, Out& out, const Limits& lim
       return read_vertex(s, w, defined[k]++, out, piece);
     }
     if (s == Statement::usemtl) return void(look = look_named(w.next()));
-    if (s == Statement::mtllib) return void(loaded |= !w.rest().empty());
+    if (s == Statement::mtllib) return void(loaded |= loads_materials(w));
     if (s != Statement::f && s != Statement::l && s != Statement::p) return;
     corners.clear();
     for (Corner c; next_corner(w, defined, c);) corners.push_back(c);
@@ -560,9 +563,9 @@ Mesh read_obj_text(std::string_view obj_text, std::string_view mtl_text, const L
       mtl_failed = std::current_exception();  // the text is still read, for an error of its own first
       mesh.materials.clear();
     }
-  else if (!mtl_text.empty())
-    try {                        // given with a model that names no library: unused, but still checked,
-      (void)read_mtl(mtl_text);  // as the client sent it for this model (and rasterd 0.4 did)
+  else if (!mtl_text.empty())  // sent with a model that loads no library: unused, still checked (as 0.4 did)
+    try {
+      (void)read_mtl(mtl_text);
     } catch (const SceneError&) {
       mtl_failed = std::current_exception();
     }
