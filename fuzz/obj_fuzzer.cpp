@@ -92,6 +92,15 @@ bool glued_usemtl(std::string_view obj) {
   return false;
 }
 
+// A reference with an empty part after its last slash ("11/ 2/2"): tinyobjloader cannot parse it or reads the
+// next reference's number into it; rasterd reads the position alone. Such a model is not compared.
+bool empty_after_slash(std::string_view obj) {
+  for (std::size_t at = obj.find('/'); at != std::string_view::npos; at = obj.find('/', at + 1))
+    if (at + 1 == obj.size() || std::string_view(" \t\r\n").find(obj[at + 1]) != std::string_view::npos)
+      return true;
+  return false;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -136,7 +145,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (our_error != oracle_error && !oracle_own)
     disagree(("the readers' errors: \"" + our_error + "\" and \"" + oracle_error + "\"").c_str());
   if (!our_error.empty()) return 0;
-  if (oracle_error.empty() && !glued_usemtl(obj)) compare(ours, oracle, obj);
+  if (oracle_error.empty() && !glued_usemtl(obj) && !empty_after_slash(obj)) compare(ours, oracle, obj);
   try {
     raster::Scene scene;
     scene.width = 64;

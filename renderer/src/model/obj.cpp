@@ -104,9 +104,10 @@ void count_piece(std::string_view text, Piece& piece, const Limits& limits) {
   }
   detail::ReadMeter meter(limits);
   meter.check();  // every piece asks as it starts, however little it holds
+  const bool has_cr = std::memchr(text.data() + piece.begin, '\r', piece.end - piece.begin);
   each_line(text, piece.begin, piece.end, [&](const char* begin, const char* end) {
     meter.add(1);
-    piece.wrong |= inner_carriage_return({begin, static_cast<std::size_t>(end - begin)});
+    if (has_cr) piece.wrong |= inner_carriage_return({begin, static_cast<std::size_t>(end - begin)});
     LineWords w{begin, end};
     switch (statement(w)) {
       case Statement::v:
