@@ -245,6 +245,15 @@ TEST(ObjReader, GivenMaterialsAreCheckedWhenNoLibraryNamesThem) {
                                  "mtllib \nusemtl m\n" + triangle, "mtllib\nusemtl m\n" + triangle})
     expect_agree(obj, red, {}, obj);
   EXPECT_FALSE(raster::parse_obj("mtllib \nusemtl m\n" + triangle, red).face_colors.empty());
+  // A `newmtl` without a name starts no material (tinyobjloader's rule): the map after it is the material
+  // before's (obj_fuzzer's finding: with two mtllib lines the oracle asked for the texture, the reader not).
+  const std::string nameless = "newmtl a\nKd 1 0 0\nnewmtl\nmap_Kd x.png\n";
+  for (const std::string& obj :
+       {std::string("mtllib m\nmtllib \nv 0 0 0\n"), "mtllib a.mtl\nusemtl a\n" + triangle}) {
+    expect_agree(obj, nameless, {}, obj);
+    EXPECT_NE(outcome([&] { return raster::parse_obj(obj, nameless); }).error.find("x.png"),
+              std::string::npos);
+  }
 }
 
 // A CR with more of its line after it (classic Mac OS line ends, which tinyobjloader takes for line ends) is

@@ -172,7 +172,9 @@ MtlPass read_mtl(std::string_view mtl) {
     std::string_view spelled = key;
     for (std::string_view known : kKeywords)
       if (iequals(key, known)) spelled = known;
-    if (spelled == "newmtl") current = &out.materials[std::string(rest)];
+    // A `newmtl` without a name is passed to tinyobjloader as "newmtl", which it does not take for the
+    // statement: the material before goes on, for its Kd as for its map_Kd here.
+    if (spelled == "newmtl" && !rest.empty()) current = &out.materials[std::string(rest)];
     if (spelled == "Kd" && current) current->has_kd = true;
     out.text.append(spelled).append(rest.empty() ? "" : " ").append(rest) += '\n';
   }
