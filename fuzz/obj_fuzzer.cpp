@@ -142,7 +142,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // after a CR, naming it, rather than read the rest as more of the statement (the fuzzer's finding "v 0 03
   // \r-2 -1").
   if (our_error.find("a carriage return (CR)") != std::string::npos) return 0;
-  if (our_error != oracle_error && !oracle_own)
+  // It loses the lines and points of a group without faces (see compare()): a model of those alone is
+  // empty to it, and drawn by rasterd.
+  const bool oracle_lost =
+      our_error.empty() && oracle_error.find("no faces, lines or points") != std::string::npos;
+  if (our_error != oracle_error && !oracle_own && !oracle_lost)
     disagree(("the readers' errors: \"" + our_error + "\" and \"" + oracle_error + "\"").c_str());
   if (!our_error.empty()) return 0;
   if (oracle_error.empty() && !glued_usemtl(obj) && !empty_after_slash(obj)) compare(ours, oracle, obj);
