@@ -124,7 +124,7 @@ TEST(ModelService, AntialiasIsAQueryParameterOfABareModel) {
     const std::string value = level == std::string("area") ? "\"area\"" : level;
     const std::string scene =
         R"({"width": 64, "height": 64, )" + test::model_picture_fields(false) + R"(, "antialias": )" + value +
-        R"(, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "model"}]})";
+        R"(, "camera": {"view": "iso", "fit": "vertices"}, "primitives": [{"type": "model", "source": "model"}]})";
     auto in_scene = server.client().Post(
         "/render", httplib::MultipartFormDataItems{{"scene", scene, "", ""}, {"model", obj, "m.obj", ""}});
     ASSERT_TRUE(in_scene);
@@ -228,7 +228,7 @@ TEST(ModelService, MultipartPartsOfEveryFormatAreFoundByFileName) {
   // A scene that names the part: "model" with or without a format, and the old "obj" type.
   const std::string scene =
       R"({"width": 64, "height": 64, )" + test::model_picture_fields() +
-      R"(, "camera": {"view": "iso"}, "primitives": [{"type": "model", "source": "part"}]})";
+      R"(, "camera": {"view": "iso", "fit": "vertices"}, "primitives": [{"type": "model", "source": "part"}]})";
   auto referenced = server.client().Post(
       "/render", httplib::MultipartFormDataItems{{"scene", scene, "scene.json", "application/json"},
                                                  {"part", test::write_ply_ascii(m), "", ""}});
@@ -280,7 +280,7 @@ TEST(ModelService, ANamedModelThatStartsLikeJsonIsStillTheModel) {
   ASSERT_EQ(want->status, 200) << want->body;
   const std::string scene =
       R"({"width": 64, "height": 64, )" + test::model_picture_fields() +
-      R"(, "camera": {"view": "iso", "up": "+z"}, "primitives": [{"type": "model", "source": "part.stl"}]})";
+      R"(, "camera": {"view": "iso", "fit": "vertices", "up": "+z"}, "primitives": [{"type": "model", "source": "part.stl"}]})";
   auto by_type = server.client().Post(kQuery, padded, "model/stl");
   auto by_part =
       server.client().Post(kQuery, httplib::MultipartFormDataItems{{"file", padded, "part.stl", ""}});
@@ -298,7 +298,7 @@ TEST(ModelService, ANamedModelThatStartsLikeJsonIsStillTheModel) {
       "/render",
       httplib::MultipartFormDataItems{{"scene",
                                        R"({"width": 64, "height": 64, )" + test::model_picture_fields() +
-                                           R"(, "camera": {"view": "iso"},
+                                           R"(, "camera": {"view": "iso", "fit": "vertices"},
                                               "primitives": [{"type": "model", "source": "model"}]})",
                                        "scene.json", "application/json"},
                                       {"model", glb, "torus.glb", ""}});

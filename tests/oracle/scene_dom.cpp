@@ -782,22 +782,31 @@ namespace {
 Camera read_camera(const json& v) {
   const Path pointer(kRoot, "camera");
   if (!v.is_object()) invalid(pointer, std::string("expected a camera object, got ") + type_name(v));
-  check_keys(v, pointer, {"projection", "view", "eye", "target", "up", "fov", "near", "far", "height"});
+  check_keys(v, pointer,
+             {"projection", "view", "fit", "eye", "target", "up", "fov", "near", "far", "height"});
   Camera c;
   if (auto it = v.find("view"); it != v.end()) {
     static constexpr std::pair<const char*, View> kViews[] = {
-        {"front", View::front}, {"back", View::back},     {"left", View::left}, {"right", View::right},
-        {"top", View::top},     {"bottom", View::bottom}, {"iso", View::iso}};
+        {"front", View::front}, {"back", View::back},
+        {"left", View::left},   {"right", View::right},
+        {"top", View::top},     {"bottom", View::bottom},
+        {"iso", View::iso},     {"three-quarter", View::three_quarter}};
     const auto named = it->is_string() ? std::find_if(std::begin(kViews), std::end(kViews),
                                                       [&](const auto& kv) { return *it == kv.first; })
                                        : std::end(kViews);
     if (named == std::end(kViews))
       invalid(Path(pointer, "view"),
-              "expected \"front\", \"back\", \"left\", \"right\", \"top\", \"bottom\" or \"iso\", got " +
+              "expected \"front\", \"back\", \"left\", \"right\", \"top\", \"bottom\", \"iso\" or "
+              "\"three-quarter\", got " +
                   it->dump());
     if (v.contains("eye"))
       invalid(Path(pointer, "view"), "\"view\" and \"eye\" both place the camera: give one of them");
     c.view = named->second, c.has_view = true;
+  }
+  if (auto it = v.find("fit"); it != v.end()) {
+    if (!it->is_string() || (*it != "sphere" && *it != "vertices"))
+      invalid(Path(pointer, "fit"), "expected \"sphere\" or \"vertices\", got " + it->dump());
+    c.fit = *it == "vertices" ? CameraFit::vertices : CameraFit::sphere;
   }
   if (auto it = v.find("projection"); it != v.end()) {
     if (!it->is_string() || (*it != "perspective" && *it != "orthographic"))

@@ -177,8 +177,10 @@ struct ModelPicture {
 inline constexpr ModelPicture kModelPicture{};
 
 /// The scene a bare model is drawn in: kModelPicture's size, background and anti-aliasing, one mesh
-/// primitive drawing `mesh`, and a camera fitted to it from the front, standing on `format`'s up axis
-/// (the camera's up is given only when that axis is not +Y, so a +Y model's scene is the default camera's).
+/// primitive drawing `mesh`, and a thumbnailer's camera: the three-quarter view (View::three_quarter, from
+/// the front-right and above) fitted to the model's vertices as projected (CameraFit::vertices: the longer
+/// side fills 90% of the picture; a flat model is seen face on), standing on `format`'s up axis (the
+/// camera's up is given only when that axis is not +Y).
 Scene model_scene(Mesh mesh, ModelFormat format);
 
 /// Decodes a PNG or JPEG texture to RGBA8. The size is read from the header and checked first: over

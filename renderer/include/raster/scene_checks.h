@@ -27,7 +27,7 @@ Rgba8 color(std::string_view text);
 /// A camera's "projection": "perspective" or "orthographic".
 Projection projection(std::string_view name);
 
-/// A camera's "view": "front", "back", "left", "right", "top", "bottom" or "iso".
+/// A camera's "view": "front", "back", "left", "right", "top", "bottom", "iso" or "three-quarter".
 View view(std::string_view name);
 
 /// A camera's "fov", in degrees.

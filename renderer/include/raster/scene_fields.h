@@ -39,10 +39,10 @@ constexpr auto fields(T& s) {
   else if constexpr (std::is_same_v<U, Mesh>)
     return std::tie(s.positions, s.triangles, s.segments, s.points, s.point_size, s.normals,
                     s.normal_triangles, s.colors, s.face_colors, s.uvs, s.uv_triangles, s.textures,
-                    s.face_textures, s.materials, s.face_materials, s.shading, s.cull, s.wireframe, s.edges,
-                    s.transform);
+                    s.face_textures, s.materials, s.face_materials, s.shading, s.crease_deg, s.cull,
+                    s.wireframe, s.edges, s.transform);
   else if constexpr (std::is_same_v<U, Camera>)
-    return std::tie(s.projection, s.view, s.has_eye, s.has_target, s.has_near, s.has_far, s.has_height,
+    return std::tie(s.projection, s.view, s.fit, s.has_eye, s.has_target, s.has_near, s.has_far, s.has_height,
                     s.has_view, s.has_up, s.eye, s.target, s.up, s.fov_deg, s.near, s.far, s.height);
   else if constexpr (std::is_same_v<U, Light>)
     return std::tie(s.kind, s.camera_space, s.direction, s.position, s.color, s.intensity);

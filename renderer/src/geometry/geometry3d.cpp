@@ -41,6 +41,7 @@ struct TriangleJob {
   std::uint32_t call;                        ///< faces without a texture (or untextured meshes)
   std::vector<std::uint32_t> texture_calls;  ///< textured: the call of each of the mesh's textures
   PodArray<Vec3> normals;  ///< per-pixel lighting: world space, per position (computed) or per OBJ normal
+  CornerNormals creases;   ///< computed normals of a creased mesh: the corners split from their vertex's
   Vec3 forward;            ///< unit view direction
   MaterialCalls material_calls;  ///< specular meshes: the call of each (texture, material) pair
   /// A dense mesh's triangles that may draw, found before its normals (mark()): bit t % 8 of byte t / 8, and
@@ -109,9 +110,14 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
     };
     if (mode.face_normals)  // flat specular: the face's own normal at each corner (flipped when shaded)
       put(Varying::normal, normalize(face));
-    else if (with.has(Varying::normal))
-      put(Varying::normal,
-          mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]]);
+    else if (with.has(Varying::normal)) {
+      const Vec3f* split = creases.empty() ? nullptr : creases.at(tri[k], static_cast<std::uint32_t>(t));
+      if (split)
+        put(Varying::normal, {split->x + 0.0, split->y + 0.0, split->z + 0.0});
+      else
+        put(Varying::normal,
+            mesh.normal_triangles.empty() ? normals[tri[k]] : normals[mesh.normal_triangles[t][k]]);
+    }
     if (with.has(Varying::position)) put(Varying::position, view.world_at(tri[k]));
   }
   if (mode.specular) triangle_call = material_calls.at(material_key(mesh, t, texture));
@@ -236,7 +242,7 @@ void TriangleJob::triangle(std::size_t t, Records& part) const {
 void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup, StopMeter& meter) {
   const Mesh& mesh = view.mesh;
   const ViewPlan& camera = view.plan.view;
-  TriangleJob job{view, mode, setup, 0, {}, {}, normalize(camera.target - camera.eye), {}, {}};
+  TriangleJob job{view, mode, setup, 0, {}, {}, {}, normalize(camera.target - camera.eye), {}, {}};
   if (mode.varyings.has(Varying::normal)) {
     const Mat4 to_world_normal = normal_matrix(mesh.transform);
     if (mode.compute_normals) {
@@ -258,8 +264,10 @@ void add_triangles(const MeshView& view, const PrimitivePlan& mode, Setup& setup
                      });
         if (meter.check()) return;
       }
-      job.normals = vertex_normals(mesh, std::span<const Vec3>(view.world.data(), view.world.size()), threads,
-                                   view.plan.simd, meter, needed.empty() ? nullptr : needed.data());
+      const std::span<const Vec3> world(view.world.data(), view.world.size());
+      const std::uint8_t* marked = needed.empty() ? nullptr : needed.data();
+      job.normals = vertex_normals(mesh, world, threads, view.plan.simd, meter, marked);
+      if (!meter.stopped()) job.creases = crease_normals(mesh, world, job.normals, threads, meter, marked);
     } else
       for (const Vec3 n : mesh.normals) job.normals.push_back(normalize(transform_point(to_world_normal, n)));
     if (meter.stopped()) return;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -180,7 +181,177 @@ __attribute__((target("avx2"))) void accumulate_avx2(const NormalsJob& job, std:
 #endif
 #undef RASTER_ACCUMULATE_KINDS
 
+// A triangle's unit normal (zero when it has no area) and the angle at its corner `k`, in doubles, one
+// triangle at a time: what a split vertex's groups are made of.
+struct Corner {
+  Vec3 face;
+  double angle = 0;
+};
+Corner corner_of(const Mesh& mesh, std::span<const Vec3> world, const std::array<std::uint32_t, 3>& tri,
+                 int k) {
+  auto at = [&](std::uint32_t v) {
+    if (!world.empty()) return world[v];
+    const Vec3f& f = mesh.positions[v];
+    return Vec3{f.x + 0.0, f.y + 0.0, f.z + 0.0};
+  };
+  const Vec3 p = at(tri[k]), a = at(tri[(k + 1) % 3]) - p, b = at(tri[(k + 2) % 3]) - p;
+  Corner c;
+  c.face = normalize(cross(at(tri[1]) - at(tri[0]), at(tri[2]) - at(tri[0])));
+  const double norms = length(a) * length(b);
+  c.angle = norms > 0 && std::isfinite(norms) ? std::acos(std::clamp(dot(a, b) / norms, -1.0, 1.0)) : 0;
+  return c;
+}
+
+// Union-find over a vertex's faces, with path halving.
+std::uint32_t root_of(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// The corner normals of split vertex `v`, whose faces are entries [begin, end) of `out`: faces joined by an
+// edge (v, w) of at most the crease (consecutive faces sharing w, in triangle order) are one group, and each
+// entry takes the normalised sum of its group's face normals x corner angles (in triangle order); a face
+// without area, or a group summing to zero, takes the vertex normal. `scratch` is reused between vertices.
+struct SplitScratch {
+  std::vector<Corner> corners;
+  std::vector<std::array<std::uint32_t, 2>> edges;  // (other vertex, entry)
+  std::vector<std::uint32_t> parent;
+  std::vector<Vec3> sums;
+};
+void split_vertex(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v, const Vec3& vertex_normal,
+                  double cos_crease, std::uint32_t begin, std::uint32_t end, CornerNormals& out,
+                  SplitScratch& s) {
+  const std::uint32_t d = end - begin;
+  s.corners.resize(d), s.edges.clear(), s.parent.resize(d), s.sums.assign(d, Vec3{});
+  for (std::uint32_t i = 0; i < d; ++i) {
+    const auto& tri = mesh.triangles[out.triangle[begin + i]];
+    const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+    s.corners[i] = corner_of(mesh, world, tri, k);
+    s.parent[i] = i;
+    s.edges.push_back({tri[(k + 1) % 3], i}), s.edges.push_back({tri[(k + 2) % 3], i});
+  }
+  std::sort(s.edges.begin(), s.edges.end());
+  auto has_area = [&](std::uint32_t i) { return s.corners[i].face != Vec3{}; };
+  for (std::size_t e = 1; e < s.edges.size(); ++e) {
+    const std::uint32_t i = s.edges[e - 1][1], j = s.edges[e][1];
+    if (s.edges[e - 1][0] != s.edges[e][0] || i == j || !has_area(i) || !has_area(j)) continue;
+    if (dot(s.corners[i].face, s.corners[j].face) >= cos_crease) {
+      const std::uint32_t a = root_of(s.parent, i), b = root_of(s.parent, j);
+      s.parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  for (std::uint32_t i = 0; i < d; ++i) {
+    Vec3& sum = s.sums[root_of(s.parent, i)];
+    sum = sum + s.corners[i].face * s.corners[i].angle;
+  }
+  for (std::uint32_t i = 0; i < d; ++i) {
+    const Vec3 n = has_area(i) ? normalize(s.sums[root_of(s.parent, i)]) : Vec3{};
+    const Vec3 chosen = n == Vec3{} ? vertex_normal : n;
+    out.normal[begin + i] = {static_cast<float>(chosen.x), static_cast<float>(chosen.y),
+                             static_cast<float>(chosen.z)};
+  }
+}
+
+// Step 1 of crease_normals: `split`, a byte a vertex, marks the vertices some face around which lies more
+// than half the crease from the vertex normal: at every other vertex all faces lie within the crease of each
+// other, one group, the vertex normal. False when none is marked (or the render stopped).
+bool mark_splits(const Mesh& mesh, std::span<const Vec3> world, const PodArray<Vec3>& normals,
+                 double cos_half, int threads, StopMeter& meter, const std::uint8_t* needed,
+                 PodArray<std::uint8_t>& split) {
+  const std::size_t nv = mesh.positions.size(), count = mesh.triangles.size();
+  split.resize_uninitialized(nv);
+  std::fill_n(split.data(), nv, std::uint8_t{0});
+  constexpr std::size_t kPiece = 16384;
+  std::atomic<bool> any{false};
+  parallel_for(threads, (count + kPiece - 1) / kPiece, meter.stop(),
+               [&](std::size_t piece, StopMeter& own, int) {
+                 bool found = false;
+                 for (std::size_t t = piece * kPiece; t < std::min(count, (piece + 1) * kPiece); ++t) {
+                   if (own.add(StopMeter::kPrimitiveWork)) return;
+                   const auto& tri = mesh.triangles[t];
+                   if (needed && !(needed[tri[0]] | needed[tri[1]] | needed[tri[2]])) continue;
+                   const Corner c = corner_of(mesh, world, tri, 0);
+                   if (c.face == Vec3{}) continue;  // no area: no direction, part of no group
+                   for (const std::uint32_t v : tri)
+                     if ((!needed || needed[v]) && !(dot(c.face, normals[v]) >= cos_half)) {
+                       std::atomic_ref<std::uint8_t>(split[v]).store(1, std::memory_order_relaxed);
+                       found = true;
+                     }
+                 }
+                 if (found) any.store(true, std::memory_order_relaxed);
+               });
+  return !meter.check() && any.load();
+}
+
 }  // namespace
+
+const Vec3f* CornerNormals::at(std::uint32_t v, std::uint32_t t) const {
+  if (slot.empty() || slot[v] == kSmooth) return nullptr;
+  const std::uint32_t* b = triangle.data() + first[slot[v]];
+  const std::uint32_t* e = triangle.data() + first[slot[v] + 1];
+  const std::uint32_t* found = std::lower_bound(b, e, t);
+  return found != e && *found == t ? &normal[static_cast<std::size_t>(found - triangle.data())] : nullptr;
+}
+
+CornerNormals crease_normals(const Mesh& mesh, std::span<const Vec3> world, const PodArray<Vec3>& normals,
+                             int threads, StopMeter& meter, const std::uint8_t* needed) {
+  CornerNormals out;
+  if (!(mesh.crease_deg < 180)) return out;
+  const double crease = mesh.crease_deg * std::numbers::pi / 180;
+  const double cos_half = std::cos(crease / 2), cos_crease = std::cos(crease);
+  const std::size_t nv = mesh.positions.size(), count = mesh.triangles.size();
+  if (!meter.stop().reserve(static_cast<std::int64_t>(nv))) return out;
+  PodArray<std::uint8_t> split;
+  if (!mark_splits(mesh, world, normals, cos_half, threads, meter, needed, split)) return out;
+  // 2. Each split vertex's faces, in triangle order (a counting sort by vertex).
+  std::uint32_t splits = 0;
+  if (!meter.stop().reserve(static_cast<std::int64_t>(nv * sizeof(std::uint32_t)))) return out;
+  out.slot.resize_uninitialized(nv);
+  for (std::size_t v = 0; v < nv; ++v) out.slot[v] = split[v] ? splits++ : CornerNormals::kSmooth;
+  out.first.resize_uninitialized(splits + 1);
+  std::fill_n(out.first.data(), splits + 1, 0u);
+  for (const auto& tri : mesh.triangles)
+    for (const std::uint32_t v : tri)
+      if (out.slot[v] != CornerNormals::kSmooth) ++out.first[out.slot[v] + 1];
+  for (std::uint32_t i = 0; i < splits; ++i) out.first[i + 1] += out.first[i];
+  const std::uint32_t entries = out.first[splits];
+  if (!meter.stop().reserve(static_cast<std::int64_t>(entries) * 16 + splits * 4)) return CornerNormals{};
+  out.triangle.resize_uninitialized(entries), out.normal.resize_uninitialized(entries);
+  {
+    PodArray<std::uint32_t> fill;
+    fill.resize_uninitialized(splits);
+    std::copy_n(out.first.data(), splits, fill.data());
+    for (std::size_t t = 0; t < count; ++t)
+      for (const std::uint32_t v : mesh.triangles[t])
+        if (out.slot[v] != CornerNormals::kSmooth)
+          out.triangle[fill[out.slot[v]]++] = static_cast<std::uint32_t>(t);
+  }
+  // 3. The groups of each split vertex, on the render's threads, each with scratch for its largest vertex
+  // (a face-dense model can have a vertex of a million faces).
+  std::uint32_t most = 0;
+  for (std::uint32_t i = 0; i < splits; ++i) most = std::max(most, out.first[i + 1] - out.first[i]);
+  constexpr std::int64_t kScratchPerFace =
+      sizeof(Corner) + 2 * sizeof(std::array<std::uint32_t, 2>) + sizeof(std::uint32_t) + sizeof(Vec3);
+  constexpr std::size_t kVertices = 256;  // split vertices a piece
+  const std::size_t pieces = (splits + kVertices - 1) / kVertices;
+  const std::int64_t workers =
+      std::min<std::int64_t>(std::max(threads, 1), static_cast<std::int64_t>(pieces));
+  if (!meter.stop().reserve(workers * most * kScratchPerFace + splits * 8)) return CornerNormals{};
+  PodArray<std::uint32_t> vertices;
+  vertices.resize_uninitialized(splits);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (out.slot[v] != CornerNormals::kSmooth) vertices[out.slot[v]] = static_cast<std::uint32_t>(v);
+  parallel_for(threads, pieces, meter.stop(), [&](std::size_t piece, StopMeter& own, int) {
+    SplitScratch scratch;
+    for (std::size_t i = piece * kVertices; i < std::min<std::size_t>(splits, (piece + 1) * kVertices); ++i) {
+      if (own.add((out.first[i + 1] - out.first[i]) * StopMeter::kPrimitiveWork)) return;
+      const std::uint32_t v = vertices[i];
+      split_vertex(mesh, world, v, normals[v], cos_crease, out.first[i], out.first[i + 1], out, scratch);
+    }
+  });
+  meter.check();
+  return out;
+}
 
 PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, Simd simd,
                               StopMeter& meter, const std::uint8_t* needed) {

@@ -26,4 +26,28 @@ namespace raster::detail {
 PodArray<Vec3> vertex_normals(const Mesh& mesh, std::span<const Vec3> world, int threads, Simd simd,
                               StopMeter& meter, const std::uint8_t* needed = nullptr);
 
+/// A creased mesh's corners whose normal is not their vertex's (Mesh::crease_deg): at a vertex where some
+/// face turns further than the crease from the others, the faces around it are split into the groups that
+/// edges of at most crease_deg join (VTK's normals filter: a sharp edge splits), and each corner takes its
+/// group's angle-weighted normal. Every other vertex keeps vertex_normals' normal, bit for bit.
+struct CornerNormals {
+  static constexpr std::uint32_t kSmooth = 0xffffffffu;
+  PodArray<std::uint32_t> slot;   ///< per vertex: kSmooth, or its index into `first`; empty: none split
+  PodArray<std::uint32_t> first;  ///< per split vertex, its first entry; and one past the last vertex's
+  PodArray<std::uint32_t>
+      triangle;            ///< per entry: a triangle with a corner at the vertex, in increasing order
+  PodArray<Vec3f> normal;  ///< per entry: that corner's normal (world, unit)
+  bool empty() const { return slot.empty(); }
+  /// The normal of triangle `t`'s corner at vertex `v`, or null where v keeps its vertex normal.
+  const Vec3f* at(std::uint32_t v, std::uint32_t t) const;
+};
+
+/// The split corners of `mesh` (its crease_deg below 180) for the vertex normals `normals` (vertex_normals'
+/// result for the same `world` and `needed`): found in a pass over the triangles on `threads`, a vertex
+/// split only where a face around it lies more than half the crease from its normal (so that no two do
+/// within it otherwise), its faces grouped in O(d log d) for a vertex of d faces. The arrays are asked of
+/// the render's budget first (a refusal stops the render; the result is then empty).
+CornerNormals crease_normals(const Mesh& mesh, std::span<const Vec3> world, const PodArray<Vec3>& normals,
+                             int threads, StopMeter& meter, const std::uint8_t* needed = nullptr);
+
 }  // namespace raster::detail

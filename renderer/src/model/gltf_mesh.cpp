@@ -128,6 +128,7 @@ class MeshBuilder {
       mesh_.colors.erase(mesh_.colors.begin() + 1, mesh_.colors.end());
     if (any_lit_ == false && any_unlit_) mesh_.shading = Shading::unlit;
     finish_normals();
+    mesh_.crease_deg = kModelCreaseDeg;  // for a picture that asks for smooth shading
     return std::move(mesh_);
   }
 

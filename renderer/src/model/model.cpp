@@ -256,6 +256,8 @@ Scene model_scene(Mesh mesh, ModelFormat format) {
   scene.height = kModelPicture.height;
   scene.background = kModelPicture.background;
   scene.antialias = kModelPicture.antialias;
+  scene.camera.view = View::three_quarter;
+  scene.camera.fit = CameraFit::vertices;
   const Vec3& up = model_format(format).up;
   if (up != Vec3{0, 1, 0}) scene.camera.up = up, scene.camera.has_up = true;
   scene.meshes.push_back(std::move(mesh));

@@ -226,8 +226,7 @@ Corner corner(std::string_view ref, const std::int64_t (&defined)[3]) {
 }
 
 // One index part of a reference read in place: [-]digits (at most 18), resolved against `defined` into
-// `out` (-1: out of range, as resolve() has it). Null when the part is not plain digits (the caller reads
-// the word the general way).
+// `out` (-1: out of range, as resolve() has it). Null when not plain digits (the caller reads it generally).
 const char* scan_index(const char* at, const char* end, std::int64_t defined, std::int64_t& out) {
   const bool negative = at < end && *at == '-';
   at += negative;
@@ -527,8 +526,9 @@ void finish(const Whole& w, std::vector<Piece>& pieces, Out& out, int threads, c
   for (const Piece& p : pieces)
     coloured += p.coloured, all_normals &= p.all_normals, any_material |= p.any_material;
   if (coloured == w.plan.v) mesh.colors = std::move(out.colors);
-  // Normals are used only when every face has them; otherwise they are computed.
+  // Normals are used only when every face has them; otherwise they are computed, smooth within the crease.
   if (!all_normals || mesh.triangles.empty()) mesh.normals.clear(), mesh.normal_triangles.clear();
+  mesh.crease_deg = kModelCreaseDeg;
   if (any_material) mesh.face_colors = std::move(out.face_colors);
   if (w.cloud) {
     mesh.points.resize(mesh.positions.size());

@@ -452,6 +452,7 @@ Mesh parse_ply(std::string_view bytes, const Limits& limits) {
   }
   if (mesh.triangles.empty()) ply_error("the model's faces have no three corners to draw");
   // A face's corners are vertices, so normals are indexed as positions are (no normal_triangles).
+  mesh.crease_deg = kModelCreaseDeg;  // computed normals: smooth within the crease
   return mesh;
 }
 

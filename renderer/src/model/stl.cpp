@@ -220,6 +220,7 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
   check_facets(count, limits);
   Mesh mesh;
   mesh.shading = Shading::flat;
+  mesh.crease_deg = kModelCreaseDeg;  // for a picture that asks for smooth shading
   const std::size_t expected = expected_vertices(count);
   detail::reserve(
       limits,
@@ -326,6 +327,7 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
   Words in(text);
   Mesh mesh;
   mesh.shading = Shading::flat;
+  mesh.crease_deg = kModelCreaseDeg;  // for a picture that asks for smooth shading
   // A facet is at least ~60 bytes of text ("facet normal 0 0 0 outer loop vertex 0 0 0 ... endfacet"):
   // reserving from that bounds the guess by the text's size.
   std::size_t reserved = text.size() / 64;  // facets asked of the budget so far, grown in steps below

@@ -75,10 +75,11 @@ inline std::string expected_one_of(std::span<const std::string_view> names) {
   return expected;
 }
 
-/// The words of a camera's "projection" and "view", in the enums' order.
+/// The words of a camera's "projection", "view" and "fit", in the enums' order.
 inline constexpr std::array<std::string_view, 2> kProjectionNames{"perspective", "orthographic"};
-inline constexpr std::array<std::string_view, 7> kViewNames{"front", "back",   "left", "right",
-                                                            "top",   "bottom", "iso"};
+inline constexpr std::array<std::string_view, 8> kViewNames{"front", "back",   "left", "right",
+                                                            "top",   "bottom", "iso",  "three-quarter"};
+inline constexpr std::array<std::string_view, 2> kFitNames{"sphere", "vertices"};
 
 /// JSON value kinds as bits, for a descriptor's accepted kinds (JsonCursor::Kind order).
 enum KindBits : std::uint8_t {

@@ -89,6 +89,10 @@ constexpr Field<CameraState> kCameraFields[] = {
      [](Reader& r, CameraState& c, const Path& at) {
        c.camera.view = static_cast<View>(r.choice(at, format::kViewNames)), c.camera.has_view = true;
      }},
+    {"fit", format::kString, "\"sphere\" or \"vertices\"",
+     [](Reader& r, CameraState& c, const Path& at) {
+       c.camera.fit = static_cast<CameraFit>(r.choice(at, format::kFitNames));
+     }},
     {"eye", format::kArray, "a point [x, y, z]",
      [](Reader& r, CameraState& c, const Path& at) { c.camera.eye = r.vec3(at), c.camera.has_eye = true; }},
     {"target", format::kArray, "a point [x, y, z]",
