@@ -15,7 +15,7 @@ RUN cmake -S . -B /build -DCMAKE_BUILD_TYPE=Release -DRASTERD_BUILD_TESTS=OFF -D
 # the same. No curl: the health check is rasterd's own (`rasterd healthcheck`).
 FROM debian:bookworm-slim
 RUN apt-get update -qq \
- && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libisal2 libtinyobjloader2rc10 zlib1g libssl3 \
+ && apt-get install -y -qq --no-install-recommends libcpp-httplib0.11 libisal2 libtinyobjloader2rc10 libexpat1 zlib1g libssl3 \
  && rm -rf /var/lib/apt/lists/* \
  && groupadd --system -g 10001 rasterd \
  && useradd --system --no-create-home -u 10001 -g 10001 rasterd

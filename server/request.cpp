@@ -318,7 +318,7 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
     names += (names.empty() ? "\"" : ", \"") + p.part + "\"" + (p.key != p.part ? " (" + p.key + ")" : "");
   return "the upload has the parts " + names + " but none is named \"scene\" or \"model\"" +
          (candidates.empty() ? "" : " and more than one could be") +
-         "; send the model as -F model=@model.stl (or .obj, .ply, .gltf, .glb) or the scene as -F "
+         "; send the model as -F model=@model.stl (or .obj, .ply, .gltf, .glb, .3mf) or the scene as -F "
          "scene=@scene.json";
 }
 

@@ -17,7 +17,7 @@ namespace rasterd {
 
 /// Query parameters (HTTP) or --key=value options (CLI) that shape the default scene of a bare model:
 /// width, height, background, projection, fov, eye, target, up (vectors as "x,y,z", or an axis), antialias,
-/// point_size, and format (the model's, when its bytes do not tell it: obj, stl, ply, gltf or glb).
+/// point_size, and format (the model's, when its bytes do not tell it: obj, stl, ply, gltf, glb or 3mf).
 using Params = std::map<std::string, std::string, std::less<>>;
 
 /// A query parameter (HTTP) or option (CLI) that is wrong: unknown, or a value that is not what it takes.
@@ -81,7 +81,7 @@ bool is_scene_text(std::string_view body);
 bool explain_requested(const Params& params);
 
 /// A multipart upload with neither a "scene" nor a "model" part (`curl -F file=@bunny.stl`): a lone part,
-/// or else the one part whose file name ends in a model's extension (.obj, .stl, .ply, .gltf, .glb) or
+/// or else the one part whose file name ends in a model's extension (.obj, .stl, .ply, .gltf, .glb, .3mf) or
 /// .json, becomes the body (a scene by its bytes) or the model, whose file name then goes to
 /// `model_file_name` when given. Returns an error message naming the parts when no single part
 /// qualifies; "" otherwise (also when there was nothing to choose).

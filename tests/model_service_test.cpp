@@ -62,6 +62,23 @@ TEST(ModelService, EveryFormatAsARawBodyRendersTheSamePicture) {
   EXPECT_NE(flat, smooth);
 }
 
+// Issue 51: a 3MF (a slicer's ZIP package) as a raw body is a picture; a damaged one is a 422 that says what
+// is wrong with the package.
+TEST(ModelService, A3mfBodyRendersAndADamagedOneIsA422) {
+  const std::string path = "/usr/share/assimp/models/3MF/box.3mf";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  test::TestServer server;
+  const std::string bytes = test::read_file(path);
+  auto r = server.client().Post(kQuery, bytes, "model/3mf");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+  auto damaged = server.client().Post(kQuery, bytes.substr(0, bytes.size() / 2), "application/octet-stream");
+  ASSERT_TRUE(damaged);
+  EXPECT_EQ(damaged->status, 422) << damaged->body;
+  EXPECT_NE(problem_detail(damaged).find("3MF package"), std::string::npos) << damaged->body;
+}
+
 // Issue 42: each format stands on its own up axis (ModelFormatInfo::up): a post 1 unit long along Z and
 // 0.25 wide, seen from the right, is upright from an STL (CAD's and 3D printing's +Z) and lies down from an
 // OBJ (+Y); ?up= overrides the format's.

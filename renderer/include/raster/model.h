@@ -1,5 +1,5 @@
 // Models in the formats people bring: OBJ, STL (ASCII and binary), PLY (ASCII, binary little and big
-// endian) and glTF 2.0 (.gltf and .glb). Each reader turns bytes into a Mesh and never reads a file: the
+// endian), glTF 2.0 (.gltf and .glb) and 3MF. Each reader turns bytes into a Mesh and never reads a file: the
 // files a model names (an OBJ's MTL and textures, a glTF's buffers and images) come from `files`, by name.
 // Which format a model is in, and what each format is called, is decided by one table (model_formats()).
 #pragma once
@@ -17,14 +17,14 @@
 
 namespace raster {
 
-enum class ModelFormat : std::uint8_t { obj, stl, ply, gltf, glb };
+enum class ModelFormat : std::uint8_t { obj, stl, ply, gltf, glb, threemf };
 
 /// Everything rasterd knows about one model format, in one row, so that the service (its media types and
 /// ?format=), the CLI (a file's extension and the files beside it) and the scene reader (a model
 /// primitive's "format") decide alike, and a format is added in one place.
 struct ModelFormatInfo {
   ModelFormat format;  ///< the format this row describes
-  /// As the scene's "format" and ?format= take it: "obj", "stl", "ply", "gltf", "glb".
+  /// As the scene's "format" and ?format= take it: "obj", "stl", "ply", "gltf", "glb", "3mf".
   std::string_view name;
   std::span<const std::string_view> extensions;   ///< file name extensions naming it: lower case, no dot
   std::span<const std::string_view> media_types;  ///< Content-Types naming it: lower case, no parameters
@@ -42,16 +42,17 @@ struct ModelFormatInfo {
   /// The world direction the format's files take as up by their own convention, which a bare model's
   /// picture stands on (see model_scene): glTF's specification says +Y; OBJ (Wavefront, Maya and Blender's
   /// exporters) and PLY (the Stanford scans, the bunny among them) are +Y in practice; STL, the format of
-  /// CAD and 3D printing, is +Z, as slicers and CAD programs place a part on the build plate.
+  /// CAD and 3D printing, is +Z, as slicers and CAD programs place a part on the build plate; 3MF too (its
+  /// specification's build platform is the XY plane, +Z up).
   Vec3 up;
 };
 
 /// The table, one row per ModelFormat, in the enum's order.
 std::span<const ModelFormatInfo> model_formats();
-inline constexpr std::size_t kModelFormatCount = 5;  ///< rows of model_formats()
+inline constexpr std::size_t kModelFormatCount = 6;  ///< rows of model_formats()
 /// The row of `format`.
 const ModelFormatInfo& model_format(ModelFormat format);
-/// The rows' names, in the table's order ("obj", "stl", "ply", "gltf", "glb"): what a scene's "format"
+/// The rows' names, in the table's order ("obj", "stl", "ply", "gltf", "glb", "3mf"): what a scene's "format"
 /// may be, in the order its error lists them.
 const std::array<std::string_view, kModelFormatCount>& format_names();
 
@@ -60,12 +61,13 @@ const std::array<std::string_view, kModelFormatCount>& format_names();
 std::string_view format_name(ModelFormat format);
 /// The inverse of format_name (ASCII case ignored); nullopt for any other word.
 std::optional<ModelFormat> format_named(std::string_view name);
-/// "OBJ, STL (ASCII or binary), PLY (ASCII or binary) and glTF 2.0 (.gltf or .glb)": for errors.
+/// "OBJ, STL (ASCII or binary), PLY (ASCII or binary), glTF 2.0 (.gltf or .glb) and 3MF": for errors.
 std::string_view accepted_formats();
 
 /// The format `bytes` are in, by the bytes alone, or nullopt when they are in none. The tests are tried
-/// from the most particular to the loosest (glb, ply, stl, gltf, obj):
+/// from the most particular to the loosest (glb, 3mf, ply, stl, gltf, obj):
 /// - glb: the magic "glTF" and version 2;
+/// - 3mf: a ZIP archive's magic "PK\3\4";
 /// - ply: "ply" and a line break;
 /// - stl: "solid" followed by "facet" or "endsolid" (ASCII), else a size of exactly 84 + 50 x the count
 ///   the header gives (binary; some binary files start with "solid" too);
@@ -154,6 +156,22 @@ Mesh parse_gltf(std::string_view bytes, const Limits& limits = {}, const Uploads
 /// data: URIs, as file names without folders, percent-decoded, each once. For a program that has the
 /// model's folder at hand (the CLI) to gather them as uploads. Never throws: parse_gltf reports a bad model.
 std::vector<std::string> gltf_files(std::string_view bytes);
+
+/// 3MF (the 3D Manufacturing Format of slicers and CAD): the ZIP package's root model part, found through
+/// _rels/.rels, and the parts it names. Every <build> item is placed with its transform, and every object's
+/// <mesh> and <components> (with their transforms, nested up to 32 deep) within it, into one mesh in
+/// millimetres (the model's `unit` converted); a transform of negative determinant has its triangles'
+/// winding flipped back. Colours: a triangle's pid/p1 (or its object's pid/pindex) naming <basematerials>
+/// (displaycolor) or the materials extension's <colorgroup> gives the face its colour (p1's: a triangle
+/// whose corners differ is drawn in its first corner's). The production extension's p:path components are
+/// read from the parts they name, as Bambu Studio, Orca and PrusaSlicer write them. A model whose
+/// requiredextensions names one rasterd does not read (anything but core, materials and production) is
+/// SceneError(model) naming it. Normals are computed, creased at kModelCreaseDeg. The ZIP's directory is
+/// checked before anything is inflated: an entry's size beyond DEFLATE's 1032:1 or kZipMaxEntryBytes, or
+/// refused by the budget, costs nothing; XML nesting is bounded, a DOCTYPE refused, and the vertices and
+/// faces the build places are bounded as glTF's are (kModelBuiltPerByte, limits.max_model_faces). Errors
+/// name the part and the XML line. Nothing is read from disk.
+Mesh parse_3mf(std::string_view bytes, const Limits& limits = {});
 
 /// The format parse_model reads `bytes` as: sniff_model(bytes), else `hint` (from a file name or the
 /// request), else SceneError(model): the model is empty, or in no format rasterd reads.

@@ -187,16 +187,22 @@ struct Corner {
   Vec3 face;
   double angle = 0;
 };
+Vec3 world_of(const Mesh& mesh, std::span<const Vec3> world, std::uint32_t v) {
+  if (!world.empty()) return world[v];
+  const Vec3f& f = mesh.positions[v];
+  return Vec3{f.x + 0.0, f.y + 0.0, f.z + 0.0};
+}
+// The triangle's unit normal alone, as corner_of gives it: what marking the split vertices needs.
+Vec3 face_of(const Mesh& mesh, std::span<const Vec3> world, const std::array<std::uint32_t, 3>& tri) {
+  const Vec3 a = world_of(mesh, world, tri[0]);
+  return normalize(cross(world_of(mesh, world, tri[1]) - a, world_of(mesh, world, tri[2]) - a));
+}
 Corner corner_of(const Mesh& mesh, std::span<const Vec3> world, const std::array<std::uint32_t, 3>& tri,
                  int k) {
-  auto at = [&](std::uint32_t v) {
-    if (!world.empty()) return world[v];
-    const Vec3f& f = mesh.positions[v];
-    return Vec3{f.x + 0.0, f.y + 0.0, f.z + 0.0};
-  };
+  auto at = [&](std::uint32_t v) { return world_of(mesh, world, v); };
   const Vec3 p = at(tri[k]), a = at(tri[(k + 1) % 3]) - p, b = at(tri[(k + 2) % 3]) - p;
   Corner c;
-  c.face = normalize(cross(at(tri[1]) - at(tri[0]), at(tri[2]) - at(tri[0])));
+  c.face = face_of(mesh, world, tri);
   const double norms = length(a) * length(b);
   c.angle = norms > 0 && std::isfinite(norms) ? std::acos(std::clamp(dot(a, b) / norms, -1.0, 1.0)) : 0;
   return c;
@@ -270,10 +276,10 @@ bool mark_splits(const Mesh& mesh, std::span<const Vec3> world, const PodArray<V
                    if (own.add(StopMeter::kPrimitiveWork)) return;
                    const auto& tri = mesh.triangles[t];
                    if (needed && !(needed[tri[0]] | needed[tri[1]] | needed[tri[2]])) continue;
-                   const Corner c = corner_of(mesh, world, tri, 0);
-                   if (c.face == Vec3{}) continue;  // no area: no direction, part of no group
+                   const Vec3 face = face_of(mesh, world, tri);
+                   if (face == Vec3{}) continue;  // no area: no direction, part of no group
                    for (const std::uint32_t v : tri)
-                     if ((!needed || needed[v]) && !(dot(c.face, normals[v]) >= cos_half)) {
+                     if ((!needed || needed[v]) && !(dot(face, normals[v]) >= cos_half)) {
                        std::atomic_ref<std::uint8_t>(split[v]).store(1, std::memory_order_relaxed);
                        found = true;
                      }

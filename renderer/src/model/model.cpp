@@ -114,6 +114,12 @@ bool looks_like_ply(std::string_view bytes) {
   return bytes.starts_with("ply\n") || bytes.starts_with("ply\r\n");
 }
 
+// A ZIP archive's local header magic: 3MF is an OPC package, a ZIP archive (other archives are then told
+// apart by their content: no 3D model part).
+bool looks_like_3mf(std::string_view bytes) {
+  return bytes.starts_with(std::string_view("PK\x03\x04", 4));
+}
+
 bool looks_like_stl(std::string_view bytes) {
   return looks_like_ascii_stl(bytes) || looks_like_binary_stl(bytes);
 }
@@ -131,18 +137,24 @@ Mesh read_ply(std::string_view bytes, const Limits& limits, const Uploads&, std:
 Mesh read_gltf(std::string_view bytes, const Limits& limits, const Uploads& files, std::string_view) {
   return parse_gltf(bytes, limits, files);
 }
+Mesh read_3mf(std::string_view bytes, const Limits& limits, const Uploads&, std::string_view) {
+  return parse_3mf(bytes, limits);
+}
 std::vector<std::string> files_of_gltf(std::string_view bytes, std::string_view, const Uploads&) {
   return gltf_files(bytes);
 }
 
 constexpr std::string_view kObjExtensions[] = {"obj"}, kStlExtensions[] = {"stl"}, kPlyExtensions[] = {"ply"},
-                           kGltfExtensions[] = {"gltf"}, kGlbExtensions[] = {"glb"};
+                           kGltfExtensions[] = {"gltf"}, kGlbExtensions[] = {"glb"},
+                           k3mfExtensions[] = {"3mf"};
 constexpr std::string_view kObjTypes[] = {"model/obj", "text/x-obj"};
 constexpr std::string_view kStlTypes[] = {"model/stl", "model/x.stl-ascii", "model/x.stl-binary",
                                           "application/sla", "application/vnd.ms-pki.stl"};
 constexpr std::string_view kPlyTypes[] = {"model/ply", "application/ply"};
 constexpr std::string_view kGltfTypes[] = {"model/gltf+json"};
 constexpr std::string_view kGlbTypes[] = {"model/gltf-binary"};
+constexpr std::string_view k3mfTypes[] = {"model/3mf",
+                                          "application/vnd.ms-package.3dmanufacturing-3dmodel+xml"};
 
 constexpr Vec3 kYUp{0, 1, 0}, kZUp{0, 0, 1};
 constexpr ModelFormatInfo kFormats[] = {
@@ -152,6 +164,7 @@ constexpr ModelFormatInfo kFormats[] = {
     {ModelFormat::gltf, "gltf", kGltfExtensions, kGltfTypes, looks_like_gltf_json, read_gltf, files_of_gltf,
      1, kYUp},
     {ModelFormat::glb, "glb", kGlbExtensions, kGlbTypes, looks_like_glb, read_gltf, files_of_gltf, 1, kYUp},
+    {ModelFormat::threemf, "3mf", k3mfExtensions, k3mfTypes, looks_like_3mf, read_3mf, nullptr, 0, kZUp},
 };
 static_assert(std::size(kFormats) == kModelFormatCount);
 // model_format() finds a row by its enum value.
@@ -164,8 +177,8 @@ static_assert([] {
 // The order sniff_model tries the tests in: a test that is sure (a magic number) before a looser one that
 // could also match the same bytes (a binary STL's free header may start like JSON or like an OBJ
 // statement; "glTF" bytes are no text), and OBJ, whose test is a first word, last.
-constexpr ModelFormat kSniffOrder[] = {ModelFormat::glb, ModelFormat::ply, ModelFormat::stl,
-                                       ModelFormat::gltf, ModelFormat::obj};
+constexpr ModelFormat kSniffOrder[] = {ModelFormat::glb, ModelFormat::threemf, ModelFormat::ply,
+                                       ModelFormat::stl, ModelFormat::gltf,    ModelFormat::obj};
 
 // The media type of a Content-Type: before any ';', without trailing blanks, in lower case.
 std::string bare_media_type(std::string_view content_type) {
@@ -206,7 +219,7 @@ std::optional<ModelFormat> format_named(std::string_view name) {
 }
 
 std::string_view accepted_formats() {
-  return "OBJ, STL (ASCII or binary), PLY (ASCII or binary) and glTF 2.0 (.gltf or .glb)";
+  return "OBJ, STL (ASCII or binary), PLY (ASCII or binary), glTF 2.0 (.gltf or .glb) and 3MF";
 }
 
 std::optional<ModelFormat> sniff_model(std::string_view bytes) {
