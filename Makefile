@@ -27,12 +27,13 @@ test-asan:
 # Each libFuzzer target for FUZZ_SECONDS (default 600), seeded from examples/ and fuzz/corpus/.
 # Findings land in fuzz-out/; each one becomes a regression test.
 FUZZ_SECONDS ?= 600
-FUZZ_TARGETS ?= scene_fuzzer obj_fuzzer texture_fuzzer stl_fuzzer ply_fuzzer gltf_fuzzer
+FUZZ_TARGETS ?= scene_fuzzer obj_fuzzer texture_fuzzer stl_fuzzer ply_fuzzer gltf_fuzzer 3mf_fuzzer
 # The model readers also start from the real files of Debian's assimp-testmodels (read there, not copied).
 ASSIMP_MODELS := /usr/share/assimp/models
 FUZZ_SEEDS_stl_fuzzer := $(ASSIMP_MODELS)/STL
 FUZZ_SEEDS_ply_fuzzer := $(ASSIMP_MODELS)/PLY
 FUZZ_SEEDS_gltf_fuzzer := $(ASSIMP_MODELS)/glTF2 $(ASSIMP_MODELS)/glTF
+FUZZ_SEEDS_3mf_fuzzer := $(ASSIMP_MODELS)/3MF
 fuzz:
 	@scripts/install-deps fuzz
 	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRASTERD_BUILD_FUZZ=ON \
@@ -43,7 +44,7 @@ fuzz:
 	  echo "== $$t for $(FUZZ_SECONDS) s"; \
 	  build-fuzz/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
 	    -artifact_prefix=fuzz-out/$$t/ -print_final_stats=1 $$( [ -f fuzz/$${t%_fuzzer}.dict ] && echo -dict=fuzz/$${t%_fuzzer}.dict ) fuzz-out/$$t/corpus fuzz/corpus/$$t \
-	    $$(case $$t in stl_fuzzer) echo $(FUZZ_SEEDS_stl_fuzzer);; ply_fuzzer) echo $(FUZZ_SEEDS_ply_fuzzer);; gltf_fuzzer) echo $(FUZZ_SEEDS_gltf_fuzzer);; esac) || exit 1; \
+	    $$(case $$t in stl_fuzzer) echo $(FUZZ_SEEDS_stl_fuzzer);; ply_fuzzer) echo $(FUZZ_SEEDS_ply_fuzzer);; gltf_fuzzer) echo $(FUZZ_SEEDS_gltf_fuzzer);; 3mf_fuzzer) echo $(FUZZ_SEEDS_3mf_fuzzer);; esac) || exit 1; \
 	done
 
 bench-build: build

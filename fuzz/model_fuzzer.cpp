@@ -1,4 +1,4 @@
-// libFuzzer target for one model reader (MODEL_FORMAT: stl, ply or gltf; built once per reader): bytes ->
+// libFuzzer target for one model reader (MODEL_FORMAT: stl, ply, gltf or 3mf; built once per reader): bytes ->
 // mesh -> render through the default camera -> PNG, on a small image. For glTF the input may hold a NUL
 // byte: what follows it is the uploaded file "b.bin", which a document's buffer URI can name, and the
 // uploads hold a 2x2 PNG as "t.png" for an image URI. Any crash, sanitizer report, hang, or exception other
@@ -28,6 +28,9 @@ raster::Mesh read(std::string_view input, const raster::Limits& limits, const ra
 #elif defined(MODEL_PLY)
   (void)files;
   return raster::parse_ply(input, limits);
+#elif defined(MODEL_3MF)
+  (void)files;
+  return raster::parse_3mf(input, limits);
 #else
   return raster::parse_gltf(input, limits, files);
 #endif
@@ -42,7 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.max_texture_pixels = 64;
   std::string_view input(reinterpret_cast<const char*>(data), size);
   raster::Uploads files{{"t.png", kPng}};
-#if !defined(MODEL_STL) && !defined(MODEL_PLY)
+#if !defined(MODEL_STL) && !defined(MODEL_PLY) && !defined(MODEL_3MF)
   if (const std::size_t nul = input.rfind('\0');
       nul != std::string_view::npos && !input.starts_with("glTF")) {
     files["b.bin"] = std::string(input.substr(nul + 1));
