@@ -164,7 +164,7 @@ __attribute__((target_clones("avx2", "default"))) void untransformed_extent(
   for (const Vec3f& p : positions) s.add({p.x + 0.0, p.y + 0.0, p.z + 0.0}, b, e);
 }
 
-// `visit(lanes, point)` over every finite world position of the scene's meshes: a mesh under the identity
+// `visit(point)` over every finite world position of the scene's meshes: a mesh under the identity
 // through `untransformed` (one vectorised pass over its positions), the others point by point.
 template <typename Untransformed, typename Visit>
 void each_world_point(const Scene& scene, Untransformed&& untransformed, Visit&& visit) {
