@@ -1,5 +1,5 @@
-// libFuzzer target for one model reader (MODEL_FORMAT: stl, ply, gltf or 3mf; built once per reader): bytes ->
-// mesh -> render through the default camera -> PNG, on a small image. For glTF the input may hold a NUL
+// libFuzzer target for one model reader (MODEL_FORMAT: stl, ply, gltf or 3mf; built once per reader): bytes
+// -> mesh -> render through the default camera -> PNG, on a small image. For glTF the input may hold a NUL
 // byte: what follows it is the uploaded file "b.bin", which a document's buffer URI can name, and the
 // uploads hold a 2x2 PNG as "t.png" for an image URI. Any crash, sanitizer report, hang, or exception other
 // than SceneError is a finding.
