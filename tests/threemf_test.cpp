@@ -272,6 +272,18 @@ TEST(ThreeMf, ErrorsNameTheirPartAndLine) {
             std::string::npos);
 }
 
+TEST(ThreeMf, ComponentsThatNameOthersManyTimesAreBounded) {
+  // Object k holds object k - 1 twice, 30 levels of empty objects: 2^30 placements were it not bounded.
+  std::string resources = "<object id=\"1\"><components/></object>";
+  for (int k = 2; k <= 31; ++k)
+    resources += "<object id=\"" + std::to_string(k) + "\"><components><component objectid=\"" +
+                 std::to_string(k - 1) + "\"/><component objectid=\"" + std::to_string(k - 1) +
+                 "\"/></components></object>";
+  const std::string model =
+      kModelOpen + "><resources>" + resources + "</resources><build><item objectid=\"31\"/></build></model>";
+  EXPECT_NE(error_of(package(model)).find("places more than"), std::string::npos);
+}
+
 TEST(ThreeMf, AZipBombIsRefusedFromItsDirectory) {
   // A model part that says it inflates to 100 GB from a few bytes: refused before anything is inflated (no
   // 100 GB is asked of anyone), and so is one within DEFLATE's ratio that is over the entry limit.

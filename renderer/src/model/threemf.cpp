@@ -385,6 +385,11 @@ class Package {
       throw SceneError(ErrorKind::model, "3MF part " + in.name + ": components nest more than " +
                                              std::to_string(kMaxComponentDepth) +
                                              " deep (or refer to themselves)");
+    // Components can name an object twice at every level: 32 levels of that is 2^32 placements even of
+    // empty objects, so placements are bounded as the vertices they build are.
+    if (++placements_ > allowed_)
+      throw SceneError(ErrorKind::limit, "the 3MF build places more than " + std::to_string(allowed_) +
+                                             " objects and components (components naming others many times)");
     const Part& from = c.path.empty() ? in : part(c.path);
     const auto it = from.objects.find(c.object);
     if (it == from.objects.end())
@@ -444,6 +449,7 @@ class Package {
   detail::ZipArchive zip_;
   const Limits& limits_;
   std::uint64_t allowed_;
+  std::uint64_t placements_ = 0;
   double to_mm_ = 1;
   std::map<std::string, Part> parts_;
   Mesh mesh_;
