@@ -206,6 +206,26 @@ class PartReader {
   void start(const char* name, const char** attrs);
   void start_model(const char** attrs);
 
+  // A new resource's id: objects, base materials and colour groups share one id space within a part.
+  std::uint32_t resource_id(const char** attrs, std::string_view element) const {
+    const std::uint32_t id = required_index(attrs, "id", element);
+    if (part_.objects.count(id) || part_.colours.count(id))
+      fail("two resources have the id " + std::to_string(id));
+    return id;
+  }
+  // <basematerials> and <m:colorgroup>: the colours their entries add, by index.
+  void start_group(const char** attrs, std::string_view element) {
+    group_ = &part_.colours[resource_id(attrs, element)], group_depth_ = depth_;
+  }
+  // A group's entry (<base displaycolor>, <m:color color>): its colour, in order.
+  void add_colour(const char** attrs, const char* key, std::string_view element, std::string_view group) {
+    if (!group_) fail("a <" + std::string(element) + "> outside <" + std::string(group) + ">");
+    const char* c = attribute(attrs, key);
+    const auto colour = c ? colour_of(c) : std::nullopt;
+    if (!colour) fail("a <" + std::string(element) + "> needs a " + key + " as #RRGGBB or #RRGGBBAA");
+    group_->push_back(*colour);
+  }
+
   const Limits& limits_;
   XML_Parser parser_ = nullptr;
   std::exception_ptr error_;
@@ -263,10 +283,7 @@ void PartReader::start(const char* name, const char** attrs) {
                          [] { return std::string("the 3MF model's triangles"); });
       object_->triangles.push_back(t);
     } else if (local == "object") {
-      const std::uint32_t id = required_index(attrs, "id", "object");
-      if (part_.objects.count(id) || part_.colours.count(id))
-        fail("two resources have the id " + std::to_string(id));
-      object_ = &part_.objects[id], object_depth_ = depth_;
+      object_ = &part_.objects[resource_id(attrs, local)], object_depth_ = depth_;
       if (const char* pid = attribute(attrs, "pid")) object_->pid = index(pid, "pid");
       if (const char* pindex = attribute(attrs, "pindex")) object_->pindex = index(pindex, "pindex");
     } else if (local == "mesh") {
@@ -279,38 +296,23 @@ void PartReader::start(const char* name, const char** attrs) {
       Component c;
       c.object = required_index(attrs, "objectid", local);
       if (const char* t = attribute(attrs, "transform")) c.transform = transform(t);
-      const std::string path_key = std::string(kProductionNs) + "|path";
-      if (const char* path = attribute(attrs, path_key)) c.path = path;
+      static const std::string kPath = std::string(kProductionNs) + "|path";
+      if (const char* path = attribute(attrs, kPath)) c.path = path;
       (item ? part_.build : object_->components).push_back(std::move(c));
     } else if (local == "build") {
       in_build_ = true;
     } else if (local == "basematerials") {
-      const std::uint32_t id = required_index(attrs, "id", "basematerials");
-      if (part_.objects.count(id) || part_.colours.count(id))
-        fail("two resources have the id " + std::to_string(id));
-      group_ = &part_.colours[id], group_depth_ = depth_;
+      start_group(attrs, local);
     } else if (local == "base") {
-      if (!group_) fail("a <base> outside <basematerials>");
-      const char* c = attribute(attrs, "displaycolor");
-      const auto colour = c ? colour_of(c) : std::nullopt;
-      if (!colour) fail("a <base> needs a displaycolor as #RRGGBB or #RRGGBBAA");
-      group_->push_back(*colour);
+      add_colour(attrs, "displaycolor", local, "basematerials");
     } else if (local == "model") {
       start_model(attrs);
     }
   } else if (ns == kMaterialNs) {
-    if (local == "colorgroup") {
-      const std::uint32_t id = required_index(attrs, "id", "colorgroup");
-      if (part_.objects.count(id) || part_.colours.count(id))
-        fail("two resources have the id " + std::to_string(id));
-      group_ = &part_.colours[id], group_depth_ = depth_;
-    } else if (local == "color") {
-      if (!group_) fail("a <color> outside a <colorgroup>");
-      const char* c = attribute(attrs, "color");
-      const auto colour = c ? colour_of(c) : std::nullopt;
-      if (!colour) fail("a <color> needs a color as #RRGGBB or #RRGGBBAA");
-      group_->push_back(*colour);
-    }
+    if (local == "colorgroup")
+      start_group(attrs, local);
+    else if (local == "color")
+      add_colour(attrs, "color", local, "colorgroup");
   }
 }
 
