@@ -23,6 +23,7 @@
 #endif
 
 #include "base/grid.h"
+#include "base/masks.h"
 #include "base/stop.h"
 #include "coverage/area_share.h"
 #include "setup/setup.h"
@@ -46,6 +47,25 @@ struct Block {
   double area = 1;  ///< the triangle's doubled area in 1/256 px units: weights are E_k / area
 };
 
+/// Every block of the fully covered `clip`, from `first` (the block at the clip's block-grid origin, exact
+/// values) on: each with the mask of its pixels inside the clip and exactly the edge values it would have had
+/// (whole multiples of a block's step), given to `visit(const Block&)` row by row.
+template <class Visit>
+[[gnu::always_inline]] inline void for_each_block(Rect clip, const Block& first, Visit&& visit) {
+  Block b = first;
+  for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
+    const std::uint64_t rows = row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0));
+    for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock) {
+      b.x0 = x0, b.y0 = y0;
+      b.mask = rows & column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
+      const double bx = (x0 - first.x0) / kBlock, by = (y0 - first.y0) / kBlock;  // exact steps
+      for (int k = 0; k < 3; ++k)
+        b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
+      visit(b);
+    }
+  }
+}
+
 /// How the partial blocks' masks are computed: eight lanes of a row at a time (SSE2 or AVX2, int32 lanes
 /// relative to the block, only for the edges that cross it) or one pixel at a time in the edges' own integer
 /// type. All give the same mask; tests hold them to it.
@@ -66,17 +86,6 @@ inline double to_double(const Wide& v) {
 
 inline std::int64_t floor_div(std::int64_t n, std::int64_t d) {
   return n / d - ((n % d != 0) && (n < 0));
-}
-
-/// Mask bits of the columns [c0, c1) of every row (0 <= c0 <= c1 <= 8).
-inline std::uint64_t column_mask(int c0, int c1) {
-  const std::uint64_t row = ((1u << c1) - 1) & ~((1u << c0) - 1);
-  return row * 0x0101010101010101ull;
-}
-/// Mask bits of the rows [r0, r1).
-inline std::uint64_t row_mask(int r0, int r1) {
-  const std::uint64_t below = r1 >= 8 ? ~0ull : (1ull << (8 * r1)) - 1;
-  return below & ~((1ull << (8 * r0)) - 1);
 }
 
 /// Whether edge values `at_origin` (at the sample point of pixel (bx, by), the clip's block-grid origin)

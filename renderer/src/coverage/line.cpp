@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "base/wide.h"
-#include "shade/pixel.h"
+#include "framebuffer/pixel.h"
 
 namespace raster::detail {
 namespace {

@@ -4,7 +4,7 @@
 #include <bit>
 #include <cstring>
 
-#include "shade/pixel.h"
+#include "framebuffer/pixel.h"
 
 namespace raster::detail {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "geometry/mesh_view.h"
 #include "geometry/normals.h"
-#include "shade/light.h"
+#include "plan/light.h"
 
 namespace raster::detail {
 namespace {
@@ -85,9 +85,7 @@ std::uint32_t TriangleJob::vertices(std::size_t t, const Vec3& face, bool back, 
       !with.has(Varying::normal)) {  // flat: once per face, lit from the side seen, at its centroid
     const Vec3 n = normalize(back ? face * -1.0 : face);
     const Vec3 c = (view.world_at(tri[0]) + view.world_at(tri[1]) + view.world_at(tri[2])) * (1.0 / 3);
-    const float normal[3] = {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
-    const float centre[3] = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
-    light_lanes<3>(setup.calls[call].lights, normal, centre, shade);
+    light_face(setup.calls[call].lights, n, c, shade);
   }
   std::uint32_t triangle_call = call;
   std::int32_t texture = -1;

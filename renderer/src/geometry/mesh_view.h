@@ -10,10 +10,10 @@
 
 #include "base/memory.h"
 #include "base/parallel.h"
+#include "base/srgb.h"  // to_byte: a line's endpoint colours become bytes as pixels do
 #include "base/vecmath.h"
 #include "geometry/geometry.h"
 #include "setup/batch.h"
-#include "shade/pixel.h"  // to_byte: a line's endpoint colours become bytes as pixels do
 
 namespace raster::detail::mesh3d {
 

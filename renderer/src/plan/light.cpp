@@ -1,5 +1,5 @@
+#include "plan/light.h"
 #include "base/vecmath.h"
-#include "plan/view.h"
 
 namespace raster::detail {
 

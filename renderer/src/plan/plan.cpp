@@ -9,8 +9,8 @@
 
 #include "base/budget_ask.h"
 #include "base/grid.h"
+#include "base/mip_chain.h"
 #include "plan/view.h"
-#include "shade/texture.h"
 
 namespace raster {
 

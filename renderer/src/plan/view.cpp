@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "base/vecmath.h"
+#include "plan/light.h"
 
 namespace raster::detail {
 namespace {

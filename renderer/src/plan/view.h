@@ -1,5 +1,5 @@
 // View: the scene's camera, with whatever it leaves out fitted to the 3D content -> ViewPlan (eye, target,
-// up, near and far, world_to_clip), and the scene's lights placed in world space for that view.
+// up, near and far, world_to_clip). The view's lights are placed by plan/light.h.
 #pragma once
 
 #include <vector>
@@ -19,10 +19,5 @@ struct ViewBasis {
 /// Fits the camera to the content, checks it has a view direction and an up (SceneError(invalid) naming
 /// the camera field otherwise), builds the matrices and places the lights. `aspect`: width / height.
 ViewPlan resolve_view(const Scene& scene, double aspect);
-
-/// The lights (the scene's, or default_lights() when it has none) in world space for a camera at `eye`
-/// with `basis`: camera-space directions and positions turned with the view, colour x intensity folded.
-std::vector<LightPlan> place_lights(const std::vector<Light>& lights, const Vec3& eye,
-                                    const ViewBasis& basis);
 
 }  // namespace raster::detail

@@ -12,12 +12,12 @@
 
 #include "base/grid.h"
 #include "base/memory.h"
+#include "base/mip_chain.h"
 #include "base/stop.h"
 #include "base/wide.h"
+#include "plan/light.h"
 #include "raster/plan.h"
 #include "raster/scene.h"
-#include "shade/light.h"
-#include "shade/texture.h"
 
 namespace raster::detail {
 

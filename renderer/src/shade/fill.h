@@ -18,10 +18,17 @@
 #include <immintrin.h>
 #endif
 
+#include "base/srgb.h"
 #include "coverage/coverage.h"
-#include "shade/pixel.h"
+#include "framebuffer/pixel.h"
 
 namespace raster::detail {
+
+/// floor(x) for |x| < 2^62, without a library call.
+inline std::int64_t floor_to_int(double x) {
+  const auto i = static_cast<std::int64_t>(x);  // toward zero
+  return i - (x < static_cast<double>(i));
+}
 
 /// One colour over a tile's pixels (the surface's colour storage), stored or blended.
 template <int C>
@@ -241,20 +248,7 @@ class ColorPlanes {
   /// Every pixel of `clip` covered; `first` is the block at the clip's block-grid origin (exact values):
   /// block by block, each with exactly the values it would have had.
   void rect(Rect clip, const Block& first) const {
-    Block b = first;
-    for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
-      const std::uint64_t rows =
-          coverage_detail::row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0));
-      for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock) {
-        b.x0 = x0, b.y0 = y0;
-        b.mask =
-            rows & coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
-        const double bx = (x0 - first.x0) / kBlock, by = (y0 - first.y0) / kBlock;  // exact steps
-        for (int k = 0; k < 3; ++k)
-          b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
-        block(b);
-      }
-    }
+    for_each_block(clip, first, [&](const Block& b) { block(b); });
   }
 
  private:

@@ -9,11 +9,11 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "base/lanes.h"
+#include "plan/light.h"
 #include "raster/image.h"
 #include "raster/plan.h"
 #include "setup/setup.h"
-#include "shade/lanes.h"
-#include "shade/light.h"
 #include "shade/texture.h"
 
 namespace raster::detail {
@@ -120,7 +120,7 @@ class PerspectiveColor {
       const double lod =
           mip_lod(lane(du_dx, i), lane(dv_dx, i), lane(du_dy, i), lane(dv_dy, i), base.width, base.height);
       float t[4];
-      chain.sample(lane(u, i), lane(v, i), lod, t);
+      detail::sample(chain, lane(u, i), lane(v, i), lod, t);
       for (int c = 0; c < 4; ++c) set_lane(texel[c], i, t[c]);
     }
   }

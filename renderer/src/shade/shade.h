@@ -12,14 +12,14 @@
 #include <cstring>
 #include <memory>
 
+#include "base/lanes.h"
 #include "coverage/coverage.h"
 #include "raster/image.h"
 #include "raster/scene.h"
 #include "setup/setup.h"
 #include "shade/fill.h"
-#include "shade/lanes.h"
 #include "shade/perspective.h"
-#include "shade/pixel.h"
+#include "shade/resolve.h"
 
 namespace raster::detail {
 
@@ -83,31 +83,14 @@ class TriangleShader {
       for (int y = clip.y0; y < clip.y1; ++y)
         kernel_.fill.run(surface_.pixel<C>(clip.x0, y), clip.x1 - clip.x0);
       if (msaa_) {  // every sample of these pixels now holds the colour: one value each again
-        for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock)
-          for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock)
-            surface_.template one_colour<C>(
-                x0, y0,
-                coverage_detail::row_mask(std::max(0, clip.y0 - y0), std::min(kBlock, clip.y1 - y0)) &
-                    coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0)));
+        for_each_block(clip, first,
+                       [&](const Block& b) { surface_.template one_colour<C>(b.x0, b.y0, b.mask); });
         *surface_.shaded += std::int64_t{clip.x1 - clip.x0} * (clip.y1 - clip.y0);
       }
       return;
     }
     if (kind_ == Kind::smooth && !union_ && !msaa_) return kernel_.planes.rect(clip, first);
-    Block b = first;
-    for (int y0 = first.y0; y0 < clip.y1; y0 += kBlock) {
-      const int r0 = std::max(0, clip.y0 - y0), r1 = std::min(kBlock, clip.y1 - y0);
-      const std::uint64_t rows = coverage_detail::row_mask(r0, r1);
-      for (int x0 = first.x0; x0 < clip.x1; x0 += kBlock) {
-        b.x0 = x0, b.y0 = y0;
-        b.mask =
-            rows & coverage_detail::column_mask(std::max(0, clip.x0 - x0), std::min(kBlock, clip.x1 - x0));
-        const double bx = (x0 - first.x0) / kBlock, by = (y0 - first.y0) / kBlock;  // exact steps
-        for (int k = 0; k < 3; ++k)
-          b.e[k] = first.e[k] + bx * (kBlock * first.dx[k]) + by * (kBlock * first.dy[k]);
-        (*this)(b);
-      }
-    }
+    for_each_block(clip, first, [&](const Block& b) { (*this)(b); });
   }
 
   void operator()(const Block& b) {

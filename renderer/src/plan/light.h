@@ -1,18 +1,26 @@
-// Light: a surface's unit normal and world position + the view's resolved lights (ViewPlan::lights) -> the
-// Lambert factor per colour channel. The one lighting routine, written over lanes (lanes.h): the triangle
-// shader calls it for eight pixels at a time (smooth shading), and geometry for one face at a time (flat
-// shading), so a face lit either way is lit by the same arithmetic. Specular materials (scene.h: Material)
-// add specular_lanes, per pixel only, taken by the draw calls whose plan says so.
+// Light, the one lighting module: the scene's lights placed in world space for the view (place_lights,
+// light.cpp, giving ViewPlan::lights), the same lights as shading reads them (LightRig, which the plan's
+// draw calls carry), and their evaluation: Lambert over lanes (base/lanes.h), called by geometry once per
+// face (light_face, flat shading) and by shade for eight pixels at a time (smooth shading), so a face lit
+// either way is lit by the same arithmetic; specular materials (scene.h: Material) add specular_lanes, per
+// pixel only, taken by the draw calls whose plan says so.
 #pragma once
 
 #include <span>
 #include <vector>
 
+#include "base/lanes.h"
+#include "base/mip_chain.h"
+#include "plan/view.h"
 #include "raster/plan.h"
-#include "shade/lanes.h"
-#include "shade/texture.h"
+#include "raster/scene.h"
 
 namespace raster::detail {
+
+/// The lights (the scene's, or default_lights() when it has none) in world space for a camera at `eye`
+/// with `basis`: camera-space directions and positions turned with the view, colour x intensity folded.
+std::vector<LightPlan> place_lights(const std::vector<Light>& lights, const Vec3& eye,
+                                    const ViewBasis& basis);
 
 /// The view's lights as shading reads them: floats, ambient terms summed once, and the lights that depend on
 /// the surface (directional, point) in the scene's order.
@@ -73,6 +81,15 @@ template <int channels, class F>
     }
     for (int c = 0; c < channels; ++c) out[c] += s.rgb[c] * f;
   }
+}
+
+/// Flat shading: the Lambert factor per colour channel of a face whose unit world normal `n` points to the
+/// side seen, lit at its centroid `centre` (world).
+inline void light_face(const LightRig& rig, const Vec3& n, const Vec3& centre, float (&out)[3]) {
+  const float normal[3] = {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
+  const float at[3] = {static_cast<float>(centre.x), static_cast<float>(centre.y),
+                       static_cast<float>(centre.z)};
+  light_lanes<3>(rig, normal, at, out);
 }
 
 /// A specular material (scene.h: Material) as shading reads it, with the view it is seen from: one per draw
