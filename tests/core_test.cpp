@@ -621,19 +621,24 @@ TEST(Core, CompressedSamplesGiveTheBytesOfASampleEach) {
     for (std::size_t i = 0; i < m.positions.size(); i += 7) m.points.push_back(static_cast<std::uint32_t>(i));
     scenes.emplace_back(c.name, c.scene);
   }
-  int compared = 0;
-  for (auto& [name, scene] : scenes)
+  for (auto& [name, scene] : scenes) {
+    scene.antialias = raster::Antialias::none;
+    const raster::Image aliased = render_at(scene, 64, 1, false);
     for (int samples : {4, 8, 16}) {
       scene.antialias = test::multisample(samples);
       const raster::Image compressed = render_at(scene, 64, 1, false);
+      // The 2D scenes' edges cross their pixels, so some pixel's samples differ (the picture is not the
+      // aliased one): the compressed storage expanded pixels and resolved them, and the comparison below is
+      // of that, not of two one-colour buffers. (A 3D case may fill the image edge to edge.)
+      if (name.starts_with("mixed") || name.starts_with("large")) {
+        ASSERT_NE(compressed.pixels, aliased.pixels) << name << ", " << samples << " samples";
+      }
       for (int tile : {16, 64})
-        for (int threads : {1, 3}) {
+        for (int threads : {1, 3})
           ASSERT_EQ(render_at(scene, tile, threads, true).pixels, compressed.pixels)
               << name << ", " << samples << " samples, tile " << tile << ", " << threads << " threads";
-          ++compared;
-        }
     }
-  EXPECT_EQ(compared, 4 * 3 * static_cast<int>(scenes.size()));
+  }
 }
 
 }  // namespace

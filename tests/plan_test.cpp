@@ -375,3 +375,30 @@ TEST(Plan, EachMeshGetsTheVaryingsItsShadingReads) {
 }
 
 }  // namespace
+
+namespace {
+
+// The work estimate counts every sample plane the render draws: a 3D "area" render is drawn at 8 samples
+// (area gives way to samples with depth), so its estimate is the 8-sample one, and the thread count follows
+// from it. (It was once the 1-sample estimate, 8x too small.)
+TEST(Plan, AThreeDAreaRenderIsEstimatedAtTheSamplesItDraws) {
+  raster::Mesh quad;
+  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+  quad.colors = {test::kRed};
+  raster::Scene s = one_mesh_scene(quad);
+  s.width = s.height = 512;
+  const raster::RenderPlan aliased = plan_of(s, 4);
+  s.antialias = raster::Antialias::area;
+  const raster::RenderPlan area = plan_of(s, 4);
+  s.antialias = raster::Antialias::msaa8;
+  const raster::RenderPlan eight = plan_of(s, 4);
+  EXPECT_EQ(area.coverage, raster::Coverage::samples);
+  EXPECT_EQ(area.samples, 8);
+  EXPECT_GT(aliased.work, 0);
+  EXPECT_EQ(area.work, 8 * aliased.work);
+  EXPECT_EQ(area.work, eight.work);
+  EXPECT_EQ(area.threads, eight.threads);
+}
+
+}  // namespace

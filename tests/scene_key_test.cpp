@@ -94,12 +94,14 @@ TEST(SceneKey, ChangingAnyFieldOfAnyStructChangesTheCanonicalBytes) {
 }
 
 TEST(SceneKey, AVectorsLengthIsPartOfItsBytes) {
-  // [a][bc] and [ab][c]: the same numbers split differently between two vectors.
+  // [a][bc] and [ab][c]: the same colours split differently between two vectors that lie side by side in
+  // the bytes (Mesh::colors, then Mesh::face_colors), so only their lengths tell the scenes apart.
   Scene a = one_of_everything(), b = a;
-  a.points = {{1, 2}};
-  a.meshes[0].positions = {{3, 4, 5}, {6, 7, 8}};
-  b.points = {{1, 2}, {3, 4}};
-  b.meshes[0].positions = {{5, 6, 7}};
+  const raster::Rgba8 c1{1, 2, 3, 4}, c2{5, 6, 7, 8}, c3{9, 10, 11, 12};
+  a.meshes[0].colors = {c1};
+  a.meshes[0].face_colors = {c2, c3};
+  b.meshes[0].colors = {c1, c2};
+  b.meshes[0].face_colors = {c3};
   EXPECT_NE(canonical(a), canonical(b));
 }
 

@@ -397,11 +397,12 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   out.width = scene.width;
   out.height = scene.height;
   Tally tally = plan_draws(scene, out);
-  out.work = tally.work * sample_count(scene.antialias);  // every sample plane is drawn
-  const bool alpha = !scene.background.is_opaque();       // drawing over an opaque background stays opaque
+  const bool alpha = !scene.background.is_opaque();  // drawing over an opaque background stays opaque
   out.format = tally.grey ? (alpha ? PixelFormat::grey_alpha8 : PixelFormat::grey8)
                           : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
   plan_coverage(scene.antialias, out, tally);
+  // Every sample plane is drawn: after the coverage decision, which gives a 3D "area" render 8 samples.
+  out.work = tally.work * out.samples;
   if (tally.any_3d) {
     out.depth_buffer = true;
     out.view = detail::resolve_view(scene, static_cast<double>(scene.width) / scene.height);
