@@ -302,7 +302,7 @@ TEST(Plan, VaryingsLayOutRowsInEnumOrder) {
   EXPECT_EQ(l.vertex_offset[static_cast<int>(Varying::position)], 9);
   EXPECT_EQ(l.record_at(Varying::color, 1), 14);
   EXPECT_EQ(l.record_at(Varying::position, 2), 28 + 9);
-  // The description is two bits a row: the three modes of every DrawPlan stay as small as the booleans
+  // The description is two bits a row: the four modes of every DrawPlan stay as small as the booleans
   // they replaced (a 2D scene has a DrawPlan per primitive).
   EXPECT_LE(sizeof(Varyings), 2u);
 }

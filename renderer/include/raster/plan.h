@@ -38,7 +38,7 @@ enum class Interpolation : std::uint8_t {
 };
 
 /// The varyings of a primitive, decided by the plan: which rows exist and how each is interpolated, two bits
-/// a row (0: absent, else 1 + Interpolation), so that the three modes of every DrawPlan stay small (a scene
+/// a row (0: absent, else 1 + Interpolation), so that the four modes of every DrawPlan stay small (a scene
 /// of 100,000 triangles has 100,000 of them). Setup lays it out once per draw call (VaryingLayout).
 struct Varyings {
   std::uint16_t rows = 1;  ///< bits 2i..2i+1: row i; the default is a flat colour alone
@@ -175,7 +175,7 @@ struct MemoryPlan {
   std::int64_t color_bytes = 0;   ///< the colour buffer, which is also the output Image
   std::int64_t depth_bytes = 0;   ///< depth: one tile's per thread (4 bytes a sample); 0 for 2D scenes
   std::int64_t sample_bytes = 0;  ///< multisampling: each thread's tile of colour per sample, plus a bit per
-                                  ///< pixel saying whether its samples differ; 0 unless antialias > 1
+                                  ///< pixel saying whether its samples differ; 0 unless the plan multisamples
   std::int64_t tile_bytes = 0;    ///< each thread's tile of colour, where a tile is drawn before it is copied
                                   ///< out; 0 when tiles draw in place (RenderPlan::tiles_in_place)
   std::int64_t coverage_bytes = 0;  ///< area coverage: each thread's tile of summed coverage and colour (5

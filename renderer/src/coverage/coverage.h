@@ -230,7 +230,7 @@ std::uint64_t partial_mask_lanes(const std::int64_t (&e)[N], const std::int64_t 
   return mask;
 }
 
-/// The top-left bias folded into c (1 for edges that are neither top nor left, see setup.cpp): area
+/// The top-left bias folded into c (1 for edges that are neither top nor left, see setup.h): area
 /// coverage measures the triangle itself, so it adds the bias back.
 template <typename C>
 bool biased(const C& a, const C& b) {

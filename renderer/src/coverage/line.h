@@ -1,6 +1,7 @@
 // Line: 1-px line records -> pixels of one tile, by clipped, symmetric Bresenham (the rule GPUs use for
 // aliased lines: one pixel per column or row of the major axis, in the row nearest the exact line).
-// Wide and anti-aliased lines are not drawn here: geometry turns them into triangle records.
+// Wide and anti-aliased lines are not drawn here: setup makes their rectangles four-edge quad records (or
+// two triangle records) for the block walker.
 #pragma once
 
 #include "base/stop.h"

@@ -13,8 +13,8 @@
 namespace raster::detail {
 
 /// Allocates exactly plan.memory.color_bytes and fills it with the background, reserving room for the PNG
-/// filter bytes. Returns early, incomplete, once `meter` says the
-/// render must stop (it is asked every megabyte).
+/// filter bytes. Returns early, incomplete, once `meter` says the render must stop (it is asked every
+/// megabyte).
 Image make_color_buffer(const RenderPlan& plan, Rgba8 background, StopMeter& meter);
 
 }  // namespace raster::detail

@@ -1,7 +1,9 @@
-// Shade: covered blocks (coverage.h) + a record's attributes -> pixels. With pixel.h (how a colour
-// becomes bytes), fill.h (the 2D colour kernels) and light.h (Lambert), where every pixel's colour is
-// computed: interpolation of the attribute planes, perspective correction, lighting per pixel, textures,
-// depth and samples. (Flat-lit faces get their one colour from light.h in geometry, per face.)
+// Shade: covered blocks (coverage.h) + a triangle or quad record's attributes -> pixels. With fill.h (the
+// 2D colour kernels), perspective.h (3D varyings) and plan/light.h (Lambert, specular), where a triangle's
+// colour per pixel is computed: interpolation of the attribute planes, perspective correction, lighting per
+// pixel, textures, depth and samples; framebuffer/pixel.h writes it. (Flat-lit faces get their one colour
+// from plan/light.h in geometry, per face; 1-px lines and points are written by coverage/line.cpp and
+// point.cpp in their records' colours.)
 // Templated on the framebuffer's channel count so the per-pixel code has no format branches.
 #pragma once
 
