@@ -30,6 +30,13 @@ inline constexpr int kVaryingCount = 6;
 /// Floats of each Varying, in enum order.
 inline constexpr std::uint8_t kVaryingWidth[kVaryingCount] = {4, 3, 2, 3, 1, 1};
 
+/// Floats of every row together.
+inline constexpr int kVaryingFloats = [] {
+  int sum = 0;
+  for (const std::uint8_t width : kVaryingWidth) sum += width;
+  return sum;
+}();
+
 /// How a varying changes across a triangle.
 enum class Interpolation : std::uint8_t {
   flat,         ///< one value for the whole primitive: its first vertex's (stored once per record)
@@ -62,7 +69,8 @@ struct Varyings {
 ///  - a triangle record's attribute floats: the flat rows once (`flat_floats`), then per vertex k the
 ///    interpolated rows (`stride` floats each, vertex k's at flat_floats + k stride).
 struct VaryingLayout {
-  static constexpr int kMaxFloats = 14;  ///< every row: 4 + 3 + 2 + 3 + 1 + 1
+  /// Every row: the sum of kVaryingWidth (14), computed so that a new row or width cannot leave it behind.
+  static constexpr int kMaxFloats = kVaryingFloats;
   Interpolation interpolation[kVaryingCount] = {};
   std::int8_t vertex_offset[kVaryingCount] = {0, -1, -1, -1, -1, -1};  ///< in a vertex's floats; -1: absent
   std::int8_t record_offset[kVaryingCount] = {0,  -1, -1, -1,
