@@ -44,11 +44,9 @@ void add_segment(const Scene& scene, const Primitive& prim, std::uint32_t i, std
 void add_segment_rectangle(const Scene& scene, const Primitive& prim, std::uint32_t i, std::uint32_t j,
                            const PrimitivePlan& mode, std::uint32_t call, Setup& setup) {
   const Point2 a = scene.points[prim.first_point + i], b = scene.points[prim.first_point + j];
-  const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
-  if (!(len > 0) || !std::isfinite(len)) return;  // a point, or a segment too long to have a direction
-  const double half = prim.width * 0.5, nx = -dy / len * half, ny = dx / len * half;
-  const Point2 q[4] = {
-      {a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
+  double x[4], y[4];
+  if (!segment_rectangle(a.x, a.y, b.x, b.y, prim.width, x, y)) return;
+  const Point2 q[4] = {{x[0], y[0]}, {x[1], y[1]}, {x[2], y[2]}, {x[3], y[3]}};
   const Rgba8 ca = scene.vertex_color(prim, i), cb = scene.vertex_color(prim, j);
   const Rgba8 c[4] = {ca, cb, cb, ca};
   const VaryingLayout& with = setup.calls[call].layout;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
@@ -41,6 +42,19 @@ void in_parts(std::size_t count, std::size_t least, int plan_threads, Setup& set
   });
   meter.check();
   setup.parts.emplace_back();  // what follows goes after all of the pieces
+}
+
+/// The corners of the rectangle `width` pixels wide around the segment (ax, ay)-(bx, by) (butt caps), in
+/// the order a + n, b + n, b - n, a - n for n the normal of half the width: how anti-aliased and wide lines
+/// are drawn, in 2D and 3D. False for a segment without a direction (length 0, or too long to be finite).
+inline bool segment_rectangle(double ax, double ay, double bx, double by, double width, double (&x)[4],
+                              double (&y)[4]) {
+  const double dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
+  if (!(len > 0) || !std::isfinite(len)) return false;
+  const double half = width * 0.5, nx = -dy / len * half, ny = dx / len * half;
+  x[0] = ax + nx, x[1] = bx + nx, x[2] = bx - nx, x[3] = ax - nx;
+  y[0] = ay + ny, y[1] = by + ny, y[2] = by - ny, y[3] = ay - ny;
+  return true;
 }
 
 /// Sets up the plan's draws, in scene order. Stops early, with the setup incomplete, once `meter` says

@@ -20,11 +20,9 @@ void add_line_rectangle(const ClipVertex& a, const ClipVertex& b, double ax, dou
                         double bx, double by, double bd, double bw, double width, std::uint32_t call,
                         Setup& setup) {
   const VaryingLayout& with = setup.calls[call].layout;
-  const double dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
-  if (!(len > 0)) return;
-  const double nx = -dy / len * 0.5 * width, ny = dx / len * 0.5 * width;
+  double px[4], py[4];
+  if (!segment_rectangle(ax, ay, bx, by, width, px, py)) return;
   SetupVertex q[4];
-  const double px[4] = {ax + nx, bx + nx, bx - nx, ax - nx}, py[4] = {ay + ny, by + ny, by - ny, ay - ny};
   for (int k = 0; k < 4; ++k) {
     const bool at_a = k == 0 || k == 3;
     q[k].x = snap(px[k]), q[k].y = snap(py[k]);
