@@ -118,7 +118,8 @@ bool read_multipart(Reading& r, const httplib::ContentReader& reader, ReceivedBo
                               "\" (texture parts are named by their file name); send each once"),
                   "duplicate_part");
   add_part_names(into.uploads, parts);
-  if (const std::string unnamed = adopt_main_part(into.body, into.uploads, parts, &into.model_file_name);
+  if (const std::string unnamed =
+          adopt_main_part(into.body, into.uploads, parts, &into.model_file_name, &into.sniffed);
       !unnamed.empty())
     return refuse(r.metrics, r.res,
                   problem(400, "missing-part", "No scene or model part in the upload", unnamed),

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "service.h"
+#include "service_config.h"
 
 namespace rasterd {
 

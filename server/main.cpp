@@ -180,15 +180,19 @@ int run_render(const std::vector<std::string>& args) {
     std::cerr << "rasterd: cannot read " << input << ": " << std::strerror(errno) << "\n";
     return 1;
   }
-  const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(text);
-  if (input != "-" && (!rasterd::is_scene_text(text) || sniffed == raster::ModelFormat::gltf))
-    // Bytes that tell no format: an OBJ's files are looked for (what is not OBJ text names none).
-    gather_model_files(input, text, raster::model_format(sniffed.value_or(raster::ModelFormat::obj)),
-                       uploads);
+  // Sniffed once, here, as the readers take it (its byte order mark blanked), and the answer handed on. A
+  // model's files are gathered (text that is no scene, or a glTF document): as an OBJ's when the bytes tell
+  // no format (what is not OBJ text names none) or the file is empty (its model is a --part, if any).
+  const rasterd::Sniffed sniffed = rasterd::sniff_request(text, uploads);
+  if (input != "-" && (!rasterd::is_scene_text(text) || sniffed.format == raster::ModelFormat::gltf)) {
+    const auto format =
+        text.empty() ? raster::ModelFormat::obj : sniffed.format.value_or(raster::ModelFormat::obj);
+    gather_model_files(input, text, raster::model_format(format), uploads);
+  }
   try {
     raster::Scene scene =
         rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{}, false,
-                                    raster::format_of_file_name(input));
+                                    raster::format_of_file_name(input), sniffed);
     const raster::RenderPlan plan = raster::plan(scene);
     // The plan or the PNG, written where -o says (the PNG is not copied: it can be tens of MB).
     std::string plan_text;

@@ -33,6 +33,7 @@ void RenderRoute::post(const httplib::Request& req, httplib::Response& res,
   in.uploads = std::move(received.uploads);
   in.params = Params(req.params.begin(), req.params.end());
   in.declared_json = !multipart && is_json_media_type(req.get_header_value("Content-Type"));
+  in.sniffed = received.sniffed;
   // What the request says the model is, for bytes that do not tell: the file name, else the media type.
   in.named_format = raster::format_of_file_name(received.model_file_name);
   if (!in.named_format && !multipart)
@@ -112,7 +113,7 @@ void RenderRoute::draw(const httplib::Request& req, httplib::Response& res, Requ
   limits.budget = &budget;
   const auto body_bytes = static_cast<std::int64_t>(in.body.size() + uploads_size(in.uploads));
   raster::Scene scene = scene_from_request(std::move(in.body), std::move(in.uploads), in.params, limits,
-                                           in.declared_json, in.named_format);
+                                           in.declared_json, in.named_format, in.sniffed);
   budget.release(body_bytes);  // read and freed: what was sent is gone, the scene holds what it needs
   const raster::RenderPlan plan = raster::plan(scene, limits, {config_.render_threads});
   if (explain_requested(in.params)) {  // no tag: the plan also depends on the thread count

@@ -17,7 +17,7 @@
 #include "metrics.h"
 #include "raster/scene.h"
 #include "request.h"
-#include "service.h"
+#include "service_config.h"
 
 namespace rasterd {
 
@@ -43,6 +43,7 @@ class RenderRoute {
     bool cacheable = false;                           ///< a GET, whose answer is named by its URL alone
     bool declared_json = false;                       ///< its Content-Type says JSON
     std::optional<raster::ModelFormat> named_format;  ///< what the request says the model is, if anything
+    std::optional<Sniffed> sniffed;                   ///< the request's sniff, if reading the body made it
   };
 
   void render(const httplib::Request& req, httplib::Response& res, RequestBudget& budget, Input in);

@@ -15,10 +15,15 @@
 namespace rasterd {
 namespace {
 
-constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
-
 [[noreturn]] void bad_param(const std::string& name, const std::string& message) {
   throw QueryError(name, "query parameter \"" + name + "\": " + message);
+}
+
+// Whether `text` starts with an OBJ statement's keyword (raster::is_obj_statement) and a space.
+bool starts_with_statement(std::string_view text) {
+  const std::string_view head = text.substr(0, 12);  // the longest keyword has 10 letters
+  const std::size_t space = head.find(' ');
+  return space != std::string_view::npos && raster::is_obj_statement(head.substr(0, space));
 }
 
 // `curl -d @model.obj` drops newlines: what arrives is "v 0 0 0v 1 0 0f 1 2 3..." on one line. An OBJ
@@ -26,14 +31,10 @@ constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 // such junction marks the body, however short (a one-face model is 30 bytes).
 bool looks_like_flattened_obj(std::string_view body) {
   if (body.find('\n') != std::string_view::npos) return false;
-  static constexpr std::string_view kStatements[] = {"v ", "vt ", "vn ", "f ",     "l ",
-                                                     "o ", "g ",  "s ",  "usemtl "};
   for (std::size_t i = 1; i < body.size(); ++i) {
     const char before = body[i - 1];
-    if (!((before >= '0' && before <= '9') || before == '.')) continue;
-    const std::string_view rest = body.substr(i);
-    for (std::string_view statement : kStatements)
-      if (rest.starts_with(statement)) return true;
+    if (((before >= '0' && before <= '9') || before == '.') && starts_with_statement(body.substr(i)))
+      return true;
   }
   return false;
 }
@@ -106,15 +107,13 @@ std::string param_of_pointer(const std::string& pointer, const Params& params) {
   throw raster::SceneError(e.kind(), "query parameter \"" + param + "\": " + e.what());
 }
 
-// An OBJ model's first statement: what a body declared as JSON holds when a model was sent with the wrong
-// Content-Type.
+// An OBJ model's first statement (or a comment): what a body declared as JSON holds when a model was sent
+// with the wrong Content-Type.
 bool starts_like_obj(std::string_view body) {
   const std::size_t i = body.find_first_not_of(" \t\r\n");
   if (i == std::string_view::npos) return false;
   body.remove_prefix(i);
-  for (std::string_view statement : {"# ", "v ", "vn ", "vt ", "f ", "o ", "g ", "mtllib ", "usemtl "})
-    if (body.starts_with(statement)) return true;
-  return false;
+  return body.starts_with("# ") || starts_with_statement(body);
 }
 
 // A number of a query parameter, and how an error quotes it: a whole number as one ("0" as it was sent, not
@@ -195,8 +194,9 @@ bool set_field(raster::Scene& scene, const std::string& name, const std::string&
 // in: ?format=, the model's format; each other parameter when it is read, in name order (the map's); then
 // the camera's fields together, the image's pixels, the model, and validate().
 raster::Scene default_scene(const Params& params, std::optional<raster::ModelFormat> named_format,
-                            const raster::Uploads& uploads, const raster::Limits& limits) {
-  // The bytes tell the format first (the reader sniffs them); else the part's file name, else ?format=.
+                            const raster::Uploads& uploads, const raster::Limits& limits,
+                            const Sniffed& sniffed) {
+  // The bytes tell the format first (the request's sniff); else the part's file name, else ?format=.
   std::optional<raster::ModelFormat> hint = named_format;
   if (const auto it = params.find("format"); it != params.end() && !named_format) {
     try {
@@ -206,7 +206,7 @@ raster::Scene default_scene(const Params& params, std::optional<raster::ModelFor
     }
   }
   const std::string& bytes = uploads.at("model");
-  const raster::ModelFormat format = raster::model_format_of(bytes, hint);
+  const raster::ModelFormat format = raster::model_format_of(bytes, hint, sniffed.format);
   // The library's picture of a bare model (size, background, anti-aliasing, the format's up axis), which
   // the parameters adjust; its mesh is read last.
   raster::Scene scene = raster::model_scene({}, format);
@@ -250,9 +250,35 @@ bool is_json_media_type(std::string_view content_type) {
 }
 
 bool is_scene_text(std::string_view body) {
-  if (body.starts_with(kUtf8Bom)) body.remove_prefix(kUtf8Bom.size());
+  body = raster::without_bom(body);
   const std::size_t i = body.find_first_not_of(" \t\r\n");
   return i != std::string_view::npos && (body[i] == '{' || body[i] == '[');
+}
+
+namespace {
+
+// A byte order mark is whitespace to the readers: blanked rather than cut, so every byte offset in an error
+// still counts from the start of what was sent.
+void blank_bom(std::string& body) {
+  if (body.starts_with(raster::kUtf8Bom))
+    body.replace(0, raster::kUtf8Bom.size(), raster::kUtf8Bom.size(), ' ');
+}
+
+// The request's one sniff, of its main bytes (Sniffed).
+Sniffed sniff_main_bytes(std::string_view bytes) {
+  return {raster::sniff_model(bytes)};
+}
+
+bool is_gltf(std::optional<raster::ModelFormat> format) {
+  return format == raster::ModelFormat::gltf || format == raster::ModelFormat::glb;
+}
+
+}  // namespace
+
+Sniffed sniff_request(std::string& body, const raster::Uploads& uploads) {
+  blank_bom(body);
+  const auto model = uploads.find("model");
+  return sniff_main_bytes(body.empty() && model != uploads.end() ? std::string_view(model->second) : body);
 }
 
 bool explain_requested(const Params& params) {
@@ -284,7 +310,7 @@ void add_part_names(raster::Uploads& uploads, const std::vector<PartName>& parts
 }
 
 std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts,
-                            std::string* model_file_name) {
+                            std::string* model_file_name, std::optional<Sniffed>* sniffed) {
   if (!body.empty() || uploads.contains("model") || parts.empty()) return {};
   auto lower_ends_with = [](std::string name, std::string_view suffix) {
     std::transform(name.begin(), name.end(), name.begin(),
@@ -302,15 +328,17 @@ std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const s
     uploads.erase(p.key);
     if (p.part != p.key) uploads.erase(p.part);  // the copy add_part_names made under the part's name
     // A part whose file name is a model's is that model, even when its bytes start like JSON (a binary STL's
-    // header may start with '{').
-    const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(bytes);
-    const bool gltf = sniffed == raster::ModelFormat::gltf || sniffed == raster::ModelFormat::glb;
-    if (!raster::format_of_file_name(p.key) && is_scene_text(bytes) && !gltf) {
+    // header may start with '{'). This is the request's sniff (of the body or, the body being empty, of the
+    // model part these bytes become): for scene text, sniffing before its byte order mark is blanked tells
+    // the same.
+    const Sniffed told = sniff_main_bytes(bytes);
+    if (!raster::format_of_file_name(p.key) && is_scene_text(bytes) && !is_gltf(told.format)) {
       body = std::move(bytes);
     } else {
       uploads["model"] = std::move(bytes);
       if (model_file_name) *model_file_name = p.key;
     }
+    if (sniffed) *sniffed = told;
     return {};
   }
   std::string names;
@@ -348,7 +376,8 @@ void apply_scale(raster::Scene& scene, double scale, const raster::Limits& limit
 
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& all_params,
                                  const raster::Limits& limits, bool declared_json,
-                                 std::optional<raster::ModelFormat> named_format) {
+                                 std::optional<raster::ModelFormat> named_format,
+                                 std::optional<Sniffed> sniffed) {
   Params params;  // what the request means: without the cache-buster and the sharing tools' parameters
   for (const auto& [name, value] : all_params)
     if (!ignored_param(name)) params.emplace(name, value);
@@ -359,21 +388,20 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
   }
   explain_requested(params);  // a bad ?explain or ?scale is an error before anything is read
   const std::optional<double> scale = scale_param(params);
-  // A byte order mark (Windows editors write one) is whitespace to the readers: blanked rather than cut,
-  // so every byte offset in an error still counts from the start of what was sent.
-  if (body.starts_with(kUtf8Bom)) body.replace(0, kUtf8Bom.size(), kUtf8Bom.size(), ' ');
+  // The byte order mark blanked (sniff_request; a part adopt_main_part sniffed is not blanked yet) and the
+  // request sniffed, once: here unless a caller did. An empty body's sniff is its model part's, which
+  // decides nothing below: the body is then no scene text, and a request with parts declares no JSON.
+  blank_bom(body);
+  const Sniffed told = sniffed ? *sniffed : sniff_request(body, uploads);
   // A glTF document is JSON too (model/gltf+json ends in "+json"): its bytes, its file name or a model
   // Content-Type make it a model, and so do a GLB's bytes whatever the request calls them. A body the request
   // calls JSON is otherwise a scene (an OBJ sent so gets a hint below); an undeclared one is a scene by its
   // first byte unless its bytes are a model's or a file name or Content-Type names a model format (a binary
   // STL's header may start with '{').
-  const std::optional<raster::ModelFormat> sniffed = raster::sniff_model(body);
   // The named format is the body's only when no part carries the model (multipart: the model part's name).
   const bool named_model = named_format && !uploads.contains("model");
-  const bool gltf = sniffed == raster::ModelFormat::gltf || sniffed == raster::ModelFormat::glb ||
-                    (named_model &&
-                     (named_format == raster::ModelFormat::gltf || named_format == raster::ModelFormat::glb));
-  if (!gltf && (declared_json || (is_scene_text(body) && !sniffed && !named_model))) {
+  const bool gltf = is_gltf(told.format) || (named_model && is_gltf(named_format));
+  if (!gltf && (declared_json || (is_scene_text(body) && !told.format && !named_model))) {
     // A scene says everything itself: a query parameter could only be ignored, which hides a mistake.
     for (const auto& [name, value] : params) {
       if (name == "explain" || name == "scale") continue;
@@ -394,7 +422,7 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
     if (scale) apply_scale(scene, *scale, limits);
     return scene;
   }
-  if ((!sniffed || sniffed == raster::ModelFormat::obj) && looks_like_flattened_obj(body))
+  if ((!told.format || told.format == raster::ModelFormat::obj) && looks_like_flattened_obj(body))
     throw raster::SceneError(
         raster::ErrorKind::syntax,
         "the body looks like an OBJ model whose line breaks were removed (curl -d does that); "
@@ -404,7 +432,7 @@ raster::Scene scene_from_request(std::string body, raster::Uploads uploads, cons
                              "the request is empty: send a scene (JSON) or a model (" +
                                  std::string(raster::accepted_formats()) + ")");
   if (!body.empty()) uploads["model"] = std::move(body);  // the body is the model when it has bytes
-  raster::Scene scene = default_scene(params, named_format, uploads, limits);
+  raster::Scene scene = default_scene(params, named_format, uploads, limits, told);
   if (scale) apply_scale(scene, *scale, limits);
   return scene;
 }

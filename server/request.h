@@ -1,14 +1,13 @@
-// What a render request means: a scene JSON, or a bare model (OBJ, STL, PLY, glTF) with query
+// What a render request means: a scene JSON, or a bare model (OBJ, STL, PLY, glTF, 3MF) with query
 // parameters, plus uploads. Shared by the HTTP routes and the CLI so both accept exactly the same inputs.
 #pragma once
 
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <optional>
 
 #include "raster/model.h"
 #include "raster/scene.h"
@@ -76,6 +75,19 @@ using raster::format_of_media_type;
 /// whitespace is '{' or '['; anything else is a model.
 bool is_scene_text(std::string_view body);
 
+/// What raster::sniff_model tells of a request's main bytes: the body, or the "model" part when the body is
+/// empty (a multipart upload). A request is sniffed once, by the first step that must know (the CLI, to
+/// gather a model's files; adopt_main_part, to place a part; else scene_from_request), and the answer is
+/// handed on from there to the model's reading.
+struct Sniffed {
+  std::optional<raster::ModelFormat> format;  ///< nullopt: the bytes are in no format by their own look
+};
+
+/// The request made ready for the readers and sniffed: a UTF-8 byte order mark at the start of `body`
+/// (Windows editors write one) blanked, as whitespace to the readers, so every byte offset in an error
+/// still counts from the start of what was sent; then its main bytes (Sniffed) sniffed.
+Sniffed sniff_request(std::string& body, const raster::Uploads& uploads);
+
 /// The value of the "explain" parameter: absent or 0/false/no/off is false; 1/true/yes/on, or a bare
 /// ?explain, is true. Anything else throws raster::SceneError naming the parameter.
 bool explain_requested(const Params& params);
@@ -83,21 +95,25 @@ bool explain_requested(const Params& params);
 /// A multipart upload with neither a "scene" nor a "model" part (`curl -F file=@bunny.stl`): a lone part,
 /// or else the one part whose file name ends in a model's extension (.obj, .stl, .ply, .gltf, .glb, .3mf) or
 /// .json, becomes the body (a scene by its bytes) or the model, whose file name then goes to
-/// `model_file_name` when given. Returns an error message naming the parts when no single part
-/// qualifies; "" otherwise (also when there was nothing to choose).
+/// `model_file_name` when given. The part is sniffed to tell (a glTF document is JSON too), and that is the
+/// request's sniff: it goes to `sniffed` when given, for scene_from_request. Returns an error message naming
+/// the parts when no single part qualifies; "" otherwise (also when there was nothing to choose).
 std::string adopt_main_part(std::string& body, raster::Uploads& uploads, const std::vector<PartName>& parts,
-                            std::string* model_file_name = nullptr);
+                            std::string* model_file_name = nullptr,
+                            std::optional<Sniffed>* sniffed = nullptr);
 
 /// A scene when `declared_json` (the request's Content-Type says JSON) or is_scene_text(body), unless the
 /// bytes are a glTF document; otherwise a model drawn with the default scene (512x512, camera framing the
 /// model) adjusted by `params`. The model's format is told by its bytes, else by `named_format` (from the
 /// file name of the part that carried it, or the Content-Type), else by ?format=. A scene
-/// takes no parameter but "explain": any other is refused, as an unknown one is for a model. A UTF-8 byte
-/// order mark is read as whitespace. A body that looks like an OBJ whose line breaks were stripped (curl -d)
-/// is refused with a hint. Throws raster::SceneError. Takes the body and uploads by value: callers move
-/// them in, so a large model is never copied.
+/// takes no parameter but "explain" and "scale": any other is refused, as an unknown one is for a model. A
+/// UTF-8 byte order mark is read as whitespace. A body that looks like an OBJ whose line breaks were
+/// stripped (curl -d) is refused with a hint. `sniffed`: the request's sniff when a caller has made it
+/// (sniff_request, adopt_main_part); without it, sniff_request is asked here. Throws raster::SceneError.
+/// Takes the body and uploads by value: callers move them in, so a large model is never copied.
 raster::Scene scene_from_request(std::string body, raster::Uploads uploads, const Params& params,
                                  const raster::Limits& limits, bool declared_json = false,
-                                 std::optional<raster::ModelFormat> named_format = std::nullopt);
+                                 std::optional<raster::ModelFormat> named_format = std::nullopt,
+                                 std::optional<Sniffed> sniffed = std::nullopt);
 
 }  // namespace rasterd

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "request.h"
 #include "support.h"
 #include "test_server.h"
 
@@ -245,4 +246,34 @@ TEST(Server, AntialiasThroughHttp) {
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(problem_of(bad)["pointer"], "/antialias");
+}
+
+// Issue 52: a request is sniffed once, by sniff_request (its byte order mark blanked first, as the readers
+// take it) or by adopt_main_part for a part it places, and the sniff a caller hands on is the one used.
+TEST(Request, IsSniffedOnceAndTheSniffIsHandedOn) {
+  std::string body = "\xEF\xBB\xBFsolid x\nendsolid x\n";
+  EXPECT_EQ(rasterd::sniff_request(body, {}).format, raster::ModelFormat::stl);  // an ASCII STL, once blanked
+  EXPECT_EQ(body.substr(0, 3), "   ");
+  std::string empty;
+  EXPECT_EQ(rasterd::sniff_request(empty, {{"model", "ply\nformat ascii 1.0\n"}}).format,
+            raster::ModelFormat::ply);  // the body is empty: the model part's bytes
+
+  std::string adopted;
+  raster::Uploads uploads{{"part.bin", R"({"asset": {"version": "2.0"}})"}};
+  std::optional<rasterd::Sniffed> told;
+  EXPECT_EQ(rasterd::adopt_main_part(adopted, uploads, {{"file", "part.bin"}}, nullptr, &told), "");
+  ASSERT_TRUE(told);
+  EXPECT_EQ(told->format, raster::ModelFormat::gltf);
+  EXPECT_TRUE(adopted.empty() && uploads.contains("model"));  // JSON, but a glTF document: the model
+
+  // An OBJ said to be an STL is read as one: the sniff handed on is not made again.
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  EXPECT_NO_THROW(rasterd::scene_from_request(obj, {}, {}, {}));
+  try {
+    rasterd::scene_from_request(obj, {}, {}, {}, false, std::nullopt,
+                                rasterd::Sniffed{raster::ModelFormat::stl});
+    ADD_FAILURE() << "read as the OBJ it is";
+  } catch (const raster::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("STL:"), std::string::npos) << e.what();
+  }
 }

@@ -34,10 +34,10 @@ struct ModelFormatInfo {
   /// (as parse_obj takes them; the other formats ignore it).
   Mesh (*read)(std::string_view bytes, const Limits& limits, const Uploads& files, std::string_view mtl_text);
   /// The files the model names (obj_files, gltf_files), for a program that has its folder at hand; null
-  /// for a format that names none (STL, PLY).
+  /// for a format that names none (STL, PLY, 3MF).
   std::vector<std::string> (*files)(std::string_view bytes, std::string_view mtl_text, const Uploads& files);
   /// How many times `files` is asked, each time with the files found before: OBJ 2 (the libraries its
-  /// mtllib lines name, then the textures those name), glTF 1, STL and PLY 0.
+  /// mtllib lines name, then the textures those name), glTF 1, STL, PLY and 3MF 0.
   int file_rounds;
   /// The world direction the format's files take as up by their own convention, which a bare model's
   /// picture stands on (see model_scene): glTF's specification says +Y; OBJ (Wavefront, Maya and Blender's
@@ -57,12 +57,24 @@ const ModelFormatInfo& model_format(ModelFormat format);
 const std::array<std::string_view, kModelFormatCount>& format_names();
 
 /// The format's name as the scene's "format" and the service's ?format= take it: "obj", "stl",
-/// "ply", "gltf", "glb".
+/// "ply", "gltf", "glb", "3mf".
 std::string_view format_name(ModelFormat format);
 /// The inverse of format_name (ASCII case ignored); nullopt for any other word.
 std::optional<ModelFormat> format_named(std::string_view name);
 /// "OBJ, STL (ASCII or binary), PLY (ASCII or binary), glTF 2.0 (.gltf or .glb) and 3MF": for errors.
 std::string_view accepted_formats();
+
+/// The UTF-8 byte order mark some editors (Windows') put before text: sniff_model passes over it before a
+/// glTF document or an OBJ's first statement, and the service and the CLI read it as whitespace.
+inline constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+/// `text` after its byte order mark, when it starts with one.
+constexpr std::string_view without_bom(std::string_view text) {
+  return text.starts_with(kUtf8Bom) ? text.substr(kUtf8Bom.size()) : text;
+}
+
+/// True when `word` is a statement of OBJ 3.0 (geometry, grouping, display and free-form: "v", "vt", "f",
+/// "usemtl", "curv2", ...), what an OBJ line that is not a comment starts with; case matters.
+bool is_obj_statement(std::string_view word);
 
 /// The format `bytes` are in, by the bytes alone, or nullopt when they are in none. The tests are tried
 /// from the most particular to the loosest (glb, 3mf, ply, stl, gltf, obj):
@@ -73,11 +85,12 @@ std::string_view accepted_formats();
 ///   the header gives (binary; some binary files start with "solid" too);
 /// - gltf: a JSON object whose first key is a glTF top-level property ("asset", "scene", "nodes", ...);
 ///   only that key is read, so a scene document of any size is told apart at once;
-/// - obj: text whose first statement (after blank lines and '#' comments) is an OBJ keyword; a file of
-///   nothing but comments too, which parse_obj then calls empty.
+/// - obj: text whose first statement (after blank lines and '#' comments) is an OBJ keyword
+///   (is_obj_statement); a file of nothing but comments too, which parse_obj then calls empty.
 std::optional<ModelFormat> sniff_model(std::string_view bytes);
 
-/// The format a file name's extension names (.obj, .stl, .ply, .gltf, .glb; ASCII case ignored), or nullopt.
+/// The format a file name's extension names (.obj, .stl, .ply, .gltf, .glb, .3mf; ASCII case ignored), or
+/// nullopt.
 std::optional<ModelFormat> format_of_file_name(std::string_view file_name);
 
 /// The format a media type names (model/stl, model/gltf-binary, model/gltf+json, model/obj,
@@ -128,9 +141,9 @@ std::vector<std::string> obj_files(std::string_view obj_text, std::string_view m
 Mesh parse_stl(std::string_view bytes, const Limits& limits = {});
 
 /// PLY 1.0, ASCII or binary of either byte order: the "vertex" element's x, y, z, optional normals
-/// (nx, ny, nz) and colours (red, green, blue and alpha, as uchar 0..255 or as float 0..1), and the "face"
-/// element's index list ("vertex_indices" or "vertex_index", any list and index types). Faces of more
-/// than three corners are triangulated as OBJ faces are (quads on their shorter diagonal, as
+/// (nx, ny, nz) and colours (red, green, blue and alpha: uchar 0..255, ushort 0..65535 or float 0..1), and
+/// the "face" element's index list ("vertex_indices" or "vertex_index", any list and index types). Faces of
+/// more than three corners are triangulated as OBJ faces are (quads on their shorter diagonal, as
 /// tinyobjloader splits them; larger polygons by ear clipping in their own plane, exact for any simple
 /// polygon, convex or not; the face element may come before the vertex element). Other elements and
 /// properties are skipped. Every element count and list length is checked against the bytes left before
@@ -176,6 +189,10 @@ Mesh parse_3mf(std::string_view bytes, const Limits& limits = {});
 /// The format parse_model reads `bytes` as: sniff_model(bytes), else `hint` (from a file name or the
 /// request), else SceneError(model): the model is empty, or in no format rasterd reads.
 ModelFormat model_format_of(std::string_view bytes, std::optional<ModelFormat> hint);
+/// The same for bytes a caller has sniffed already: `sniffed` is what sniff_model(bytes) gave, so the bytes
+/// are not read again.
+ModelFormat model_format_of(std::string_view bytes, std::optional<ModelFormat> hint,
+                            std::optional<ModelFormat> sniffed);
 
 /// Any of the formats: model_format_of(bytes, hint), then that format's reader. OBJ takes `mtl_text` as
 /// parse_obj does; OBJ and glTF find the files they name in `files`.

@@ -58,10 +58,11 @@ Antialias antialias(std::string_view text);
 /// The mesh of a model primitive, read as the scene reader reads one: parse_model(bytes, hint, ...) within
 /// the texels `limits` leave, grey when the model has no colours of its own. A reader's error is rethrown
 /// with its line or its byte in the model's words, located at `pointer` and `byte` (0 when the model came in
-/// no document). `sniffed`: what sniff_model(bytes) gave, when the caller has already asked it (a request is
-/// sniffed once); without it, the bytes are sniffed here.
+/// no document). `format`: the format when the caller has decided it already (model_format_of, with the
+/// sniff it made to route the request: the service and the CLI sniff a request once), so the bytes are not
+/// sniffed again; without it, parse_model decides here.
 Mesh model_mesh(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits,
                 const Uploads& files, std::string_view mtl_text, const std::string& pointer, std::size_t byte,
-                std::optional<ModelFormat> sniffed = std::nullopt);
+                std::optional<ModelFormat> format = std::nullopt);
 
 }  // namespace raster::checks

@@ -14,6 +14,7 @@
 
 #include "base/budget_ask.h"
 #include "base/json_cursor.h"
+#include "base/text.h"
 #include "raster/model.h"
 
 #define TINYGLTF_IMPLEMENTATION  // here, once; gltf_document.h configures it for both files
@@ -40,22 +41,15 @@ std::string file_name_of_uri(std::string_view uri) {
 
 namespace {
 
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return (x >= 'A' && x <= 'Z' ? x + 32 : x) == (y >= 'A' && y <= 'Z' ? y + 32 : y);
-         });
-}
-
 // An uploaded file by a file name, exactly or else differing only in ASCII case, or in '+' for ' ' (tinygltf
 // decodes a buffer's URI as a query string, '+' as a space, before it asks for the file).
 const std::string* find_file(const Uploads& files, std::string_view name) {
   if (const auto it = files.find(name); it != files.end()) return &it->second;
   for (const auto& [key, bytes] : files)
-    if (iequals(key, name)) return &bytes;
+    if (detail::iequals(key, name)) return &bytes;
   for (const auto& [key, bytes] : files)
     if (key.size() == name.size() && std::equal(key.begin(), key.end(), name.begin(), [](char x, char y) {
-          x = x == '+' ? ' ' : x, y = y == '+' ? ' ' : y;
-          return (x >= 'A' && x <= 'Z' ? x + 32 : x) == (y >= 'A' && y <= 'Z' ? y + 32 : y);
+          return detail::ascii_lower(x == '+' ? ' ' : x) == detail::ascii_lower(y == '+' ? ' ' : y);
         }))
       return &bytes;
   return nullptr;

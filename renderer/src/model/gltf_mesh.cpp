@@ -14,6 +14,7 @@
 #include "base/budget_ask.h"
 #include "base/memory.h"
 #include "model/gltf_document.h"
+#include "model/reading.h"
 
 namespace raster::gltf {
 namespace {
@@ -26,16 +27,9 @@ constexpr std::size_t kMaxDrawnPrimitives = 1 << 20;
 // a few microseconds, as about a thousand vertices cost.
 constexpr std::uint64_t kPrimitiveWork = 1024;
 
-// Room for `more` elements, growing geometrically: a model of many primitives must not reallocate its arrays
-// once per primitive (reserving exactly each time copies them quadratically often).
-
 double srgb_of_linear(double c) {
   c = std::clamp(c, 0.0, 1.0);
   return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
-}
-
-std::uint8_t unit_byte(double v) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
 }
 
 using Mat = std::array<double, 16>;  // column-major, as glTF stores it
@@ -286,8 +280,8 @@ class MeshBuilder {
     }
     // glTF colours are linear; the 8-bit colours lit here are sRGB-encoded, as texels are.
     auto encoded = [](const double* c) -> Rgba8 {
-      return {unit_byte(srgb_of_linear(c[0])), unit_byte(srgb_of_linear(c[1])),
-              unit_byte(srgb_of_linear(c[2])), unit_byte(c[3])};
+      return {detail::unit_byte(srgb_of_linear(c[0])), detail::unit_byte(srgb_of_linear(c[1])),
+              detail::unit_byte(srgb_of_linear(c[2])), detail::unit_byte(c[3])};
     };
     const std::size_t base = mesh_.positions.size() - count;
     if (!colours) {  // one colour for the primitive, encoded once, and stored once while the mesh has one
@@ -491,8 +485,7 @@ class MeshBuilder {
   void make_room_for_triangles(std::size_t more) {
     meter_.add(more);  // the triangles' loop, counted before it runs
     if (mesh_.triangles.size() + more > static_cast<std::size_t>(limits_.max_model_faces))
-      throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(limits_.max_model_faces) + " faces");
+      detail::too_many_faces(limits_.max_model_faces);
     room(mesh_.triangles, more, counts_.faces);
     if (textured_) room(mesh_.face_textures, more, counts_.faces);
     if (!mesh_.materials.empty()) room(mesh_.face_materials, more, counts_.faces);

@@ -1,20 +1,18 @@
 // The model-format table, and which reader a model goes to: its bytes first, then a file name's extension
-// or the format a request names (the hint). One reader per format: obj.cpp, stl.cpp, ply.cpp, gltf.cpp.
+// or the format a request names (the hint). One reader per format: obj.cpp, stl.cpp, ply.cpp, gltf.cpp,
+// threemf.cpp.
 #include <algorithm>
 #include <array>
 #include <cstring>
 #include <string>
 
+#include "base/text.h"
 #include "raster/model.h"
 
 namespace raster {
 namespace {
 
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return (x >= 'A' && x <= 'Z' ? x + 32 : x) == (y >= 'A' && y <= 'Z' ? y + 32 : y);
-         });
-}
+using detail::iequals;
 
 bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
@@ -58,8 +56,7 @@ bool is_gltf_key(std::string_view key) {
 }
 
 bool looks_like_gltf_json(std::string_view bytes) {
-  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);
-  bytes = skip_blanks(bytes);
+  bytes = skip_blanks(without_bom(bytes));
   if (!bytes.starts_with('{')) return false;
   bytes = skip_blanks(bytes.substr(1));
   if (!bytes.starts_with('"')) return false;
@@ -84,13 +81,7 @@ bool looks_like_binary_stl(std::string_view bytes) {
 }
 
 bool looks_like_obj(std::string_view bytes) {
-  // The statements of OBJ 3.0 (geometry, grouping, display and free-form), as a file's first one.
-  static constexpr std::string_view kStatements[] = {
-      "v",    "vt",    "vn",       "vp",       "f",          "fo",        "l",      "p",     "o",    "g",
-      "s",    "mg",    "mtllib",   "usemtl",   "usemap",     "maplib",    "cstype", "deg",   "bmat", "step",
-      "curv", "curv2", "surf",     "parm",     "trim",       "hole",      "scrv",   "sp",    "end",  "con",
-      "lod",  "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj", "ctech",  "stech", "call", "csh"};
-  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);
+  bytes = without_bom(bytes);
   while (true) {
     bytes = skip_blanks(bytes);
     if (bytes.empty()) return true;  // only comments and blank lines: an empty OBJ, which parse_obj reports
@@ -101,8 +92,7 @@ bool looks_like_obj(std::string_view bytes) {
   }
   // No statement is longer than 10 letters: a longer first word is not one, and a minified JSON scene (one
   // "word" of megabytes) is told apart without reading it all (that scan was 5-7 ms of a 7.5 MB scene).
-  const std::string_view word = first_word(bytes.substr(0, 16));
-  return std::find(std::begin(kStatements), std::end(kStatements), word) != std::end(kStatements);
+  return is_obj_statement(first_word(bytes.substr(0, 16)));
 }
 
 bool looks_like_glb(std::string_view bytes) {
@@ -184,8 +174,7 @@ constexpr ModelFormat kSniffOrder[] = {ModelFormat::glb, ModelFormat::threemf, M
 std::string bare_media_type(std::string_view content_type) {
   std::string type(content_type.substr(0, content_type.find(';')));
   while (!type.empty() && (type.back() == ' ' || type.back() == '\t')) type.pop_back();
-  std::transform(type.begin(), type.end(), type.begin(),
-                 [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + 32) : c; });
+  std::transform(type.begin(), type.end(), type.begin(), detail::ascii_lower);
   return type;
 }
 
@@ -218,6 +207,16 @@ std::optional<ModelFormat> format_named(std::string_view name) {
   return std::nullopt;
 }
 
+bool is_obj_statement(std::string_view word) {
+  // OBJ 3.0's statements: geometry, grouping, display and free-form (curves and surfaces).
+  static constexpr std::string_view kStatements[] = {
+      "v",    "vt",    "vn",       "vp",       "f",          "fo",        "l",      "p",     "o",    "g",
+      "s",    "mg",    "mtllib",   "usemtl",   "usemap",     "maplib",    "cstype", "deg",   "bmat", "step",
+      "curv", "curv2", "surf",     "parm",     "trim",       "hole",      "scrv",   "sp",    "end",  "con",
+      "lod",  "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj", "ctech",  "stech", "call", "csh"};
+  return std::find(std::begin(kStatements), std::end(kStatements), word) != std::end(kStatements);
+}
+
 std::string_view accepted_formats() {
   return "OBJ, STL (ASCII or binary), PLY (ASCII or binary), glTF 2.0 (.gltf or .glb) and 3MF";
 }
@@ -247,7 +246,12 @@ std::optional<ModelFormat> format_of_media_type(std::string_view media_type) {
 }
 
 ModelFormat model_format_of(std::string_view bytes, std::optional<ModelFormat> hint) {
-  if (const std::optional<ModelFormat> sniffed = sniff_model(bytes)) return *sniffed;
+  return model_format_of(bytes, hint, sniff_model(bytes));
+}
+
+ModelFormat model_format_of(std::string_view bytes, std::optional<ModelFormat> hint,
+                            std::optional<ModelFormat> sniffed) {
+  if (sniffed) return *sniffed;
   if (hint) return *hint;
   if (skip_blanks(bytes).empty())
     throw SceneError(ErrorKind::model,

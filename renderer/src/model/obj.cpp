@@ -8,10 +8,10 @@
 //  3. split: those faces, into triangles, now that every position is known (quads on their shorter
 //     diagonal in each piece, larger polygons by ear clipping in file order).
 // What is read does not depend on how the text was split or how many threads read it. A piece that finds
-// anything wrong stops, and the text is then checked from its start, one line after another (check_text),
-// so the error reported is the one a reader of the lines in order meets first, in the words the previous
-// reader (through tinyobjloader, now the tests' oracle) used. The materials (MTL) are read as before
-// (obj_mtl.cpp, tinyobjloader's MTL parser), after the OBJ's own errors.
+// anything wrong stops, and the text is then checked from its start, one line after another
+// (check_obj_text), so the error reported is the one a reader of the lines in order meets first, in the
+// words the previous reader (through tinyobjloader, now the tests' oracle) used. The materials (MTL) are read
+// as before (obj_mtl.cpp, tinyobjloader's MTL parser), after the OBJ's own errors.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -157,7 +157,7 @@ void count_piece(std::string_view text, Piece& piece, const Limits& limits) {
 
 // ---- Pass 2: reading ---------------------------------------------------------------------------------
 
-// A piece's reading found a line that is not as OBJ has it: check_text says which and how.
+// A piece's reading found a line that is not as OBJ has it: check_obj_text says which and how.
 struct Wrong {};
 
 // The mesh's arrays as the pieces write them, each at the indices pass 1 gave.
@@ -170,7 +170,7 @@ struct Out {
   std::vector<Rgba8> colors;       ///< one per position, once some v line has a colour
 };
 
-// One v, vt or vn line (its words after the keyword) into the mesh at `index`; Wrong as check_text has it.
+// One v, vt or vn line (its words after the keyword) into the mesh at `index`; Wrong when it is malformed.
 void read_vertex(Statement s, LineWords& w, std::int64_t index, Out& out, Piece& piece) {
   double c[6];
   int n = 0;
@@ -282,9 +282,8 @@ FaceLook look_of(int m, const Plan& plan) {
   const tinyobj::material_t& mat = plan.materials_of.list[m];
   // MTL: the texture is multiplied by Kd; a map without Kd is shown as it is.
   const bool white = extras[m]->has_map && !extras[m]->has_kd;
-  look.color = {white ? std::uint8_t{255} : unit_byte(mat.diffuse[0]),
-                white ? std::uint8_t{255} : unit_byte(mat.diffuse[1]),
-                white ? std::uint8_t{255} : unit_byte(mat.diffuse[2]), unit_byte(mat.dissolve)};
+  const auto kd = [&](int k) { return white ? std::uint8_t{255} : unit_byte(mat.diffuse[k]); };
+  look.color = {kd(0), kd(1), kd(2), unit_byte(mat.dissolve)};
   look.surface = plan.materials_of.surface[m];
   look.texture = plan.materials_of.textures.materials.texture[m];
   return look;

@@ -39,13 +39,13 @@ void check_limit(std::int64_t count, std::int64_t limit, const char* what, std::
 }
 
 // A face, line or point statement's references (the words after the keyword in `w`).
-void check_references(std::string_view key, const std::vector<std::string_view>& w,
-                      const std::int64_t (&n)[3], std::size_t line_no) {
-  const std::size_t min_refs = key == "f" ? 3 : key == "l" ? 2 : 1;
+void check_references(Statement s, const std::vector<std::string_view>& w, const std::int64_t (&n)[3],
+                      std::size_t line_no) {
+  const std::size_t min_refs = s == Statement::f ? 3 : s == Statement::l ? 2 : 1;
   if (w.size() - 1 < min_refs)
-    model_error(line_no, std::string(key == "f"   ? "a face"
-                                     : key == "l" ? "a line"
-                                                  : "a point") +
+    model_error(line_no, std::string(s == Statement::f   ? "a face"
+                                     : s == Statement::l ? "a line"
+                                                         : "a point") +
                              " needs at least " + std::to_string(min_refs) + " vertices");
   std::string why;
   for (std::size_t k = 1; k < w.size(); ++k) {  // v, v/vt, v//vn or v/vt/vn
@@ -78,17 +78,17 @@ void check_obj_text(std::string_view text, const Limits& limits) {
           "LF, not by CR alone (classic Mac OS); convert the line ends");
     split_words(line, w);
     meter.add(1 + w.size());
-    if (w.empty() || w[0][0] == '#') continue;
-    const std::string_view key = w[0];
+    LineWords words{line.data(), line.data() + line.size()};
+    const Statement s = statement(words);  // the reader's statements: the others and comments draw nothing
     double d = 0;
-    if (key == "v") {
+    if (s == Statement::v) {
       if (w.size() < 4) model_error(line_no, "a vertex needs x y z");
       for (std::size_t k = 1; k < w.size() && k <= 6; ++k)
         if (!number(w[k], d) || std::fabs(d) > kMaxCoordinate)
           model_error(line_no, "vertex component \"" + std::string(w[k]) +
                                    "\" is not a finite number within +-3.4e38");
       ++defined[0];
-    } else if (key == "vt") {
+    } else if (s == Statement::vt) {
       if (w.size() < 2) model_error(line_no, "a texture coordinate needs u (and v)");
       for (std::size_t k = 1; k < w.size() && k <= 3; ++k)
         // The bound a scene's "uvs" have: beyond it a coordinate would not survive its float conversion.
@@ -96,13 +96,13 @@ void check_obj_text(std::string_view text, const Limits& limits) {
           model_error(line_no,
                       "texture coordinate \"" + std::string(w[k]) + "\" is not a number within +-1e30");
       ++defined[1];
-    } else if (key == "vn") {
+    } else if (s == Statement::vn) {
       if (w.size() < 4) model_error(line_no, "a normal needs x y z");
       ++defined[2];
-    } else if (key == "f" || key == "l" || key == "p") {
-      check_references(key, w, defined, line_no);
-      if (key == "f") check_limit(++faces, limits.max_model_faces, "faces", line_no);
-      if (key == "p") {
+    } else if (s == Statement::f || s == Statement::l || s == Statement::p) {
+      check_references(s, w, defined, line_no);
+      if (s == Statement::f) check_limit(++faces, limits.max_model_faces, "faces", line_no);
+      if (s == Statement::p) {
         point_refs += static_cast<std::int64_t>(w.size()) - 1;
         check_limit(point_refs, limits.max_model_points, "points", line_no);
       }

@@ -14,6 +14,7 @@
 #include "model/obj_mtl.h"
 
 #include "base/budget_ask.h"
+#include "base/text.h"
 #include "raster/model.h"
 #include "raster/utf8.h"
 
@@ -26,11 +27,7 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
+using detail::iequals;
 
 bool is_number(std::string_view w, double* out = nullptr) {
   double d = 0;

@@ -1,6 +1,6 @@
 // What an OBJ model's reader (obj.cpp) shares with its materials' (obj_mtl.cpp): the error both report
-// through, the words of a line, what the pass over the MTL text learns, and the textures the materials
-// name, decoded once each.
+// through, the words of a line, what the pass over the MTL text learns, the textures the materials name,
+// decoded once each, and a colour component's byte.
 #pragma once
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include "model/reading.h"
 #include "raster/scene.h"
 
 namespace raster::obj {
@@ -27,8 +28,8 @@ inline bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-// The whitespace-separated words of one line, into `out` (reused line after line by the prescan: a vector
-// made per line was a malloc and a free per line, 7% of a large model's parse).
+// The whitespace-separated words of one line, into `out` (reused line after line by check_obj_text: a
+// vector made per line was a malloc and a free per line, 7% of a large model's parse).
 inline void split_words(std::string_view line, std::vector<std::string_view>& out) {
   out.clear();
   std::size_t i = 0;
@@ -107,10 +108,8 @@ TexturePlan plan_textures(const std::vector<tinyobj::material_t>& materials, con
 void decode_textures(const TexturePlan& plan, const Uploads& files, const Limits& limits,
                      std::vector<Texture>& textures);
 
-/// An MTL colour component (0..1) as a byte: rounded, clamped, NaN as 0.
-inline std::uint8_t unit_byte(double v) {
-  return static_cast<std::uint8_t>(std::floor(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5));
-}
+/// An MTL colour component (Kd, d) or a vertex colour (0..1) as a byte, as every reader makes one.
+using detail::unit_byte;
 
 /// A read-only stream buffer over text held elsewhere (tinyobjloader reads from streams; nothing is copied).
 class TextBuf : public std::streambuf {

@@ -19,6 +19,7 @@
 #include "base/memory.h"
 #include "model/ply_header.h"
 #include "model/polygon.h"
+#include "model/reading.h"
 #include "raster/model.h"
 
 namespace raster {
@@ -129,10 +130,10 @@ class Values {
   Encoding enc_;
 };
 
+// A colour property's value as a byte: floats are 0..1, ushorts 0..65535, other integers 0..255.
 std::uint8_t colour_byte(double v, Type t) {
   if (!std::isfinite(v)) return 0;
-  const double unit = t == Type::f32 || t == Type::f64 ? v : t == Type::u16 ? v / 65535 : v / 255;
-  return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255));
+  return detail::unit_byte(t == Type::f32 || t == Type::f64 ? v : t == Type::u16 ? v / 65535 : v / 255);
 }
 
 // What the vertex element's value of a property with `role` sets.
@@ -274,8 +275,7 @@ struct Faces {
     if (!mesh.positions.empty()) return add();
     early_triangles += corners.size() - 2;
     if (early_triangles > static_cast<std::size_t>(limits.max_model_faces))
-      throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
+      detail::too_many_faces(limits.max_model_faces);
     early_corners.insert(early_corners.end(), corners.begin(), corners.end());
     early_sizes.push_back(static_cast<std::uint32_t>(corners.size()));
   }
@@ -289,8 +289,7 @@ struct Faces {
   void add() {
     // The limit counts triangles, as for STL and glTF: one face of a million corners is a million.
     if (mesh.triangles.size() + corners.size() - 2 > static_cast<std::size_t>(limits.max_model_faces))
-      throw SceneError(ErrorKind::limit,
-                       "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
+      detail::too_many_faces(limits.max_model_faces);
     if (corners.size() == 3) {
       mesh.triangles.push_back({corners[0], corners[1], corners[2]});
       return;
@@ -358,8 +357,7 @@ void read_direct_faces(const Element& e, const Layout& l, Values& in, Mesh& mesh
     if (n == 3) {
       std::memcpy(v, items, 12);
       if (v[0] < vertices && v[1] < vertices && v[2] < vertices) {
-        if (mesh.triangles.size() >= limit)
-          throw SceneError(ErrorKind::limit, "the model has more than " + std::to_string(limit) + " faces");
+        if (mesh.triangles.size() >= limit) detail::too_many_faces(faces.limits.max_model_faces);
         mesh.triangles.push_back({v[0], v[1], v[2]});
         continue;
       }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <charconv>
 
+#include "model/reading.h"
+
 namespace raster::ply {
 namespace {
 
@@ -161,8 +163,7 @@ Layout check_elements(const Header& h, std::size_t data_bytes, const Limits& lim
     return l;
   }
   if (l.face->count > static_cast<std::uint64_t>(limits.max_model_faces))
-    throw SceneError(ErrorKind::limit,
-                     "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
+    detail::too_many_faces(limits.max_model_faces);
   if (std::none_of(l.face->properties.begin(), l.face->properties.end(),
                    [](const Property& p) { return p.role == Role::indices; }))
     ply_error("the face element has no \"vertex_indices\" list", l.face->line);

@@ -15,11 +15,15 @@
 
 #include "base/budget_ask.h"
 #include "base/parallel.h"
+#include "base/text.h"
+#include "model/reading.h"
 #include "model/weld.h"
 #include "raster/model.h"
 
 namespace raster {
 namespace {
+
+using detail::iequals;  // STL's keywords are read in any ASCII case
 
 [[noreturn]] void stl_error(const std::string& message, std::size_t line = 0, std::size_t byte = 0) {
   throw SceneError(ErrorKind::model, "STL: " + message, ErrorLocation{"", byte, line});
@@ -27,8 +31,7 @@ namespace {
 
 void check_facets(std::uint64_t facets, const Limits& limits) {
   if (facets > static_cast<std::uint64_t>(limits.max_model_faces))
-    throw SceneError(ErrorKind::limit,
-                     "the model has more than " + std::to_string(limits.max_model_faces) + " faces");
+    detail::too_many_faces(limits.max_model_faces);
 }
 
 std::uint32_t le_u32(const char* p) {
@@ -237,7 +240,7 @@ Mesh read_binary(std::string_view bytes, const Limits& limits) {
   }
   Positions positions(mesh.positions, count, limits);
   detail::Welder welder(mesh.positions, expected, limits);
-  constexpr std::uint32_t kAhead = 32;  // facets: a table line fetched while eight facets are read
+  constexpr std::uint32_t kAhead = 32;  // facets: a table line fetched while 32 facets are read
   const bool prefetch = welder.table_bytes() > (std::size_t{1} << 20);
   const char* p = bytes.data() + 84;
   detail::ReadMeter meter(limits);  // a corner or a triangle a unit, as for the other readers
@@ -291,13 +294,6 @@ class Words {
   std::size_t at_ = 0, line_ = 1;
 };
 
-bool iequal(std::string_view word, std::string_view keyword) {
-  if (word.size() != keyword.size()) return false;
-  for (std::size_t i = 0; i < word.size(); ++i)
-    if ((word[i] >= 'A' && word[i] <= 'Z' ? word[i] + 32 : word[i]) != keyword[i]) return false;
-  return true;
-}
-
 std::string quoted(std::string_view word) {
   if (word.empty()) return "the end of the file";
   std::string out(1, '"');  // built by appending: g++ 12 warns falsely (-Wrestrict) on "\"" + string
@@ -319,7 +315,7 @@ double number(Words& in) {
 
 void expect(Words& in, std::string_view keyword) {
   const std::string_view w = in.next();
-  if (!iequal(w, keyword))
+  if (!iequals(w, keyword))
     stl_error("expected \"" + std::string(keyword) + "\", got " + quoted(w), in.line());
 }
 
@@ -342,21 +338,21 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
   std::vector<std::uint32_t> corners;  // the facet's welded corners
   detail::ReadMeter meter(limits);     // a facet line or corner a unit: the deadline is asked as lines go by
   std::string_view w = in.next();
-  if (!iequal(w, "solid")) stl_error("expected \"solid\", got " + quoted(w), in.line());
+  if (!iequals(w, "solid")) stl_error("expected \"solid\", got " + quoted(w), in.line());
   in.skip_line();  // the solid's name
   while (true) {
     meter.add(1);  // the facet (or solid): with its corners below, 4 units a triangle as binary facets
     w = in.next();
-    if (iequal(w, "endsolid")) {
+    if (iequals(w, "endsolid")) {
       in.skip_line();
       w = in.next();
       if (w.empty()) break;
-      if (!iequal(w, "solid"))
+      if (!iequals(w, "solid"))
         stl_error("expected \"solid\" or the end of the file, got " + quoted(w), in.line());
       in.skip_line();
       continue;
     }
-    if (!iequal(w, "facet")) stl_error("expected \"facet\" or \"endsolid\", got " + quoted(w), in.line());
+    if (!iequals(w, "facet")) stl_error("expected \"facet\" or \"endsolid\", got " + quoted(w), in.line());
     expect(in, "normal");
     for (int k = 0; k < 3; ++k) in.next();  // not read (see parse_stl): writers put "nan" here for slivers
     expect(in, "outer");
@@ -365,8 +361,8 @@ Mesh read_ascii(std::string_view text, const Limits& limits) {
     corners.clear();
     while (true) {
       w = in.next();
-      if (iequal(w, "endloop")) break;
-      if (!iequal(w, "vertex")) stl_error("expected \"vertex\" or \"endloop\", got " + quoted(w), in.line());
+      if (iequals(w, "endloop")) break;
+      if (!iequals(w, "vertex")) stl_error("expected \"vertex\" or \"endloop\", got " + quoted(w), in.line());
       const double x = number(in), y = number(in), z = number(in);
       positions.more(1), positions.ask();
       const Vec3f p(Vec3{x, y, z});
@@ -401,12 +397,12 @@ Mesh parse_stl(std::string_view bytes, const Limits& limits) {
   // triangles its header counts: some binary writers start the header with "solid" too (and some pad the
   // file). Text's bytes 80..83 count at least 0x09090909 triangles, which no text is long enough to hold.
   Words words(bytes);
-  const bool solid = iequal(words.next(), "solid");
+  const bool solid = iequals(words.next(), "solid");
   words.skip_line();
   const std::string_view second = words.next();
   const bool binary_size =
       bytes.size() >= 84 && bytes.size() >= 84 + 50 * std::uint64_t{le_u32(bytes.data() + 80)};
-  if (solid && (!binary_size || iequal(second, "facet") || iequal(second, "endsolid")))
+  if (solid && (!binary_size || iequals(second, "facet") || iequals(second, "endsolid")))
     return read_ascii(bytes, limits);
   if (bytes.size() < 84)
     stl_error("the file is " + std::to_string(bytes.size()) +

@@ -6,6 +6,7 @@
 #include <isa-l/igzip_lib.h>
 
 #include "base/budget_ask.h"
+#include "base/text.h"
 
 namespace raster::detail {
 namespace {
@@ -19,13 +20,6 @@ std::uint64_t le(std::string_view b, std::size_t at, int n) {
   for (int i = n - 1; i >= 0; --i)
     v = v << 8 | static_cast<unsigned char>(b[at + static_cast<std::size_t>(i)]);
   return v;
-}
-
-bool same_name(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + 32) : c; };
-           return lower(x) == lower(y);
-         });
 }
 
 constexpr std::uint32_t kEnd = 0x06054b50, kEnd64 = 0x06064b50, kEnd64Locator = 0x07064b50;
@@ -106,7 +100,7 @@ const ZipEntry* ZipArchive::find(std::string_view name) const {
   for (const ZipEntry& e : entries_) {
     std::string_view stored = e.name;
     if (stored.starts_with('/')) stored.remove_prefix(1);
-    if (same_name(stored, name)) return &e;
+    if (iequals(stored, name)) return &e;
   }
   return nullptr;
 }

@@ -99,11 +99,11 @@ ModelFormat model_format(std::string_view name) {
 
 Mesh model_mesh(std::string_view bytes, std::optional<ModelFormat> hint, const Limits& limits,
                 const Uploads& files, std::string_view mtl_text, const std::string& pointer, std::size_t byte,
-                std::optional<ModelFormat> sniffed) {
+                std::optional<ModelFormat> format) {
   Mesh mesh;
   try {
-    mesh = sniffed ? model_format(*sniffed).read(bytes, limits, files, mtl_text)
-                   : parse_model(bytes, hint, limits, files, mtl_text);
+    mesh = format ? model_format(*format).read(bytes, limits, files, mtl_text)
+                  : parse_model(bytes, hint, limits, files, mtl_text);
   } catch (const SceneError& e) {
     // An encoding error keeps its byte: the offset into the model's own text, which the message names.
     std::string message = e.what();
