@@ -35,7 +35,7 @@ constexpr const char* kUsage = R"(usage:
   rasterd render SCENE.json [-o OUT.png] [--explain]   render a scene file ('-' = stdin / stdout)
   rasterd render MODEL [-o OUT.png] [--width N] [--height N] [--background C] [--view V]
                  [--projection P] [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z|+z]
-                 [--antialias 1|4|8|16|area] [--format F] [--scale S] [--part NAME=FILE]
+                 [--antialias 1|4|8|16|area|auto] [--format F] [--scale S] [--part NAME=FILE]
                                                         a bare model (OBJ, STL, PLY, glTF) in the default
                                                         scene; the files it names (an OBJ's MTL and
                                                         textures, a glTF's buffers and images) are read

@@ -216,7 +216,8 @@ TEST(Newcomer, EverySubcommandHelpsAndNamesItsFlags) {
   { std::ofstream(model) << kObj; }
   auto [status, out] = run(RASTERD_BINARY " render " + model + " --antialias 3 -o /dev/null");
   EXPECT_EQ(status, 1) << out;
-  EXPECT_NE(out.find("--antialias: \"antialias\" is \"area\" or the samples per pixel"), std::string::npos)
+  EXPECT_NE(out.find("--antialias: \"antialias\" is \"area\", \"auto\" or the samples per pixel"),
+            std::string::npos)
       << out;
   EXPECT_EQ(out.find("query parameter"), std::string::npos) << out;
   std::tie(status, out) = run(RASTERD_BINARY " render " + model + " --widht 3 -o /dev/null");

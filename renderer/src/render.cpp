@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "base/parallel.h"
@@ -17,6 +18,7 @@
 #include "framebuffer/tiles.h"
 #include "geometry/geometry.h"
 #include "setup/setup.h"
+#include "shade/edges.h"
 #include "shade/shade.h"
 
 namespace raster {
@@ -38,6 +40,7 @@ void cover(const detail::EdgeFunctions<T, N>& e, Rect clip, Coverage coverage, c
            detail::Lanes lanes, detail::StopMeter& meter, Shader& shader) {
   switch (coverage) {
     case Coverage::centre:
+    case Coverage::edge_samples:  // never a surface's mode: its passes are centre, then samples
       return detail::cover(e, clip, detail::SamplePoint{}, lanes, meter, shader);
     case Coverage::samples:
       return detail::cover_samples(e, clip, surface.pattern, surface.sample_count, lanes, meter, shader);
@@ -46,13 +49,38 @@ void cover(const detail::EdgeFunctions<T, N>& e, Rect clip, Coverage coverage, c
   }
 }
 
+// Edge sampling's second pass, for records that write pixels directly (lines, points): draw(part) for each
+// part of `clip` in a block holding an edge pixel (the blocks' other pixels are scratch, never copied back).
+template <class Draw>
+void each_edge_block(Rect clip, const detail::EdgePixels& edges, Draw&& draw) {
+  for (int y0 = clip.y0 / detail::kBlock * detail::kBlock; y0 < clip.y1; y0 += detail::kBlock)
+    for (int x0 = clip.x0 / detail::kBlock * detail::kBlock; x0 < clip.x1; x0 += detail::kBlock)
+      if (edges.view().at(x0, y0))
+        draw(Rect{std::max(clip.x0, x0), std::max(clip.y0, y0), std::min(clip.x1, x0 + detail::kBlock),
+                  std::min(clip.y1, y0 + detail::kBlock)});
+}
+
+// Covers `clip` with `e` into `shader`: as the surface's mode says, or, with `edges` (edge sampling's second
+// pass), multisampled at the edge pixels only.
+template <typename T, int N, typename Shader>
+[[gnu::always_inline]] inline void cover_or_edges(const detail::EdgeFunctions<T, N>& e, Rect clip,
+                                                  Coverage coverage, const detail::Surface& surface,
+                                                  const detail::EdgePixels* edges, detail::Lanes lanes,
+                                                  detail::StopMeter& meter, Shader& shader) {
+  if (!edges) return cover(e, clip, coverage, surface, lanes, meter, shader);
+  const detail::BlockMasks pixels = edges->view();
+  detail::OnlyPixels<Shader> only{shader, pixels, surface.sample_count};
+  detail::cover_samples(e, clip, surface.pattern, surface.sample_count, lanes, meter, only, &pixels);
+}
+
 // Inlined into the tile loop, where `clip` lives in registers: as a call, the Rect arrived in two registers,
 // was stored as two words and loaded as one 16-byte vector, a stalled store-to-load forward per record.
 template <int C>
 [[gnu::always_inline]] inline void draw_triangle(const detail::Setup& setup, const detail::Records& part,
                                                  const detail::TriangleRecord& t,
                                                  const detail::Surface& surface, Rect clip, Coverage coverage,
-                                                 detail::Lanes lanes, detail::StopMeter& meter) {
+                                                 const detail::EdgePixels* edges, detail::Lanes lanes,
+                                                 detail::StopMeter& meter) {
   const float* attributes = part.attributes.data() + t.attributes;
   if (t.wide != detail::TriangleRecord::kFast) {
     const detail::EdgeFunctions<detail::Wide>& e = part.wide_edges[t.wide];
@@ -63,7 +91,7 @@ template <int C>
                           (e.b[2] * scale).to_double()};
     detail::TriangleShader<C> shader(setup.calls[t.call], t.back_facing, attributes, surface, dx, dy,
                                      e.area.to_double());
-    cover(e, clip, coverage, surface, lanes, meter, shader);
+    cover_or_edges(e, clip, coverage, surface, edges, lanes, meter, shader);
   } else {
     const detail::EdgeFunctions<std::int64_t>& e = t.edges;
     const double dx[3] = {double(e.a[0] * detail::kSubpixelScale), double(e.a[1] * detail::kSubpixelScale),
@@ -72,7 +100,7 @@ template <int C>
                           double(e.b[2] * detail::kSubpixelScale)};
     detail::TriangleShader<C> shader(setup.calls[t.call], t.back_facing, attributes, surface, dx, dy,
                                      double(e.area));
-    cover(e, clip, coverage, surface, lanes, meter, shader);
+    cover_or_edges(e, clip, coverage, surface, edges, lanes, meter, shader);
   }
 }
 
@@ -105,13 +133,16 @@ inline void prefetch(const detail::Records& part, const detail::Bins::Part& bins
   }
 }
 
+// Draws tile `tile`'s bin into `surface`: every pixel, or (`edges` not null: edge sampling's second pass)
+// the edge pixels only.
 template <int C>
-void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::StopMeter& meter) {
+void draw_bin(const Frame& f, int tile, const detail::Surface& surface, const detail::EdgePixels* edges,
+              detail::StopMeter& meter) {
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::Lanes lanes = f.plan.scalar_coverage      ? detail::Lanes::scalar
                               : f.plan.simd == Simd::avx2 ? detail::Lanes::avx2
                                                           : detail::Lanes::sse2;
-  const Coverage coverage = f.plan.coverage;
+  const Coverage coverage = surface.coverage_mode;
   // A union-coverage primitive (its own draw call) accumulates over its consecutive records, and is
   // composited over the pixels they reached when the next record belongs to another call.
   constexpr std::uint32_t kNone = ~0u;
@@ -145,31 +176,39 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
         const detail::QuadRecord& q = part.quads[ref & ~detail::RecordRef::kKindBits];
         const Rect clip{std::max(rect.x0, q.box.x0), std::max(rect.y0, q.box.y0), std::min(rect.x1, q.box.x1),
                         std::min(rect.y1, q.box.y1)};
+        if (edges && !edges->any_in(clip)) continue;
         join(q.call, clip);
         // Flat: the shader reads the colour row only, never the barycentric steps.
         const double none[3] = {0, 0, 0};
         detail::TriangleShader<C> shader(f.setup.calls[q.call], false, part.attributes.data() + q.attributes,
                                          surface, none, none, 1.0);
-        cover(q.edges, clip, coverage, surface, lanes, meter, shader);
+        cover_or_edges(q.edges, clip, coverage, surface, edges, lanes, meter, shader);
         continue;
       }
       if (ref & detail::RecordRef::kLineBit) {
         close();
         const detail::LineRecord& line = part.lines[ref & ~detail::RecordRef::kKindBits];
-        detail::draw_line(line, f.setup.calls[line.call].mode, surface, rect, meter);
+        const auto draw = [&](Rect part) {
+          detail::draw_line(line, f.setup.calls[line.call].mode, surface, part, meter);
+        };
+        edges ? each_edge_block(rect, *edges, draw) : draw(rect);
         continue;
       }
       if (ref & detail::RecordRef::kPointBit) {
         close();
         const detail::PointRecord& point = part.points[ref & ~detail::RecordRef::kKindBits];
-        detail::draw_point(point, f.setup.calls[point.call].mode, surface, rect, meter);
+        const auto draw = [&](Rect part) {
+          detail::draw_point(point, f.setup.calls[point.call].mode, surface, part, meter);
+        };
+        edges ? each_edge_block(rect, *edges, draw) : draw(rect);
         continue;
       }
       const detail::TriangleRecord& t = part.triangles[ref];
       const Rect clip{std::max(rect.x0, t.box.x0), std::max(rect.y0, t.box.y0), std::min(rect.x1, t.box.x1),
                       std::min(rect.y1, t.box.y1)};
+      if (edges && !edges->any_in(clip)) continue;
       join(t.call, clip);
-      draw_triangle<C>(f.setup, part, t, surface, clip, coverage, lanes, meter);
+      draw_triangle<C>(f.setup, part, t, surface, clip, coverage, edges, lanes, meter);
     }
   }
   close();
@@ -180,13 +219,13 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, detail::
 template <int C>
 void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
   if (f.plan.tiles_in_place)
-    return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), meter);
+    return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), nullptr, meter);
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::SamplePoint* pattern =
       f.plan.coverage == Coverage::samples ? detail::sample_pattern(f.plan.samples).data() : nullptr;
   detail::Surface surface = detail::open_tile<C>(storage, f.plan, pattern, rect, f.image);
   if (pattern) surface.centroids = detail::centroid_offsets(f.plan.samples);
-  draw_bin<C>(f, tile, surface, meter);
+  draw_bin<C>(f, tile, surface, nullptr, meter);
   if (meter.stopped()) return;
   if (f.plan.coverage == Coverage::samples) {
     detail::resolve_samples<C>(surface, rect);
@@ -195,16 +234,35 @@ void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::S
   detail::close_tile<C>(surface, rect, f.image);
 }
 
-void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
-  switch (f.image.channels()) {
+// Edge sampling's second pass over one tile: its edge pixels (none: nothing to do) drawn again from the
+// background, multisampled, resolved and copied over the aliased pixels there.
+template <int C>
+void draw_edge_tile(const Frame& f, int tile, const detail::EdgePixels& edges, const std::uint8_t* background,
+                    detail::TileStorage& storage, detail::StopMeter& meter) {
+  const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
+  if (!edges.any_in(rect)) return;
+  const detail::SamplePoint* pattern = detail::sample_pattern(f.plan.samples).data();
+  detail::Surface surface =
+      detail::open_edge_tile<C>(storage, f.plan, pattern, rect, edges.view(), background);
+  surface.centroids = detail::centroid_offsets(f.plan.samples);
+  draw_bin<C>(f, tile, surface, &edges, meter);
+  if (meter.stopped()) return;
+  detail::resolve_samples<C>(surface, rect);
+  detail::close_edge_tile<C>(surface, rect, edges.view(), f.image);
+}
+
+// `draw` for the image's channel count (a constant of the kernels).
+template <class Draw>
+void with_channels(int channels, Draw&& draw) {
+  switch (channels) {
     case 1:
-      return draw_tile<1>(f, tile, storage, meter);
+      return draw(std::integral_constant<int, 1>{});
     case 2:
-      return draw_tile<2>(f, tile, storage, meter);
+      return draw(std::integral_constant<int, 2>{});
     case 3:
-      return draw_tile<3>(f, tile, storage, meter);
+      return draw(std::integral_constant<int, 3>{});
     default:
-      return draw_tile<4>(f, tile, storage, meter);
+      return draw(std::integral_constant<int, 4>{});
   }
 }
 
@@ -274,6 +332,9 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   if (control.stats) count_storage(setup, bins, image, scratch, *control.stats);
   lap(&RenderStats::clear_ms);
   const Frame frame{setup, bins, plan, image};
+  // The background as a pixel of the image's format, before anything is drawn (edge sampling redraws its
+  // blocks from it).
+  const std::vector<std::uint8_t> background(image.pixels.begin(), image.pixels.begin() + image.channels());
   // Tiles are taken column by column; which thread takes one does not change its bytes. Threads drawing at
   // once are then above and below each other: side by side, drawing in place, they would share the cache
   // line at their common edge in every row (the image is only 16-byte aligned). One thread: no hand-off.
@@ -282,9 +343,24 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
                          const int t =
                              static_cast<int>(piece % static_cast<std::size_t>(bins.rows)) * bins.columns +
                              static_cast<int>(piece / static_cast<std::size_t>(bins.rows));
-                         draw_tile(frame, t, scratch[static_cast<std::size_t>(thread)], own);
+                         with_channels(image.channels(), [&](auto c) {
+                           draw_tile<c.value>(frame, t, scratch[static_cast<std::size_t>(thread)], own);
+                         });
                        });
   if (stopped) cancelled();
+  if (plan.coverage == Coverage::edge_samples) {
+    // The aliased picture is whole: the blocks where it shows an edge, then those drawn again multisampled.
+    const detail::EdgePixels edges = detail::find_edge_pixels(image);
+    if (control.stats) control.stats->edge_blocks = edges.blocks;
+    detail::parallel_for(threads, static_cast<std::size_t>(tiles), stop,
+                         [&](std::size_t t, detail::StopMeter& own, int thread) {
+                           with_channels(image.channels(), [&](auto c) {
+                             draw_edge_tile<c.value>(frame, static_cast<int>(t), edges, background.data(),
+                                                     scratch[static_cast<std::size_t>(thread)], own);
+                           });
+                         });
+    if (stopped) cancelled();
+  }
   lap(&RenderStats::tiles_ms);
   if (control.stats) {
     control.stats->shaded_pixels = 0;

@@ -1084,10 +1084,13 @@ void read_scene_fields(const json& doc, Scene& scene, const Limits& limits) {
     const Path at(kRoot, "antialias");
     if (it->is_string() && *it == "area") {
       scene.antialias = raster::Antialias::area;
+    } else if (it->is_string() && *it == "auto") {
+      scene.antialias = raster::Antialias::automatic;
     } else {
       const std::int64_t n = it->is_string() ? 0 : read_integer(*it, at);
       if (!raster::antialias_of_samples(n, scene.antialias))
-        invalid(at, "\"antialias\" is \"area\" or the samples per pixel: 1, 4, 8 or 16; got " + it->dump());
+        invalid(at, "\"antialias\" is \"area\", \"auto\" or the samples per pixel: 1, 4, 8 or 16; got " +
+                        it->dump());
     }
   }
   if (auto it = doc.find("background"); it != doc.end())

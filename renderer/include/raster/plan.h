@@ -212,7 +212,15 @@ enum class Coverage : std::uint8_t {
   centre,   ///< aliased: a pixel is covered when its centre is (top-left rule for centres on an edge)
   samples,  ///< multisampling: at each of RenderPlan::samples positions of the standard pattern
   area,     ///< exact area: the share of the pixel's square (2D scenes with "antialias": "area")
+  /// "antialias": "auto": every tile drawn aliased; then the 8x8 blocks where a pixel differs from a
+  /// neighbour (shade/edges.h) drawn again multisampled at RenderPlan::samples, from the same records
+  edge_samples,
 };
+
+/// Whether `coverage` multisamples somewhere: its records are set up for, and its tiles keep, samples.
+constexpr bool multisampled(Coverage coverage) {
+  return coverage == Coverage::samples || coverage == Coverage::edge_samples;
+}
 
 /// Which instruction set the pixel kernels use. SSE2 is the x86-64 floor (and what other machines' generic
 /// vector code stands for); AVX2 kernels exist for the hottest loops and give the same bytes.
@@ -227,7 +235,7 @@ struct RenderPlan {
   PixelFormat format = PixelFormat::rgb8;  ///< fewest channels that hold every colour the render can make
   bool depth_buffer = false;               ///< only 3D content needs one; 2D never does
   Coverage coverage = Coverage::centre;    ///< how triangles cover pixels
-  int samples = 1;                         ///< per pixel: > 1 exactly when coverage is samples
+  int samples = 1;                         ///< per pixel: > 1 exactly when coverage multisamples
   std::vector<DrawPlan> draws;             ///< the visible primitives, in scene order
 
   // Counts of the per-primitive decisions, for the explain output and the X-Render-Plan header.

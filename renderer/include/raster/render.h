@@ -22,6 +22,7 @@ struct RenderStats {
   std::int64_t bin_entries = 0;  ///< record-tile pairs in the bins
   std::int64_t shaded_pixels = 0;  ///< multisampled renders: pixels shaded, once per pixel per triangle
                                    ///< whatever the samples it covers; 0 for other renders
+  std::int64_t edge_blocks = 0;    ///< "antialias": "auto": the 8x8 blocks drawn again multisampled
   // Wall time of each stage, milliseconds (filled only when stats are asked for):
   double geometry_ms = 0;  ///< transform, lighting per face, clipping, projection and setup of every record
   double bin_ms = 0;       ///< binning the records to tiles

@@ -278,12 +278,14 @@ static_assert(sizeof(Primitive) == 24);
 /// How edges are smoothed ("antialias"): the one value every later decision comes from (the plan turns it
 /// into RenderPlan::coverage and RenderPlan::samples; nothing after the plan looks at it).
 enum class Antialias : std::uint8_t {
-  none,    ///< "antialias": 1 (the default): a pixel is covered or not, tested at its centre
-  msaa4,   ///< "antialias": 4: multisampling at 4 positions of the standard pattern
-  msaa8,   ///< "antialias": 8
-  msaa16,  ///< "antialias": 16
-  area,    ///< "antialias": "area": every pixel takes the exact share of its square each 2D shape covers;
-           ///< 3D content is multisampled instead (see the plan)
+  none,       ///< "antialias": 1 (the default): a pixel is covered or not, tested at its centre
+  msaa4,      ///< "antialias": 4: multisampling at 4 positions of the standard pattern
+  msaa8,      ///< "antialias": 8
+  msaa16,     ///< "antialias": 16
+  area,       ///< "antialias": "area": every pixel takes the exact share of its square each 2D shape covers;
+              ///< 3D content is multisampled instead (see the plan)
+  automatic,  ///< "antialias": "auto": aliased, then the blocks where neighbouring pixels differ drawn
+              ///< again at 8 samples (the default of a bare model; docs/accuracy.md gives its error)
 };
 
 /// The sample counts "antialias" accepts as a number, each with its mode: the one place the set is written.

@@ -116,7 +116,7 @@ consteval bool raw() {
 template <class T, class Out>
 void write_canonical(const T& v, Out& out) {
   if constexpr (std::is_same_v<T, Antialias>) {
-    const int samples = sample_count(v);
+    const int samples = v == Antialias::automatic ? -1 : sample_count(v);  // "auto": a count of its own
     const bool area = v == Antialias::area;
     out(&samples, sizeof samples), out(&area, sizeof area);
   } else if constexpr (fields_detail::raw<T>()) {

@@ -66,6 +66,34 @@ template <class Visit>
   }
 }
 
+/// A multisampling shade policy restricted to the pixels `only` holds (a mask per block of the image): the
+/// blocks, sample masks and rectangles the walker gives reach `shade` for those pixels alone, and a block
+/// with none of them not at all. Edge sampling's second pass draws the edge pixels with it.
+template <class Shade>
+struct OnlyPixels {
+  Shade& shade;
+  BlockMasks only;
+  int count;  ///< samples a pixel: cover_samples gives count + 1 masks (the last, the pixel centres)
+
+  void operator()(const Block& b) {
+    Block kept = b;
+    kept.mask &= only.at(b.x0, b.y0);
+    if (kept.mask) shade(kept);
+  }
+  void samples(const Block& b, const std::uint64_t* masks) {
+    const std::uint64_t keep = only.at(b.x0, b.y0);
+    Block kept = b;
+    kept.mask &= keep;
+    if (!kept.mask) return;
+    std::uint64_t kept_masks[17];
+    for (int s = 0; s <= count; ++s) kept_masks[s] = masks[s] & keep;
+    shade.samples(kept, kept_masks);
+  }
+  void rect(Rect clip, const Block& first) {
+    for_each_block(clip, first, [&](const Block& b) { (*this)(b); });
+  }
+};
+
 /// How the partial blocks' masks are computed: eight lanes of a row at a time (SSE2 or AVX2, int32 lanes
 /// relative to the block, only for the edges that cross it) or one pixel at a time in the edges' own integer
 /// type. All give the same mask; tests hold them to it.
@@ -450,10 +478,11 @@ void cover_area(const EdgeFunctions<T, N>& edges, Rect clip, Lanes lanes, StopMe
 /// sample positions of `pattern`. Blocks whose every sample is inside go to shade(block) (all samples
 /// covered) and rectangles to shade.rect; others to shade.samples(block, masks), block.mask being the pixels
 /// with any sample covered and masks[count] those whose centre is covered. The values in a Block are at the
-/// pixel centres (where shading is evaluated), whatever the pattern.
+/// pixel centres (where shading is evaluated), whatever the pattern. With `only`, partial blocks are masked
+/// to its pixels before their samples are (the shade policy, OnlyPixels, masks the rest).
 template <typename T, int N, typename Shade>
 void cover_samples(const EdgeFunctions<T, N>& edges, Rect clip, const SamplePoint* pattern, int count,
-                   Lanes lanes, StopMeter& meter, Shade&& shade) {
+                   Lanes lanes, StopMeter& meter, Shade&& shade, const BlockMasks* only = nullptr) {
   using namespace coverage_detail;
   if (clip.empty()) return;
   const BlockGrid<T, N> g(edges, clip, SamplePoint{});
@@ -489,6 +518,7 @@ void cover_samples(const EdgeFunctions<T, N>& edges, Rect clip, const SamplePoin
 #endif
   walk_blocks(g, edges.area, clip, least, most, meter, shade,
               [&](Block& block, const T(&e)[N], std::uint64_t clipped, int r0, int r1) {
+                if (only && !(clipped &= only->at(block.x0, block.y0))) return;  // none of `only`'s
                 std::uint64_t any = 0;
 #if defined(__x86_64__)
                 if constexpr (std::is_same_v<T, std::int64_t>) {

@@ -6,12 +6,14 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <memory>
 #include <vector>
 
 #include "base/grid.h"
+#include "base/masks.h"
 #include "framebuffer/surface.h"
 #include "raster/image.h"
 #include "raster/plan.h"
@@ -53,7 +55,8 @@ Surface image_surface(Image& image, const RenderPlan& plan, TileStorage& storage
 
 /// The surface of tile `rect` in `storage`, ready to draw: its colour filled from the image (which holds the
 /// background there), depth and the expanded bits cleared, the plan's coverage mode set and, multisampled,
-/// its sample planes and `pattern` (the plan's sample positions).
+/// its sample planes and `pattern` (the plan's sample positions). Edge sampling's first pass is aliased:
+/// its surface has centre coverage (open_edge_tile opens the second).
 template <int C>
 Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoint* pattern, Rect rect,
                   const Image& image) {
@@ -72,7 +75,7 @@ Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoin
   surface.shaded = &storage.shaded;
   surface.simd = plan.simd;
   surface.plane = static_cast<std::size_t>(stride) * block_rows;
-  surface.coverage_mode = plan.coverage;
+  surface.coverage_mode = plan.coverage == Coverage::edge_samples ? Coverage::centre : plan.coverage;
   if (plan.coverage == Coverage::samples) {
     surface.sample_count = plan.samples;
     surface.pattern = pattern;
@@ -93,6 +96,64 @@ Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoin
     for (std::size_t at = 0; at < surface.plane; ++at) surface.expand<C>(at);
   }
   return surface;
+}
+
+/// Edge sampling's second pass over tile `rect`: a multisampled surface (the plan's samples at `pattern`)
+/// whose blocks holding a pixel of `only` (a mask per block of the image) hold the background colour
+/// `background` (C bytes), their depth (3D) cleared in every sample plane. Only the pixels of `only` are
+/// copied back (close_edge_tile); the rest of those blocks is scratch.
+template <int C>
+Surface open_edge_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoint* pattern, Rect rect,
+                       BlockMasks only, const std::uint8_t* background) {
+  const int stride = (rect.x1 - rect.x0 + kBlock - 1) / kBlock * kBlock;
+  const int block_rows = (rect.y1 - rect.y0 + kBlock - 1) / kBlock * kBlock;
+  Surface surface{storage.color.data(),
+                  storage.depth.empty() ? nullptr : storage.depth.data(),
+                  nullptr,
+                  stride,
+                  rect.x0,
+                  rect.y0,
+                  C};
+  surface.shaded = &storage.shaded;
+  surface.simd = plan.simd;
+  surface.plane = static_cast<std::size_t>(stride) * block_rows;
+  surface.coverage_mode = Coverage::samples;
+  surface.sample_count = plan.samples;
+  surface.pattern = pattern;
+  surface.samples = storage.samples.get();
+  surface.expanded = storage.expanded.data();
+  surface.keep_samples = plan.keep_samples;
+  std::fill_n(surface.expanded, surface.plane / 64, 0);
+  for (int y0 = rect.y0; y0 < rect.y1; y0 += kBlock)
+    for (int x0 = rect.x0; x0 < rect.x1; x0 += kBlock) {
+      const std::uint64_t mask = only.at(x0, y0);
+      if (!mask) continue;
+      const int x1 = std::min(rect.x1, x0 + kBlock), y1 = std::min(rect.y1, y0 + kBlock);
+      for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) std::memcpy(surface.pixel<C>(x, y), background, C);
+        for (int s = 0; surface.depth && s < surface.sample_count; ++s)  // 2D has no depth
+          std::fill_n(surface.depth + static_cast<std::size_t>(s) * surface.plane + surface.index(x0, y),
+                      x1 - x0, 0.0f);
+      }
+      if (plan.keep_samples) {  // the test hook: every pixel keeps a colour per sample from the start
+        surface.expanded_bits(x0, y0) = mask;
+        for (std::uint64_t m = mask; m; m &= m - 1)
+          surface.expand<C>(
+              surface.index(x0 + std::countr_zero(m) % kBlock, y0 + std::countr_zero(m) / kBlock));
+      }
+    }
+  return surface;
+}
+
+/// Copies the pixels of `only` inside tile `rect` from `surface` back into the image.
+template <int C>
+void close_edge_tile(const Surface& surface, Rect rect, BlockMasks only, Image& image) {
+  for (int y0 = rect.y0; y0 < rect.y1; y0 += kBlock)
+    for (int x0 = rect.x0; x0 < rect.x1; x0 += kBlock)
+      for (std::uint64_t m = only.at(x0, y0); m; m &= m - 1) {
+        const int x = x0 + std::countr_zero(m) % kBlock, y = y0 + std::countr_zero(m) / kBlock;
+        std::memcpy(image.pixels.data() + image_offset<C>(image, x, y), surface.pixel<C>(x, y), C);
+      }
 }
 
 /// Copies the finished (resolved) colour of tile `rect` from `surface` back into the image.

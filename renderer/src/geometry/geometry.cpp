@@ -83,7 +83,7 @@ Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) 
   Setup setup;
   setup.width = plan.width, setup.height = plan.height;
   setup.centre_samples = plan.coverage == Coverage::centre;
-  if (plan.coverage == Coverage::samples) {
+  if (multisampled(plan.coverage)) {
     setup.pattern = sample_pattern(plan.samples).data();
     setup.pattern_size = plan.samples;
   }

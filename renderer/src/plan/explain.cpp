@@ -35,9 +35,10 @@ std::string explain_json(const RenderPlan& p) {
   j["samples"] = p.samples;
   j["simd"] = p.simd == Simd::avx2 ? "avx2" : "sse2";
   j["tiles_in_place"] = p.tiles_in_place;
-  j["antialias"] = p.coverage == Coverage::area      ? "area"
-                   : p.coverage == Coverage::samples ? "multisample"
-                                                     : "none";
+  j["antialias"] = p.coverage == Coverage::area           ? "area"
+                   : p.coverage == Coverage::samples      ? "multisample"
+                   : p.coverage == Coverage::edge_samples ? "auto"
+                                                          : "none";
   j["primitives"] = {{"flat", p.flat_count},     {"smooth", p.smooth_count},
                      {"blend", p.blend_count},   {"culled", p.culled_count},
                      {"lit", p.lit_count},       {"triangles_3d", p.triangles_3d},
@@ -82,8 +83,10 @@ std::string explain_json(const RenderPlan& p) {
 }
 
 std::string explain_line(const RenderPlan& p) {
-  return std::string(format_name(p.format)) + " depth=" + (p.depth_buffer ? "f32" : "none") +
-         " samples=" + (p.coverage == Coverage::area ? std::string("area") : std::to_string(p.samples)) +
+  return std::string(format_name(p.format)) + " depth=" + (p.depth_buffer ? "f32" : "none") + " samples=" +
+         (p.coverage == Coverage::area           ? std::string("area")
+          : p.coverage == Coverage::edge_samples ? "auto" + std::to_string(p.samples)
+                                                 : std::to_string(p.samples)) +
          " flat=" + std::to_string(p.flat_count) + " smooth=" + std::to_string(p.smooth_count) +
          " blend=" + std::to_string(p.blend_count) + " culled=" + std::to_string(p.culled_count) +
          (p.lit_count ? " lit=" + std::to_string(p.lit_count) : "") + " threads=" + std::to_string(p.threads);

@@ -51,6 +51,8 @@ constexpr int kTile = 128;
 constexpr int kSampleTile = 64;
 // "antialias": "area" on a scene with 3D content: multisampling at this many samples (docs/accuracy.md).
 constexpr Antialias kAreaFallback3d = Antialias::msaa8;
+// "auto": the samples its edge blocks are drawn at (docs/accuracy.md measures 4, 8 and 16 there).
+constexpr Antialias kEdgeSampling = Antialias::msaa8;
 
 struct Box {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -303,10 +305,15 @@ Tally plan_draws(const Scene& scene, RenderPlan& out) {
 // each triangle covers is not what is visible (and abutting mesh triangles would seam), so 3D gets samples.
 void plan_coverage(Antialias antialias, RenderPlan& out, Tally& tally) {
   const bool area = antialias == Antialias::area;
-  out.samples = sample_count(area && tally.any_3d ? kAreaFallback3d : antialias);
-  out.coverage = area && !tally.any_3d ? Coverage::area
-                 : out.samples > 1     ? Coverage::samples
-                                       : Coverage::centre;
+  if (antialias == Antialias::automatic) {
+    out.samples = sample_count(kEdgeSampling);
+    out.coverage = Coverage::edge_samples;
+  } else {
+    out.samples = sample_count(area && tally.any_3d ? kAreaFallback3d : antialias);
+    out.coverage = area && !tally.any_3d ? Coverage::area
+                   : out.samples > 1     ? Coverage::samples
+                                         : Coverage::centre;
+  }
   if (area && tally.any_3d)
     for (DrawPlan& d : out.draws) d.mode.union_coverage = false, tally.any_union = false;
   // Multisampled 3D lines are rectangles a pixel wide, so their edges are covered per sample like the rest.
@@ -347,7 +354,7 @@ void plan_buffers(RenderPlan& out, bool any_union) {
   t.color_bytes = out.tiles_in_place ? 0 : t.pixels * channels;
   t.depth_floats = out.depth_buffer ? t.pixels * out.samples : 0;
   // Multisampling: a colour per sample, used only where a pixel's samples differ (one bit a pixel says so).
-  t.sample_bytes = out.coverage == Coverage::samples ? t.pixels * out.samples * channels : 0;
+  t.sample_bytes = multisampled(out.coverage) ? t.pixels * out.samples * channels : 0;
   // Union coverage: its accumulation, and a bit a pixel saying which pixels were reached.
   t.coverage_floats = any_union ? t.pixels * kUnionFloats : 0;
   t.expanded_words = t.sample_bytes > 0 || t.coverage_floats > 0 ? t.pixels / 64 : 0;

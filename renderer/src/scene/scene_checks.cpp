@@ -49,6 +49,7 @@ Vec3 up_axis(std::string_view name) {
 
 Antialias antialias(std::string_view text) {
   if (text == "area") return Antialias::area;
+  if (text == "auto") return Antialias::automatic;
   int samples = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), samples);
   Antialias a = Antialias::none;

@@ -33,7 +33,7 @@ inline constexpr Vec3 kUpAxes[] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}
                                    {0, 0, -1}, {1, 0, 0},  {0, 1, 0}, {0, 0, 1}};
 /// How a bad "antialias" is refused (the value as sent follows).
 inline constexpr std::string_view kAntialiasRule =
-    "\"antialias\" is \"area\" or the samples per pixel: 1, 4, 8 or 16; got ";
+    "\"antialias\" is \"area\", \"auto\" or the samples per pixel: 1, 4, 8 or 16; got ";
 inline constexpr Range kLineWidth{0, 4096, true, false,
                                   "line \"width\" is in pixels, more than 0 and at most 4096"};
 inline constexpr Range kEdgeWidth{0, 64, true, false, "edge width is in (0, 64] pixels"};

@@ -371,13 +371,13 @@ constexpr Field<Keys> kRootFields[] = {
      [](Reader& r, Keys&, const Path& at) { r.scene.height = side(r, at, "height", r.limits.max_height); }},
     {"background", format::kString | format::kArray, "a colour (\"#rrggbb\" or [r, g, b])",
      [](Reader& r, Keys&, const Path& at) { r.scene.background = r.color(at); }},
-    {"antialias", format::kString | format::kNumber, "\"area\" or a number",
+    {"antialias", format::kString | format::kNumber, "\"area\", \"auto\" or a number",
      [](Reader& r, Keys&, const Path& at) {
        const std::string rule(format::kAntialiasRule);
        if (r.in.peek() == Kind::string) {
          const std::string_view s = r.in.string();
-         if (s != "area") r.invalid(at, rule + "\"" + std::string(s) + "\"");
-         return void(r.scene.antialias = Antialias::area);
+         if (s != "area" && s != "auto") r.invalid(at, rule + "\"" + std::string(s) + "\"");
+         return void(r.scene.antialias = s == "area" ? Antialias::area : Antialias::automatic);
        }
        if (!antialias_of_samples(r.integer(at), r.scene.antialias)) r.invalid(at, rule + r.number_text());
      }},

@@ -150,8 +150,9 @@ void check_camera_and_light(const Scene& scene) {
 void validate(const Scene& scene) {
   if (scene.width < 1 || scene.height < 1)
     throw SceneError(ErrorKind::invalid, "image size must be at least 1x1");
-  if (scene.antialias > Antialias::area)  // only a cast makes one; the plan's choices assume the five modes
-    throw SceneError(ErrorKind::invalid, "\"antialias\" must be 1, 4, 8 or 16 samples", {"/antialias", 0, 0});
+  if (scene.antialias > Antialias::automatic)  // only a cast makes one; the plan's choices assume the six
+    throw SceneError(ErrorKind::invalid, "\"antialias\" must be 1, 4, 8 or 16 samples, \"area\" or \"auto\"",
+                     {"/antialias", 0, 0});
   check_references(scene);
   check_camera_and_light(scene);
 }

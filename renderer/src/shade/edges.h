@@ -1,0 +1,39 @@
+// Edges: an aliased picture -> the pixels that differ visibly from a neighbour. Edge-sampled anti-aliasing
+// (Coverage::edge_samples) draws every tile aliased, finds these pixels over the whole image, and draws
+// only them again multisampled: inside a smooth surface neighbouring pixels differ by a shade or two and
+// multisampling would give back about the same colours, so only silhouettes, creases and depth steps pay
+// for samples.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "base/grid.h"
+#include "base/masks.h"
+#include "raster/image.h"
+
+namespace raster::detail {
+
+/// Two neighbouring pixels (side by side, one above the other, or diagonal) are an edge when a channel
+/// differs by more than this (in 1/255): docs/accuracy.md's measure counts a pixel as an edge pixel when its
+/// 64 reference samples differ by more than 8, and a smaller step stays within the error the picture is
+/// judged by.
+inline constexpr int kEdgeContrast = 8;
+
+/// The image's edge pixels: those that differ by more than the contrast from a neighbour in the eight
+/// directions (inside the image), as a mask per 8x8 block (base/masks.h's layout).
+struct EdgePixels {
+  int columns = 0, rows = 0;  ///< blocks a row, block rows: the image's size in blocks, rounded up
+  std::vector<std::uint64_t>
+      masks;                ///< columns x rows, row-major: bit 8 r + i for pixel (8 bx + i, 8 by + r)
+  std::int64_t blocks = 0;  ///< blocks with an edge pixel
+
+  BlockMasks view() const { return {masks.data(), columns}; }
+  /// Whether a pixel of `rect` (inside the image) is an edge pixel.
+  bool any_in(Rect rect) const;
+};
+
+/// The edge pixels of `image` at `contrast` (kEdgeContrast unless a test asks otherwise).
+EdgePixels find_edge_pixels(const Image& image, int contrast = kEdgeContrast);
+
+}  // namespace raster::detail
