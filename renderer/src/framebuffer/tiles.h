@@ -53,18 +53,13 @@ Surface image_surface(Image& image, const RenderPlan& plan, TileStorage& storage
   return surface;
 }
 
-/// The surface of tile `rect` in `storage`, ready to draw: its colour filled from the image (which holds the
-/// background there), depth and the expanded bits cleared, the plan's coverage mode set and, multisampled,
-/// its sample planes and `pattern` (the plan's sample positions). Edge sampling's first pass is aliased:
-/// its surface has centre coverage (open_edge_tile opens the second).
+/// The surface over `storage` for tile `rect`, nothing cleared yet: its buffers, the strides and the plan's
+/// kernels. Rows of the storage are whole blocks wide (and planes whole blocks tall): a block at the image's
+/// edge stays in its own rows.
 template <int C>
-Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoint* pattern, Rect rect,
-                  const Image& image) {
-  const int w = rect.x1 - rect.x0, rows = rect.y1 - rect.y0;
-  // Rows of the storage are whole blocks wide (and planes whole blocks tall): a block at the image's edge
-  // stays in its own rows.
-  const int stride = (w + kBlock - 1) / kBlock * kBlock;
-  const int block_rows = (rows + kBlock - 1) / kBlock * kBlock;
+Surface tile_surface(TileStorage& storage, const RenderPlan& plan, Rect rect) {
+  const int stride = (rect.x1 - rect.x0 + kBlock - 1) / kBlock * kBlock;
+  const int block_rows = (rect.y1 - rect.y0 + kBlock - 1) / kBlock * kBlock;
   Surface surface{storage.color.data(),
                   storage.depth.empty() ? nullptr : storage.depth.data(),
                   storage.coverage.empty() ? nullptr : storage.coverage.data(),
@@ -75,6 +70,18 @@ Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoin
   surface.shaded = &storage.shaded;
   surface.simd = plan.simd;
   surface.plane = static_cast<std::size_t>(stride) * block_rows;
+  return surface;
+}
+
+/// The surface of tile `rect` in `storage`, ready to draw: its colour filled from the image (which holds the
+/// background there), depth and the expanded bits cleared, the plan's coverage mode set and, multisampled,
+/// its sample planes and `pattern` (the plan's sample positions). Edge sampling's first pass is aliased:
+/// its surface has centre coverage (open_edge_tile opens the second).
+template <int C>
+Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoint* pattern, Rect rect,
+                  const Image& image) {
+  const int w = rect.x1 - rect.x0;
+  Surface surface = tile_surface<C>(storage, plan, rect);
   surface.coverage_mode = plan.coverage == Coverage::edge_samples ? Coverage::centre : plan.coverage;
   if (plan.coverage == Coverage::samples) {
     surface.sample_count = plan.samples;
@@ -105,18 +112,8 @@ Surface open_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoin
 template <int C>
 Surface open_edge_tile(TileStorage& storage, const RenderPlan& plan, const SamplePoint* pattern, Rect rect,
                        BlockMasks only, const std::uint8_t* background) {
-  const int stride = (rect.x1 - rect.x0 + kBlock - 1) / kBlock * kBlock;
-  const int block_rows = (rect.y1 - rect.y0 + kBlock - 1) / kBlock * kBlock;
-  Surface surface{storage.color.data(),
-                  storage.depth.empty() ? nullptr : storage.depth.data(),
-                  nullptr,
-                  stride,
-                  rect.x0,
-                  rect.y0,
-                  C};
-  surface.shaded = &storage.shaded;
-  surface.simd = plan.simd;
-  surface.plane = static_cast<std::size_t>(stride) * block_rows;
+  Surface surface = tile_surface<C>(storage, plan, rect);
+  surface.coverage = nullptr;  // no union coverage: edge sampling never covers by area
   surface.coverage_mode = Coverage::samples;
   surface.sample_count = plan.samples;
   surface.pattern = pattern;
