@@ -302,8 +302,10 @@ int main(int argc, char** argv) {
       row.ms[k] = ms, row.mean[k] = one.mean();
     }
     if (m.name == "bunny.obj" || m.name.starts_with("knot.")) named.push_back(row);
-    std::fprintf(stderr, "%-40s aliased %.2f  4x %.2f (%.2f ms / %.2f ms)  auto %.2f (%.2f ms)\n",
-                 m.name.c_str(), row.mean[0], row.mean[1], row.ms[0], row.ms[1], row.mean[4], row.ms[4]);
+    std::fprintf(stderr,
+                 "%-40s aliased %.2f  4x %.2f (%.2f ms / %.2f ms)  auto %.2f (%.2f ms)  stairs %zu / %zu\n",
+                 m.name.c_str(), row.mean[0], row.mean[1], row.ms[0], row.ms[1], row.mean[4], row.ms[4],
+                 stairs_of[1], stairs_of[4]);
     // "auto" against 4 samples, model by model: the mean edge error and the stairs.
     auto_not_worse += row.mean[4] <= row.mean[1] && stairs_of[4] <= stairs_of[1];
   }

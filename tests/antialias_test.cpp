@@ -295,6 +295,11 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
        raster::PixelFormat::rgb8,
        true,
        8},
+      {"auto 3D",
+       {{"width", 70}, {"height", 64}, {"antialias", "auto"}, {"primitives", {tri3d}}},
+       raster::PixelFormat::rgb8,
+       true,
+       8},
       {"tiny", {{"width", 1}, {"height", 1}}, raster::PixelFormat::grey8, false, 1},
       {"large",
        {{"width", 2000},
@@ -325,6 +330,12 @@ TEST(PlanMemory, AllocatedPixelBytesEqualThePlanForEveryClass) {
         << c.name;
     EXPECT_EQ(plan.memory.sample_bytes,
               c.samples > 1 ? tile * c.samples * raster::channel_count(c.format) + tile / 8 : 0)
+        << c.name;
+    // "auto" finds its edge pixels over the whole image: 8 bytes a block, and a byte a channel of a row.
+    const bool automatic = scene.antialias == raster::Antialias::automatic;
+    EXPECT_EQ(plan.memory.edge_bytes, automatic ? ((scene.width + 7) / 8) * ((scene.height + 7) / 8) * 8 +
+                                                      (scene.width - 1) * raster::channel_count(c.format)
+                                                : 0)
         << c.name;
     raster::RenderStats stats;
     raster::RenderControl control;

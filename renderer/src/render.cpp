@@ -348,10 +348,15 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
                          });
                        });
   if (stopped) cancelled();
+  lap(&RenderStats::tiles_ms);
   if (plan.coverage == Coverage::edge_samples) {
     // The aliased picture is whole: the blocks where it shows an edge, then those drawn again multisampled.
     const detail::EdgePixels edges = detail::find_edge_pixels(image);
-    if (control.stats) control.stats->edge_blocks = edges.blocks;
+    if (control.stats) {
+      control.stats->edge_blocks = edges.blocks, control.stats->edge_pixels = edges.pixels;
+      control.stats->pixel_bytes += edges.bytes;
+    }
+    lap(&RenderStats::find_edges_ms);
     detail::parallel_for(threads, static_cast<std::size_t>(tiles), stop,
                          [&](std::size_t t, detail::StopMeter& own, int thread) {
                            with_channels(image.channels(), [&](auto c) {
@@ -360,8 +365,8 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
                            });
                          });
     if (stopped) cancelled();
+    lap(&RenderStats::edge_tiles_ms);
   }
-  lap(&RenderStats::tiles_ms);
   if (control.stats) {
     control.stats->shaded_pixels = 0;
     for (const detail::TileStorage& t : scratch) control.stats->shaded_pixels += t.shaded;

@@ -190,8 +190,11 @@ struct MemoryPlan {
                                     ///< floats and a bit a pixel), when some primitive has union_coverage
   std::int64_t texture_bytes = 0;   ///< textures of textured meshes: their decoded texels (held by the scene)
                                     ///< plus the mipmaps each render makes of them
+  std::int64_t edge_bytes = 0;      ///< "antialias": "auto": the edge pixels' masks (8 bytes per 8x8 block of
+                                    ///< the image) and a row of the quads' differences (a byte per channel)
   std::int64_t total() const {
-    return color_bytes + depth_bytes + sample_bytes + tile_bytes + coverage_bytes + texture_bytes;
+    return color_bytes + depth_bytes + sample_bytes + tile_bytes + coverage_bytes + texture_bytes +
+           edge_bytes;
   }
 };
 

@@ -22,12 +22,15 @@ struct RenderStats {
   std::int64_t bin_entries = 0;  ///< record-tile pairs in the bins
   std::int64_t shaded_pixels = 0;  ///< multisampled renders: pixels shaded, once per pixel per triangle
                                    ///< whatever the samples it covers; 0 for other renders
-  std::int64_t edge_blocks = 0;    ///< "antialias": "auto": the 8x8 blocks drawn again multisampled
+  std::int64_t edge_blocks = 0;    ///< "antialias": "auto": the 8x8 blocks holding an edge pixel
+  std::int64_t edge_pixels = 0;    ///< "antialias": "auto": the pixels drawn again multisampled
   // Wall time of each stage, milliseconds (filled only when stats are asked for):
-  double geometry_ms = 0;  ///< transform, lighting per face, clipping, projection and setup of every record
-  double bin_ms = 0;       ///< binning the records to tiles
-  double clear_ms = 0;     ///< allocating and clearing the colour buffer and the tile storage
-  double tiles_ms = 0;     ///< coverage and shading of every tile (all threads), and the resolve
+  double geometry_ms = 0;    ///< transform, lighting per face, clipping, projection and setup of every record
+  double bin_ms = 0;         ///< binning the records to tiles
+  double clear_ms = 0;       ///< allocating and clearing the colour buffer and the tile storage
+  double tiles_ms = 0;       ///< coverage and shading of every tile (all threads), and the resolve
+  double find_edges_ms = 0;  ///< "antialias": "auto": finding the edge pixels in the aliased picture
+  double edge_tiles_ms = 0;  ///< "antialias": "auto": drawing them again multisampled (all threads)
 };
 
 /// Per-render control from the caller: a deadline and a cancel flag. Both are looked at when each thread

@@ -71,13 +71,10 @@ std::string explain_json(const RenderPlan& p) {
   j["work"] = p.work;
   j["threads"] = p.threads;
   j["tile"] = p.tile;
-  j["memory_bytes"] = {{"color", p.memory.color_bytes},
-                       {"depth", p.memory.depth_bytes},
-                       {"samples", p.memory.sample_bytes},
-                       {"tiles", p.memory.tile_bytes},
-                       {"coverage", p.memory.coverage_bytes},
-                       {"textures", p.memory.texture_bytes},
-                       {"total", p.memory.total()}};
+  j["memory_bytes"] = {{"color", p.memory.color_bytes},       {"depth", p.memory.depth_bytes},
+                       {"samples", p.memory.sample_bytes},    {"tiles", p.memory.tile_bytes},
+                       {"coverage", p.memory.coverage_bytes}, {"textures", p.memory.texture_bytes},
+                       {"edges", p.memory.edge_bytes},        {"total", p.memory.total()}};
   j["png"] = {{"color_type", p.png.color_type}, {"deflate_level", p.png.deflate_level}};
   return j.dump(2);
 }

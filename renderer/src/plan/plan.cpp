@@ -367,6 +367,11 @@ void plan_buffers(RenderPlan& out, bool any_union) {
   m.sample_bytes = t.sample_bytes > 0 ? threads * t.sample_bytes + expanded_bytes : 0;
   m.coverage_bytes =
       t.coverage_floats > 0 ? threads * t.coverage_floats * std::int64_t{sizeof(float)} + expanded_bytes : 0;
+  // Edge sampling finds its edge pixels once over the whole image (shade/edges.cpp allocates exactly this).
+  const std::int64_t blocks = std::int64_t{(out.width + 7) / 8} * ((out.height + 7) / 8);
+  m.edge_bytes = out.coverage == Coverage::edge_samples
+                     ? blocks * std::int64_t{sizeof(std::uint64_t)} + std::max(out.width - 1, 1) * channels
+                     : 0;
 }
 
 // The pixel storage against the limit, then what the render will allocate asked of the budget: the pixel

@@ -1,6 +1,7 @@
 #include "shade/edges.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 
 namespace raster::detail {
@@ -67,7 +68,8 @@ EdgePixels find_edge_pixels(const Image& image, int contrast) {
         out.masks[static_cast<std::size_t>(py / kBlock) * out.columns + bx] |= byte << (8 * (py % kBlock));
     }
   }
-  out.blocks = std::count_if(out.masks.begin(), out.masks.end(), [](std::uint64_t m) { return m != 0; });
+  out.bytes = static_cast<std::int64_t>(out.masks.size() * sizeof(std::uint64_t) + differs.size());
+  for (const std::uint64_t m : out.masks) out.blocks += m != 0, out.pixels += std::popcount(m);
   return out;
 }
 

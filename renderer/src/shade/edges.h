@@ -24,9 +24,11 @@ inline constexpr int kEdgeContrast = 8;
 /// directions (inside the image), as a mask per 8x8 block (base/masks.h's layout).
 struct EdgePixels {
   int columns = 0, rows = 0;  ///< blocks a row, block rows: the image's size in blocks, rounded up
-  std::vector<std::uint64_t>
-      masks;                ///< columns x rows, row-major: bit 8 r + i for pixel (8 bx + i, 8 by + r)
+  /// columns x rows, row-major: bit 8 r + i for pixel (8 bx + i, 8 by + r)
+  std::vector<std::uint64_t> masks;
+  std::int64_t pixels = 0;  ///< edge pixels
   std::int64_t blocks = 0;  ///< blocks with an edge pixel
+  std::int64_t bytes = 0;   ///< allocated to find them (MemoryPlan::edge_bytes)
 
   BlockMasks view() const { return {masks.data(), columns}; }
   /// Whether a pixel of `rect` (inside the image) is an edge pixel.
