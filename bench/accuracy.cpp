@@ -38,9 +38,12 @@ struct Level {
   int samples;
   bool area;
   bool cairo;
+  bool automatic = false;  // "auto": aliased, then the edge pixels at 8 samples
 };
-constexpr Level kLevels[] = {{"1", 1, false, false},   {"4", 4, false, false},   {"8", 8, false, false},
-                             {"16", 16, false, false}, {"area", 1, true, false}, {"Cairo", 1, false, true}};
+constexpr Level kLevels[] = {{"1", 1, false, false},   {"4", 4, false, false},
+                             {"8", 8, false, false},   {"16", 16, false, false},
+                             {"area", 1, true, false}, {"auto", 8, false, false, true},
+                             {"Cairo", 1, false, true}};
 constexpr std::size_t kSampleLevels = 4;  // the first four are the sample counts
 
 struct Shape {               // what the reference composites: a convex polygon with one colour
@@ -241,6 +244,7 @@ double median(std::vector<double> v) {
 
 // The scene's "antialias" for a level of rasterd's own.
 raster::Antialias antialias_of(const Level& level) {
+  if (level.automatic) return raster::Antialias::automatic;
   raster::Antialias mode = raster::Antialias::area;
   if (!level.area && !raster::antialias_of_samples(level.samples, mode)) std::abort();
   return mode;
@@ -410,6 +414,7 @@ int main(int argc, char** argv) {
   char buf[512];
   auto mode_name = [&](const Row& r) {
     if (r.level->cairo) return std::string("Cairo 1.16, default");
+    if (r.level->automatic) return std::string("auto (edge pixels at 8 samples)");
     if (r.level->area)
       return r.samples_used > 1 ? "area (3D: " + std::to_string(r.samples_used) + " samples)"
                                 : std::string("area");
@@ -597,7 +602,8 @@ int main(int argc, char** argv) {
   plot.line({left, top}, {left, bottom}, ink, 1.5f);
   plot.text(
       left, 12,
-      "mean edge error (1/255) against render time: samples 1/4/8/16 (line), area (square), Cairo (cross)",
+      "mean edge error (1/255) against render time: samples 1/4/8/16 (line), area (square), auto (diamond), "
+      "Cairo (cross)",
       ink, 1.2);
   const Rgba8 palette[] = {{220, 60, 60, 255},   {40, 120, 220, 255}, {30, 160, 90, 255},
                            {200, 130, 20, 255},  {140, 70, 200, 255}, {20, 160, 170, 255},
@@ -621,6 +627,11 @@ int main(int argc, char** argv) {
           plot.line({c.x + 5, c.y - 5}, {c.x + 5, c.y + 5}, col, 2);
       plot.line({c.x + 5, c.y + 5}, {c.x - 5, c.y + 5}, col, 2),
           plot.line({c.x - 5, c.y + 5}, {c.x - 5, c.y - 5}, col, 2);
+    }
+    if (const Row* a = find(name, "auto")) {  // a diamond
+      const Point2 c{px(a->ms), py(a->err.mean)};
+      plot.line({c.x, c.y - 6}, {c.x + 6, c.y}, col, 2), plot.line({c.x + 6, c.y}, {c.x, c.y + 6}, col, 2);
+      plot.line({c.x, c.y + 6}, {c.x - 6, c.y}, col, 2), plot.line({c.x - 6, c.y}, {c.x, c.y - 6}, col, 2);
     }
     if (const Row* a = find(name, "Cairo")) {
       const Point2 c{px(a->ms), py(a->err.mean)};
