@@ -49,7 +49,8 @@ fuzz:
 
 bench-build: build
 	@scripts/install-deps bench
-	@cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DRASTERD_BUILD_BENCH=ON -DRASTERD_BUILD_TESTS=OFF >/dev/null
+	@cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DRASTERD_BUILD_BENCH=ON -DRASTERD_BUILD_TESTS=OFF \
+	  -DBLEND2D_DIR="$(BLEND2D_DIR)" >/dev/null
 	@cmake --build build-bench -j$(JOBS) -- --no-print-directory
 
 # Measures the default light and rewrites docs/lighting.md.
@@ -61,7 +62,8 @@ bench: bench-build
 	@scripts/bench
 
 # Error against an exact reference and render time for every anti-aliasing level; rewrites
-# docs/accuracy.md and docs/accuracy.png.
+# docs/accuracy.md and docs/accuracy.png. BLEND2D_DIR=<a built Blend2D checkout> adds Blend2D's rows.
+BLEND2D_DIR ?=
 bench-accuracy: bench-build
 	@build-bench/bench/accuracy .
 	@build-bench/bench/model_defaults .

@@ -20,6 +20,7 @@
 
 #include <cairo/cairo.h>
 
+#include "blend2d_peer.h"
 #include "plot.h"
 #include "raster/raster.h"
 #include "scenes.h"
@@ -39,11 +40,12 @@ struct Level {
   bool area;
   bool cairo;
   bool automatic = false;  // "auto": aliased, then the edge pixels at 8 samples
+  bool blend2d = false;    // Blend2D (bench/blend2d_peer.h), when the bench was built against it
 };
-constexpr Level kLevels[] = {{"1", 1, false, false},   {"4", 4, false, false},
-                             {"8", 8, false, false},   {"16", 16, false, false},
-                             {"area", 1, true, false}, {"auto", 8, false, false, true},
-                             {"Cairo", 1, false, true}};
+constexpr Level kLevels[] = {{"1", 1, false, false},    {"4", 4, false, false},
+                             {"8", 8, false, false},    {"16", 16, false, false},
+                             {"area", 1, true, false},  {"auto", 8, false, false, true},
+                             {"Cairo", 1, false, true}, {"Blend2D", 1, false, false, false, true}};
 constexpr std::size_t kSampleLevels = 4;  // the first four are the sample counts
 
 struct Shape {               // what the reference composites: a convex polygon with one colour
@@ -306,6 +308,17 @@ raster::Image cairo_render(const Suite& s, double* ms) {
   return img;
 }
 
+// The same shapes through Blend2D, its default (analytic) anti-aliasing, in the same order.
+raster::Image blend2d_render(const Suite& s, double* ms) {
+  std::vector<bench::PeerPolygon> polygons;
+  for (const Shape& shape : s.shapes) {
+    bench::PeerPolygon p{{}, shape.color};
+    for (const Point2& v : shape.poly) p.points.push_back({v.x, v.y});
+    polygons.push_back(std::move(p));
+  }
+  return bench::blend2d_render(polygons, s.scene.background, kSize, kRuns, ms);
+}
+
 struct Errors {
   double mean = 0, p99 = 0, max = 0;
   double over8 = 0;  // share of edge pixels with some channel more than 8/255 off
@@ -399,9 +412,12 @@ int main(int argc, char** argv) {
     else
       reference(s, ref, edge);
     for (const Level& level : kLevels) {
-      if (level.cairo && s.shapes.empty()) continue;  // Cairo has no 3D
+      if ((level.cairo || level.blend2d) && s.shapes.empty()) continue;  // the 2D peers have no 3D
+      if (level.blend2d && !bench::blend2d_built()) continue;
       double ms = 0;
-      const raster::Image img = level.cairo ? cairo_render(s, &ms) : render_at(s.scene, level, &ms);
+      const raster::Image img = level.cairo     ? cairo_render(s, &ms)
+                                : level.blend2d ? blend2d_render(s, &ms)
+                                                : render_at(s.scene, level, &ms);
       raster::Scene planned = s.scene;
       planned.antialias = antialias_of(level);
       rows.push_back({s.name, &level, errors(img, ref, edge), ms, raster::plan(planned).samples});
@@ -414,6 +430,7 @@ int main(int argc, char** argv) {
   char buf[512];
   auto mode_name = [&](const Row& r) {
     if (r.level->cairo) return std::string("Cairo 1.16, default");
+    if (r.level->blend2d) return std::string("Blend2D, default");
     if (r.level->automatic) return std::string("auto (edge pixels at 8 samples)");
     if (r.level->area)
       return r.samples_used > 1 ? "area (3D: " + std::to_string(r.samples_used) + " samples)"
@@ -434,8 +451,14 @@ int main(int argc, char** argv) {
       "the share of edge pixels with a channel more than 8/255 off. Times are the median of " +
       std::to_string(kRuns) +
       " renders (rasterd: plan + render; Cairo: surface creation to flushed pixels, the same polygons filled "
-      "in the same order with its default anti-aliasing), one thread, this machine. The two *held-back* "
-      "scenes (white on black) were never looked at while tuning.\n\n";
+      "in the same order with its default anti-aliasing; Blend2D likewise, its synchronous context, when the "
+      "bench is built against it), one thread, this machine. The two *held-back* "
+      "scenes (white on black) were never looked at while tuning.\n\n" +
+      (bench::blend2d_built()
+           ? std::string("Blend2D was built from the checkout in `BLEND2D_DIR` (below: how).\n\n")
+           : std::string(
+                 "**Blend2D was not measured in this run**: the bench was built without `BLEND2D_DIR` "
+                 "(below: how to give it one).\n\n"));
   md +=
       "| scene | anti-aliasing | mean error | p99 error | max error | > 8 | render ms |\n"
       "|---|---|---:|---:|---:|---:|---:|\n";
@@ -463,6 +486,8 @@ int main(int argc, char** argv) {
     target("area: p99 edge error ≤ 2", suite, area->err.p99, 2, "");
     target("area: time ≤ Cairo's", suite, area->ms / cairo->ms, 1, "× Cairo");
     target("area: time ≤ 3× aliased", suite, area->ms / aliased->ms, 3, "× aliased");
+    if (const Row* b2d = find(suite, "Blend2D"))
+      target("area: time ≤ 1.5× Blend2D's", suite, area->ms / b2d->ms, 1.5, "× Blend2D");
   }
   for (const char* suite : {"triangles", "fan", "slivers", "lines", "grid", "held-back triangles",
                             "held-back lines", "bunny (3D)"}) {
@@ -551,7 +576,18 @@ int main(int argc, char** argv) {
       "abutting shapes (each sample belongs to exactly one of them), so meshes, fans and grids are exact "
       "where area is not; the error left is the pattern's: a fixed set of N points cannot measure an edge "
       "finer than about 1/N of a pixel, and along lines of rational slope the lattice aliases (a 45° line "
-      "of width 1 is −12% of its area with 4 samples, +6% with 8, +1.5% with 16).\n";
+      "of width 1 is −12% of its area with 4 samples, +6% with 8, +1.5% with 16).\n"
+      "- **`\"auto\"`**: aliased, then the pixels more than 8/255 from a neighbour drawn again at 8 samples; "
+      "it pays where few pixels are edges (models), not in 2D scenes made mostly of edges.\n"
+      "\n## Blend2D\n\nBlend2D is not a Debian package; to measure it, fetch it and AsmJit side by side, "
+      "build "
+      "it, and give the bench its checkout (nothing of it enters this repository):\n\n"
+      "```sh\n"
+      "git clone https://github.com/blend2d/blend2d && git clone https://github.com/asmjit/asmjit\n"
+      "cmake -S blend2d -B blend2d/build -DCMAKE_BUILD_TYPE=Release -DBLEND2D_STATIC=ON -DBLEND2D_TEST=OFF\n"
+      "cmake --build blend2d/build -j2\n"
+      "make bench-accuracy BLEND2D_DIR=$PWD/blend2d\n"
+      "```\n";
   // A record of what render version 2 changed, measured once between two binaries (not by this program):
   // the test Shading.FloatLanesAreWithinOneLevelOfTheDoubleReference holds every build to it.
   md +=
@@ -600,11 +636,10 @@ int main(int argc, char** argv) {
   }
   plot.line({left, bottom}, {right, bottom}, ink, 1.5f);
   plot.line({left, top}, {left, bottom}, ink, 1.5f);
-  plot.text(
-      left, 12,
-      "mean edge error (1/255) against render time: samples 1/4/8/16 (line), area (square), auto (diamond), "
-      "Cairo (cross)",
-      ink, 1.2);
+  plot.text(left, 12,
+            "error (1/255) against time: samples 1/4/8/16 (line), area (square), auto (diamond), Cairo (x), "
+            "Blend2D (+)",
+            ink, 1.2);
   const Rgba8 palette[] = {{220, 60, 60, 255},   {40, 120, 220, 255}, {30, 160, 90, 255},
                            {200, 130, 20, 255},  {140, 70, 200, 255}, {20, 160, 170, 255},
                            {120, 120, 120, 255}, {230, 90, 170, 255}};
@@ -632,6 +667,10 @@ int main(int argc, char** argv) {
       const Point2 c{px(a->ms), py(a->err.mean)};
       plot.line({c.x, c.y - 6}, {c.x + 6, c.y}, col, 2), plot.line({c.x + 6, c.y}, {c.x, c.y + 6}, col, 2);
       plot.line({c.x, c.y + 6}, {c.x - 6, c.y}, col, 2), plot.line({c.x - 6, c.y}, {c.x, c.y - 6}, col, 2);
+    }
+    if (const Row* a = find(name, "Blend2D")) {  // a plus
+      const Point2 c{px(a->ms), py(a->err.mean)};
+      plot.line({c.x - 6, c.y}, {c.x + 6, c.y}, col, 2), plot.line({c.x, c.y - 6}, {c.x, c.y + 6}, col, 2);
     }
     if (const Row* a = find(name, "Cairo")) {
       const Point2 c{px(a->ms), py(a->err.mean)};
