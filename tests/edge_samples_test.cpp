@@ -4,9 +4,12 @@
 // tiles, kernels or the sample storage.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstring>
 #include <random>
 
+#include "base/stop.h"
 #include "raster/model.h"
 #include "raster/raster.h"
 #include "raster/scene_checks.h"
@@ -52,6 +55,13 @@ raster::Mesh soup(unsigned seed) {
   return mesh;
 }
 
+// A stop meter for find_edge_pixels: no deadline; cancelled when `cancel` is set before it is read.
+struct Meter {
+  std::atomic<bool> cancel{false}, stopped{false};
+  raster::detail::Stop stop{std::chrono::steady_clock::time_point::max(), &cancel, &stopped, nullptr};
+  raster::detail::StopMeter meter{stop};
+};
+
 raster::Scene knot() {
   const std::string obj = test::read_file(std::string(RASTERD_EXAMPLES_DIR) + "/models/knot.obj");
   return raster::model_scene(
@@ -72,7 +82,9 @@ std::int64_t expect_the_contract(const raster::Scene& scene, const std::string& 
   const raster::Image aliased = render(scene, Antialias::none);
   const raster::Image eight = render(scene, Antialias::msaa8);
   const raster::Image automatic = render(scene, Antialias::automatic);
-  const raster::detail::EdgePixels edges = raster::detail::find_edge_pixels(aliased);
+  Meter unstopped;
+  raster::detail::StopMeter& meter = unstopped.meter;
+  const raster::detail::EdgePixels edges = raster::detail::find_edge_pixels(aliased, meter);
   std::int64_t edge_pixels = 0, wrong = 0;
   const int c = aliased.channels();
   for (int y = 0; y < aliased.height; ++y)
@@ -143,27 +155,41 @@ bool marked(const raster::detail::EdgePixels& e, int x, int y) {
 }
 
 TEST(EdgeSamples, AnEdgePixelDiffersFromANeighbourByMoreThanTheContrast) {
+  Meter unstopped;
+  raster::detail::StopMeter& meter = unstopped.meter;
   raster::Image step = flat(20, 12, 100);
   for (int y = 0; y < 12; ++y)
     for (int x = 9; x < 20; ++x) step.pixels[static_cast<std::size_t>(y) * 20 + x] = 109;  // 9 above
-  const raster::detail::EdgePixels e = raster::detail::find_edge_pixels(step);
+  const raster::detail::EdgePixels e = raster::detail::find_edge_pixels(step, meter);
   for (int y = 0; y < 12; ++y)
     for (int x = 0; x < 20; ++x) EXPECT_EQ(marked(e, x, y), x == 8 || x == 9) << x << ", " << y;
   EXPECT_EQ(e.blocks, 2);  // columns 8 and 9 are in block column 1, rows 0-11 in block rows 0 and 1
-  EXPECT_EQ(raster::detail::find_edge_pixels(step, 9).blocks, 0) << "a step of 9 is not above 9";
+  EXPECT_EQ(raster::detail::find_edge_pixels(step, meter, 9).blocks, 0) << "a step of 9 is not above 9";
 
   raster::Image dot = flat(17, 9, 0);
   dot.pixels[4 * 17 + 8] = 255;  // one pixel: it and its eight neighbours are edge pixels
-  const raster::detail::EdgePixels d = raster::detail::find_edge_pixels(dot);
+  const raster::detail::EdgePixels d = raster::detail::find_edge_pixels(dot, meter);
   for (int y = 0; y < 9; ++y)
     for (int x = 0; x < 17; ++x)
       EXPECT_EQ(marked(d, x, y), std::abs(x - 8) <= 1 && std::abs(y - 4) <= 1) << x << ", " << y;
 
   raster::Image column = flat(1, 5, 0);  // one pixel wide: neighbours above and below only
   column.pixels[2] = 200;
-  const raster::detail::EdgePixels c = raster::detail::find_edge_pixels(column);
+  const raster::detail::EdgePixels c = raster::detail::find_edge_pixels(column, meter);
   for (int y = 0; y < 5; ++y) EXPECT_EQ(marked(c, 0, y), y >= 1 && y <= 3) << y;
-  EXPECT_EQ(raster::detail::find_edge_pixels(flat(1, 1, 7)).blocks, 0);
+  EXPECT_EQ(raster::detail::find_edge_pixels(flat(1, 1, 7), meter).blocks, 0);
+}
+
+TEST(EdgeSamples, FindingEdgesStopsWhenTheRenderMust) {
+  raster::Image step = flat(64, 4096, 0);
+  for (std::size_t i = 0; i < step.pixels.size(); i += 2) step.pixels[i] = 255;  // every pixel an edge
+  Meter cancelled;
+  cancelled.cancel = true;
+  const raster::detail::EdgePixels e = raster::detail::find_edge_pixels(step, cancelled.meter);
+  EXPECT_TRUE(cancelled.meter.stopped());
+  EXPECT_LT(e.pixels, 64 * 4096) << "it went on after the cancel";
+  Meter running;
+  EXPECT_EQ(raster::detail::find_edge_pixels(step, running.meter).pixels, 64 * 4096);
 }
 
 TEST(EdgeSamples, IsTheSceneValueAuto) {

@@ -351,7 +351,8 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   lap(&RenderStats::tiles_ms);
   if (plan.coverage == Coverage::edge_samples) {
     // The aliased picture is whole: the blocks where it shows an edge, then those drawn again multisampled.
-    const detail::EdgePixels edges = detail::find_edge_pixels(image);
+    const detail::EdgePixels edges = detail::find_edge_pixels(image, meter);
+    if (meter.stopped()) cancelled();
     if (control.stats) {
       control.stats->edge_blocks = edges.blocks, control.stats->edge_pixels = edges.pixels;
       control.stats->pixel_bytes += edges.bytes;

@@ -20,7 +20,7 @@ bool EdgePixels::any_in(Rect rect) const {
   return false;
 }
 
-EdgePixels find_edge_pixels(const Image& image, int contrast) {
+EdgePixels find_edge_pixels(const Image& image, StopMeter& meter, int contrast) {
   EdgePixels out;
   out.columns = (image.width + kBlock - 1) / kBlock;
   out.rows = (image.height + kBlock - 1) / kBlock;
@@ -37,6 +37,7 @@ EdgePixels find_edge_pixels(const Image& image, int contrast) {
   std::vector<std::uint8_t> differs(bytes);  // per channel of each quad of the row: 1 when some pair differs
   const auto limit = static_cast<std::uint8_t>(std::clamp(contrast, 0, 255));
   for (int y = 0; y < down; ++y) {
+    if (meter.add(image.width)) break;
     const std::uint8_t* a = image.pixels.data() + static_cast<std::size_t>(y) * stride;
     const std::uint8_t* b = a + below;
     // A byte loop the compiler vectorises: the widest of a quad's six pairs is its largest less its least.

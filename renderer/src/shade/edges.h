@@ -10,6 +10,7 @@
 
 #include "base/grid.h"
 #include "base/masks.h"
+#include "base/stop.h"
 #include "raster/image.h"
 
 namespace raster::detail {
@@ -35,7 +36,8 @@ struct EdgePixels {
   bool any_in(Rect rect) const;
 };
 
-/// The edge pixels of `image` at `contrast` (kEdgeContrast unless a test asks otherwise).
-EdgePixels find_edge_pixels(const Image& image, int contrast = kEdgeContrast);
+/// The edge pixels of `image` at `contrast` (kEdgeContrast unless a test asks otherwise). Counts a row's
+/// pixels of work on `meter` and returns early, incomplete, once it says the render must stop.
+EdgePixels find_edge_pixels(const Image& image, StopMeter& meter, int contrast = kEdgeContrast);
 
 }  // namespace raster::detail
