@@ -18,7 +18,9 @@ namespace raster::detail {
 /// Two neighbouring pixels (side by side, one above the other, or diagonal) are an edge when a channel
 /// differs by more than this (in 1/255): docs/accuracy.md's measure counts a pixel as an edge pixel when its
 /// 64 reference samples differ by more than 8, and a smaller step stays within the error the picture is
-/// judged by.
+/// judged by. Measured on the model corpus (bench/model_defaults, mean edge error; models no worse than 4
+/// samples; edge pixels of the knot at 512x512): 4 gives 1.74, 46 of 47, 37,337 pixels; 8 gives 1.74, 46 of
+/// 47, 18,001; 16 gives 1.91, 45 of 47, 10,872; 32 gives 2.33, 38 of 47, 9,284.
 inline constexpr int kEdgeContrast = 8;
 
 /// The image's edge pixels: those that differ by more than the contrast from a neighbour in the eight
