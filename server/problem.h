@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <httplib.h>
 
@@ -14,13 +15,15 @@ namespace rasterd {
 /// A problem response about to be written. `type` is a stable URN clients can switch on.
 struct Problem {
   int status = 500;
-  std::string type;                      ///< e.g. "urn:rasterd:problem:invalid-scene"
-  std::string title;                     ///< short, the same for every instance of the type
-  std::string detail;                    ///< this instance, human readable
-  std::optional<std::string> pointer;    ///< RFC 6901 pointer into the scene ("" is the root)
-  std::size_t byte = 0;                  ///< 1-based byte offset into the body, 0 = none
-  std::size_t line = 0;                  ///< 1-based line of an uploaded model, 0 = none
-  std::optional<std::string> parameter;  ///< the query parameter at fault (invalid-query)
+  std::string type;                       ///< e.g. "urn:rasterd:problem:invalid-scene"
+  std::string title;                      ///< short, the same for every instance of the type
+  std::string detail;                     ///< this instance, human readable
+  std::optional<std::string> pointer;     ///< RFC 6901 pointer into the scene ("" is the root)
+  std::size_t byte = 0;                   ///< 1-based byte offset into the body, 0 = none
+  std::size_t line = 0;                   ///< 1-based line of an uploaded model or a shader, 0 = none
+  std::size_t column = 0;                 ///< 1-based column in that line (shaders), 0 = none
+  std::vector<raster::ErrorNote> errors;  ///< a shader's compile errors, every one
+  std::optional<std::string> parameter;   ///< the query parameter at fault (invalid-query)
 };
 
 /// The mapping from library error kinds to statuses (400 malformed/invalid, 422 over a limit or bad model).

@@ -370,6 +370,10 @@ const char* kind_name(raster::ErrorKind k) {
       return "model";
     case raster::ErrorKind::encoding:
       return "encoding";
+    case raster::ErrorKind::shader:
+      return "shader";
+    case raster::ErrorKind::program:
+      return "program";
   }
   return "?";
 }

@@ -19,7 +19,9 @@
 #include "geometry/geometry.h"
 #include "setup/setup.h"
 #include "shade/edges.h"
+#include "shade/program.h"
 #include "shade/shade.h"
+#include "shader/ir.h"
 
 namespace raster {
 namespace {
@@ -32,6 +34,14 @@ struct Frame {
   const detail::Bins& bins;
   const RenderPlan& plan;
   Image& image;
+  const detail::Programs& programs;
+};
+
+/// A thread's own state while it draws tiles: its programs' registers, and where a program of its stopped
+/// the render (its loops past their bound).
+struct TileThread {
+  detail::ProgramThread programs;
+  detail::ProgramFault fault;
 };
 
 // The coverage routine the plan's anti-aliasing asks for.
@@ -135,9 +145,21 @@ inline void prefetch(const detail::Records& part, const detail::Bins::Part& bins
 
 // Draws tile `tile`'s bin into `surface`: every pixel, or (`edges` not null: edge sampling's second pass)
 // the edge pixels only.
+// A shader primitive's record: its program run over `clip`. False when the render must stop; a pixel past
+// its loop bound stops every thread, as a deadline does.
+bool draw_program_record(const Frame& f, int program, const detail::Surface& surface, Rect clip,
+                         const detail::EdgePixels* edges, TileThread& thread, detail::StopMeter& meter) {
+  const detail::BlockMasks edge_masks = edges ? edges->view() : detail::BlockMasks{};
+  if (detail::draw_program(f.programs, program, thread.programs, surface, clip, edges ? &edge_masks : nullptr,
+                           meter, thread.fault))
+    return true;
+  if (thread.fault.shader >= 0) meter.stop().stopped->store(true), meter.check();
+  return false;
+}
+
 template <int C>
 void draw_bin(const Frame& f, int tile, const detail::Surface& surface, const detail::EdgePixels* edges,
-              detail::StopMeter& meter) {
+              TileThread& thread, detail::StopMeter& meter) {
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::Lanes lanes = f.plan.scalar_coverage      ? detail::Lanes::scalar
                               : f.plan.simd == Simd::avx2 ? detail::Lanes::avx2
@@ -177,6 +199,10 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, const de
         const Rect clip{std::max(rect.x0, q.box.x0), std::max(rect.y0, q.box.y0), std::min(rect.x1, q.box.x1),
                         std::min(rect.y1, q.box.y1)};
         if (edges && !edges->any_in(clip)) continue;
+        if (const std::int32_t program = f.setup.calls[q.call].shader; program >= 0) {  // a shader's pixels
+          if (close(), draw_program_record(f, program, surface, clip, edges, thread, meter)) continue;
+          return;
+        }
         join(q.call, clip);
         // Flat: the shader reads the colour row only, never the barycentric steps.
         const double none[3] = {0, 0, 0};
@@ -217,15 +243,16 @@ void draw_bin(const Frame& f, int tile, const detail::Surface& surface, const de
 // Draws one tile: straight into the image when the plan says so; else its bin into the thread's tile storage
 // (framebuffer/tiles.h), resolved when multisampled, copied back.
 template <int C>
-void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::StopMeter& meter) {
+void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, TileThread& thread,
+               detail::StopMeter& meter) {
   if (f.plan.tiles_in_place)
-    return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), nullptr, meter);
+    return draw_bin<C>(f, tile, detail::image_surface<C>(f.image, f.plan, storage), nullptr, thread, meter);
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   const detail::SamplePoint* pattern =
       f.plan.coverage == Coverage::samples ? detail::sample_pattern(f.plan.samples).data() : nullptr;
   detail::Surface surface = detail::open_tile<C>(storage, f.plan, pattern, rect, f.image);
   if (pattern) surface.centroids = detail::centroid_offsets(f.plan.samples);
-  draw_bin<C>(f, tile, surface, nullptr, meter);
+  draw_bin<C>(f, tile, surface, nullptr, thread, meter);
   if (meter.stopped()) return;
   if (f.plan.coverage == Coverage::samples) {
     detail::resolve_samples<C>(surface, rect);
@@ -238,14 +265,14 @@ void draw_tile(const Frame& f, int tile, detail::TileStorage& storage, detail::S
 // background, multisampled, resolved and copied over the aliased pixels there.
 template <int C>
 void draw_edge_tile(const Frame& f, int tile, const detail::EdgePixels& edges, const std::uint8_t* background,
-                    detail::TileStorage& storage, detail::StopMeter& meter) {
+                    detail::TileStorage& storage, TileThread& thread, detail::StopMeter& meter) {
   const Rect rect = f.bins.tile_rect(tile, f.plan.width, f.plan.height);
   if (!edges.any_in(rect)) return;
   const detail::SamplePoint* pattern = detail::sample_pattern(f.plan.samples).data();
   detail::Surface surface =
       detail::open_edge_tile<C>(storage, f.plan, pattern, rect, edges.view(), background);
   surface.centroids = detail::centroid_offsets(f.plan.samples);
-  draw_bin<C>(f, tile, surface, &edges, meter);
+  draw_bin<C>(f, tile, surface, &edges, thread, meter);
   if (meter.stopped()) return;
   detail::resolve_samples<C>(surface, rect);
   detail::close_edge_tile<C>(surface, rect, edges.view(), f.image);
@@ -294,6 +321,52 @@ void count_storage(const detail::Setup& setup, const detail::Bins& bins, const I
   stats.bin_entries = static_cast<std::int64_t>(bins.entry_count());
 }
 
+// A program that went past its loop bound on some thread: the error that names the loop and the pixel (the
+// first pixel a thread found; with one thread, the first in tile order).
+void check_programs(const std::vector<TileThread>& threads, const RenderPlan& plan) {
+  for (const TileThread& t : threads) {
+    if (t.fault.shader < 0) continue;
+    const ShaderPlan& p = plan.shaders[static_cast<std::size_t>(t.fault.shader)];
+    const shader::SourcePos at = p.shader->program().loops[t.fault.loop].pos;
+    const std::string limit = std::to_string(p.max_iterations);
+    throw SceneError(ErrorKind::program,
+                     "the program's loop at line " + std::to_string(at.line) + " ran past " + limit +
+                         " iterations at pixel (" + std::to_string(t.fault.x) + ", " +
+                         std::to_string(t.fault.y) + "): a pixel may take " + limit +
+                         " iterations of all its loops together",
+                     {"/primitives/" + std::to_string(p.primitive) + "/source", 0,
+                      static_cast<std::size_t>(at.line), static_cast<std::size_t>(at.column)});
+  }
+}
+
+// Edge sampling's second pass: the edge pixels of the aliased picture found, then drawn again multisampled.
+void draw_edges(const Frame& frame, const detail::Stop& stop, int threads,
+                std::vector<detail::TileStorage>& scratch, std::vector<TileThread>& tile_threads,
+                const std::vector<std::uint8_t>& background, const RenderControl& control,
+                detail::StopMeter& meter) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  const detail::EdgePixels edges = detail::find_edge_pixels(frame.image, meter);
+  if (meter.stopped()) return;
+  const Clock::time_point found = Clock::now();
+  if (control.stats) {
+    control.stats->edge_blocks = edges.blocks, control.stats->edge_pixels = edges.pixels;
+    control.stats->pixel_bytes += edges.bytes;
+    control.stats->find_edges_ms = std::chrono::duration<double, std::milli>(found - start).count();
+  }
+  const int tiles = frame.bins.columns * frame.bins.rows;
+  detail::parallel_for(threads, static_cast<std::size_t>(tiles), stop,
+                       [&](std::size_t t, detail::StopMeter& own, int thread) {
+                         with_channels(frame.image.channels(), [&](auto c) {
+                           draw_edge_tile<c.value>(frame, static_cast<int>(t), edges, background.data(),
+                                                   scratch[static_cast<std::size_t>(thread)],
+                                                   tile_threads[static_cast<std::size_t>(thread)], own);
+                         });
+                       });
+  if (control.stats)
+    control.stats->edge_tiles_ms = std::chrono::duration<double, std::milli>(Clock::now() - found).count();
+}
+
 }  // namespace
 
 Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& control) {
@@ -314,6 +387,8 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   };
   const detail::Setup setup = detail::build_setup(scene, plan, meter);
   if (meter.stopped()) cancelled();
+  const detail::Programs programs = detail::prepare_programs(scene, plan, meter);
+  if (meter.stopped()) cancelled();
   lap(&RenderStats::geometry_ms);
   const detail::Bins bins = bin_records(setup, plan, stop);
   if (stopped) cancelled();
@@ -329,9 +404,10 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
   std::vector<detail::TileStorage> scratch;
   scratch.reserve(static_cast<std::size_t>(std::max(threads, 1)));
   for (int t = 0; t < std::max(threads, 1); ++t) scratch.emplace_back(plan.tile_storage);
+  std::vector<TileThread> tile_threads(static_cast<std::size_t>(std::max(threads, 1)));
   if (control.stats) count_storage(setup, bins, image, scratch, *control.stats);
   lap(&RenderStats::clear_ms);
-  const Frame frame{setup, bins, plan, image};
+  const Frame frame{setup, bins, plan, image, programs};
   // The background as a pixel of the image's format, before anything is drawn (edge sampling redraws its
   // blocks from it).
   const std::vector<std::uint8_t> background(image.pixels.begin(), image.pixels.begin() + image.channels());
@@ -344,33 +420,24 @@ Image render(const Scene& scene, const RenderPlan& plan, const RenderControl& co
                              static_cast<int>(piece % static_cast<std::size_t>(bins.rows)) * bins.columns +
                              static_cast<int>(piece / static_cast<std::size_t>(bins.rows));
                          with_channels(image.channels(), [&](auto c) {
-                           draw_tile<c.value>(frame, t, scratch[static_cast<std::size_t>(thread)], own);
+                           draw_tile<c.value>(frame, t, scratch[static_cast<std::size_t>(thread)],
+                                              tile_threads[static_cast<std::size_t>(thread)], own);
                          });
                        });
+  check_programs(tile_threads, plan);
   if (stopped) cancelled();
   lap(&RenderStats::tiles_ms);
   if (plan.coverage == Coverage::edge_samples) {
     // The aliased picture is whole: the blocks where it shows an edge, then those drawn again multisampled.
-    const detail::EdgePixels edges = detail::find_edge_pixels(image, meter);
-    if (meter.stopped()) cancelled();
-    if (control.stats) {
-      control.stats->edge_blocks = edges.blocks, control.stats->edge_pixels = edges.pixels;
-      control.stats->pixel_bytes += edges.bytes;
-    }
-    lap(&RenderStats::find_edges_ms);
-    detail::parallel_for(threads, static_cast<std::size_t>(tiles), stop,
-                         [&](std::size_t t, detail::StopMeter& own, int thread) {
-                           with_channels(image.channels(), [&](auto c) {
-                             draw_edge_tile<c.value>(frame, static_cast<int>(t), edges, background.data(),
-                                                     scratch[static_cast<std::size_t>(thread)], own);
-                           });
-                         });
+    draw_edges(frame, stop, threads, scratch, tile_threads, background, control, meter);
+    check_programs(tile_threads, plan);
     if (stopped) cancelled();
-    lap(&RenderStats::edge_tiles_ms);
   }
   if (control.stats) {
     control.stats->shaded_pixels = 0;
     for (const detail::TileStorage& t : scratch) control.stats->shaded_pixels += t.shaded;
+    for (const TileThread& t : tile_threads) control.stats->pixel_bytes += t.programs.bytes();
+    control.stats->pixel_bytes += programs.bytes();
   }
   return image;
 }

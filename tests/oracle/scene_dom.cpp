@@ -247,6 +247,8 @@ const char* kind_name(PrimitiveKind k) {
       return "polyline";
     case PrimitiveKind::mesh:
       return "mesh";
+    case PrimitiveKind::shader:
+      return "shader";
   }
   return "?";
 }

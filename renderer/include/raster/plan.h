@@ -11,6 +11,7 @@
 
 #include "raster/image.h"
 #include "raster/scene.h"
+#include "raster/shader.h"
 
 namespace raster {
 
@@ -137,6 +138,27 @@ struct DrawPlan {
   PrimitivePlan edge_mode;      ///< meshes with "edges": the feature edges (depth-tested, one colour)
   PrimitivePlan point_mode;     ///< meshes with points: depth-tested, unlit, one colour a point (depth set
                                 ///< exactly when the mesh has points)
+  std::int32_t shader = -1;     ///< shader primitives: index into RenderPlan::shaders
+};
+
+/// A shader primitive as the render runs it: its compiled program, the pixels it writes and every uniform
+/// slot's bits, all resolved once (plan/shaders.cpp).
+struct ShaderPlan {
+  std::uint32_t primitive = 0;  ///< index into Scene::primitives
+  std::shared_ptr<const CompiledShader> shader;
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< pixels it writes, [x0, x1) x [y0, y1): its rectangle in the image
+  /// Its rectangle, pixels, origin top-left, y down: fragCoord is measured from its bottom-left corner, and
+  /// iResolution is its size.
+  int rect_x = 0, rect_y = 0, rect_width = 0, rect_height = 0;
+  /// The bits of every slot of every uniform the program reads: (slot, bits), written before its prologue.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> uniforms;
+  std::array<std::int32_t, 4> channels{-1, -1, -1, -1};  ///< per iChannel it samples: an index into the
+                                                         ///< primitive's textures; -1: none (reads zero)
+  bool opaque = true;  ///< its colour replaces the pixel's; false: composited source-over by its alpha
+  int samples = 1;     ///< evaluations a pixel (multisampled renders: the plan's samples, averaged)
+  std::int64_t max_iterations =
+      0;  ///< loop iterations a pixel may take (Limits::shader), every loop together
+  std::int64_t register_bytes = 0;  ///< one thread's register file for it: slots x 64 lanes x 4 bytes
 };
 
 /// One light resolved for this view: camera-space lights turned into world space, colour x intensity folded.
@@ -192,9 +214,12 @@ struct MemoryPlan {
                                     ///< plus the mipmaps each render makes of them
   std::int64_t edge_bytes = 0;      ///< "antialias": "auto": the edge pixels' masks (8 bytes per 8x8 block of
                                     ///< the image) and a row of the quads' differences (a byte per channel)
+  /// Shaders: each thread's register file for each program (ShaderPlan::register_bytes), and the mipmaps of
+  /// the images their channels sample (the images themselves are texture_bytes).
+  std::int64_t shader_bytes = 0;
   std::int64_t total() const {
     return color_bytes + depth_bytes + sample_bytes + tile_bytes + coverage_bytes + texture_bytes +
-           edge_bytes;
+           edge_bytes + shader_bytes;
   }
 };
 
@@ -240,9 +265,11 @@ struct RenderPlan {
   Coverage coverage = Coverage::centre;    ///< how triangles cover pixels
   int samples = 1;                         ///< per pixel: > 1 exactly when coverage multisamples
   std::vector<DrawPlan> draws;             ///< the visible primitives, in scene order
+  std::vector<ShaderPlan> shaders;         ///< the visible shader primitives' programs, in scene order
 
   // Counts of the per-primitive decisions, for the explain output and the X-Render-Plan header.
   std::int64_t flat_count = 0;      ///< visible primitives drawn with one colour
+  std::int64_t shader_count = 0;    ///< visible shader primitives
   std::int64_t smooth_count = 0;    ///< visible primitives with interpolated colours
   std::int64_t blend_count = 0;     ///< visible primitives that blend
   std::int64_t culled_count = 0;    ///< primitives skipped before setup
@@ -264,6 +291,7 @@ struct RenderPlan {
   /// back.
   bool tiles_in_place = false;
   bool scalar_coverage = false;  ///< test hook: partial blocks tested one pixel at a time, not in SIMD lanes
+  bool scalar_shading = false;   ///< test hook: programs run by the scalar reference, one lane at a time
   /// Test hook: multisampled pixels keep a colour per sample from the start, where the storage keeps one
   /// colour a pixel until its samples differ; the bytes must not change.
   bool keep_samples = false;
@@ -288,6 +316,9 @@ struct PlanOptions {
   bool scalar_coverage = false;  ///< test hook, see RenderPlan::scalar_coverage
   bool keep_samples = false;     ///< test hook, see RenderPlan::keep_samples
   Simd max_simd = Simd::avx2;    ///< the widest kernels to use (tests force each one the machine has)
+  bool scalar_shading = false;   ///< test hook, see RenderPlan::scalar_shading
+  /// Optional: compiled programs by source, kept between renders (a service's); null: each render compiles.
+  ShaderCache* shader_cache = nullptr;
 };
 
 /// Makes the plan. Throws SceneError(limit) when its memory or size exceeds `limits`.

@@ -10,6 +10,7 @@
 
 #include "raster/budget.h"
 #include "raster/error.h"
+#include "raster/shader.h"
 
 namespace raster {
 
@@ -256,7 +257,29 @@ std::vector<Light> default_lights();
 /// 1 - ambient, travelling `direction` (world) or, without one, along the view direction.
 std::vector<Light> single_light(double ambient, const Vec3* direction);
 
-enum class PrimitiveKind : std::uint8_t { triangle, line, polyline, mesh };
+enum class PrimitiveKind : std::uint8_t { triangle, line, polyline, mesh, shader };
+
+/// A program run at every pixel of the image or of a rectangle of it ("type": "shader"): ShaderToy's image
+/// pass. Its fields are ShaderToy's inputs (README: Shaders); fragCoord has GL's origin, the bottom left
+/// pixel's centre at (0.5, 0.5), over the rectangle.
+struct ShaderPrimitive {
+  std::string source;      ///< GLSL ES 3.00 as ShaderToy's editor holds it: mainImage and what it calls
+  double time = 0;         ///< iTime, seconds
+  std::int32_t frame = 0;  ///< iFrame
+  std::array<double, 4> mouse{};  ///< iMouse: pixels of the rectangle, GL's origin: xy held, zw clicked
+  std::array<double, 4> date{};   ///< iDate: year, month (0 January), day (1..31), seconds since midnight
+  /// iChannel0..3: an index into `textures`, or -1 for none (the channel reads zero).
+  std::array<std::int32_t, 4> channels{-1, -1, -1, -1};
+  std::vector<Texture> textures;  ///< the channels' images, bytes as stored (not sRGB-decoded)
+  /// The program's own uniforms by name: each value's 32-bit slots in GLSL's order (a matrix by columns),
+  /// given as numbers (a bool: 0 or 1), in the order the scene gave them.
+  std::vector<std::pair<std::string, std::vector<double>>> uniforms;
+  bool whole = true;  ///< over the whole image; false: over `rect`
+  std::array<std::int32_t, 4> rect{0, 0, 0,
+                                   0};  ///< pixels: x, y of the top-left corner (y down), width, height
+  bool opaque = true;  ///< the program's alpha is ignored; false: composited source-over by it
+  friend bool operator==(const ShaderPrimitive&, const ShaderPrimitive&) = default;
+};
 
 /// One drawable. Vertices and colours live in the Scene's flat arrays; a primitive names ranges of them,
 /// so a scene of a million triangles is three vectors, not a million small ones.
@@ -270,7 +293,8 @@ struct Primitive {
   std::uint32_t point_count = 0;  ///< triangle: 3; line: 2; polyline: >= 2
   std::uint32_t first_color = 0;  ///< index into Scene::colors
   float width = 1;         ///< lines, polylines, outlines: pixels; != 1 (or anti-aliasing) draws rectangles
-  std::uint32_t mesh = 0;  ///< mesh (also 3D triangles, lines and OBJ models): index into Scene::meshes
+  std::uint32_t mesh = 0;  ///< mesh (also 3D triangles, lines and OBJ models): index into Scene::meshes;
+                           ///< shader: index into Scene::shaders
   friend bool operator==(const Primitive&, const Primitive&) = default;
 };
 static_assert(sizeof(Primitive) == 24);
@@ -323,6 +347,7 @@ struct Scene {
   Camera camera;                          ///< used only when the scene has 3D content
   std::vector<Light> lights;              ///< lights of meshes; empty: default_lights()
   Antialias antialias = Antialias::none;  ///< "antialias"; the plan turns it into coverage and samples
+  std::vector<ShaderPrimitive> shaders;   ///< programs, referenced by shader primitives
   /// Field by field; the two scene readers are tested to agree by it.
   friend bool operator==(const Scene&, const Scene&) = default;
 
@@ -351,6 +376,7 @@ struct Limits {
   /// one per core; 1, the calling thread only. What is read does not depend on it. The service gives its
   /// --render-threads.
   int threads = 0;
+  ShaderLimits shader;  ///< what a program may cost (raster/shader.h)
   /// Optional, per render: the caller's account that the readers and the plan ask for memory before they
   /// allocate what their counts call for, and for whether to stop (raster/budget.h). Null: nothing is asked.
   /// Not owned; a service copies its Limits per request and points this at that request's account.

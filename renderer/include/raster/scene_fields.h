@@ -49,9 +49,12 @@ constexpr auto fields(T& s) {
   else if constexpr (std::is_same_v<U, Primitive>)
     return std::tie(s.kind, s.per_vertex_color, s.fill, s.closed, s.first_point, s.point_count, s.first_color,
                     s.width, s.mesh);
+  else if constexpr (std::is_same_v<U, ShaderPrimitive>)
+    return std::tie(s.source, s.time, s.frame, s.mouse, s.date, s.channels, s.textures, s.uniforms, s.whole,
+                    s.rect, s.opaque);
   else if constexpr (std::is_same_v<U, Scene>)
     return std::tie(s.width, s.height, s.background, s.primitives, s.points, s.colors, s.meshes, s.camera,
-                    s.lights, s.antialias);
+                    s.lights, s.antialias, s.shaders);
 }
 
 namespace fields_detail {
@@ -77,7 +80,8 @@ consteval bool complete() {
 }
 static_assert(complete<Rgba8>() && complete<Point2>() && complete<Vec3>() && complete<Mat4>() &&
                   complete<Texture>() && complete<Edges>() && complete<Material>() && complete<Mesh>() &&
-                  complete<Camera>() && complete<Light>() && complete<Primitive>() && complete<Scene>(),
+                  complete<Camera>() && complete<Light>() && complete<Primitive>() && complete<Scene>() &&
+                  complete<ShaderPrimitive>(),
               "a struct of scene.h has a field that raster::fields() does not list");
 // Vec3f has constructors, so the count above cannot see its fields; it is three floats and nothing else.
 static_assert(sizeof(Vec3f) == 3 * sizeof(float));
@@ -112,13 +116,24 @@ consteval bool raw() {
 /// same bytes ([a][bc] and [ab][c] differ). Padding is never written: a struct is written field by field
 /// unless it has none.
 /// Antialias is written as the two fields it replaced (the samples as an int, then whether it is area), so
-/// that every scene keeps the ETag it had before they became one value.
+/// that every scene keeps the ETag it had before they became one value; the shaders, added last, are
+/// written only when there are some, for the same reason.
 template <class T, class Out>
 void write_canonical(const T& v, Out& out) {
   if constexpr (std::is_same_v<T, Antialias>) {
     const int samples = v == Antialias::automatic ? -1 : sample_count(v);  // "auto": a count of its own
     const bool area = v == Antialias::area;
     out(&samples, sizeof samples), out(&area, sizeof area);
+  } else if constexpr (std::is_same_v<T, std::vector<ShaderPrimitive>>) {
+    if (v.empty()) return;
+    const std::uint64_t n = v.size();
+    out(&n, sizeof n);
+    for (const auto& e : v) write_canonical(e, out);
+  } else if constexpr (requires {
+                         v.first;
+                         v.second;
+                       }) {  // a pair
+    write_canonical(v.first, out), write_canonical(v.second, out);
   } else if constexpr (fields_detail::raw<T>()) {
     out(&v, sizeof v);
   } else if constexpr (std::is_same_v<T, std::string>) {

@@ -61,4 +61,33 @@ MipChain build_mips(const Texture& texture, StopMeter* meter) {
   return chain;
 }
 
+// Bytes as stored, each level the 2x2 average of the one below rounded to nearest (GL's glGenerateMipmap
+// for an RGBA8 texture): what a shader's channels sample.
+MipChain build_raw_mips(const Texture& texture, StopMeter* meter) {
+  MipChain chain;
+  chain.texture = &texture;
+  chain.levels.push_back({texture.width, texture.height, texture.rgba.data()});
+  while (chain.levels.back().width > 1 || chain.levels.back().height > 1) {
+    const MipLevel from = chain.levels.back();
+    const int w = std::max(1, from.width / 2), h = std::max(1, from.height / 2);
+    std::uint8_t* const out =
+        chain.storage
+            .emplace_back(std::make_unique_for_overwrite<std::uint8_t[]>(std::size_t(w) * std::size_t(h) * 4))
+            .get();
+    const std::size_t dx = from.width > 1 ? 4 : 0, dy = from.height > 1 ? std::size_t(from.width) * 4 : 0;
+    for (int y = 0; y < h; ++y) {
+      if (meter && meter->add(w)) return chain;
+      const std::uint8_t* row = from.rgba + std::size_t(2 * y) * std::size_t(from.width) * 4;
+      std::uint8_t* o = out + std::size_t(y) * std::size_t(w) * 4;
+      for (int x = 0; x < w; ++x, o += 4) {
+        const std::uint8_t* q = row + std::size_t(8 * x);
+        for (int c = 0; c < 4; ++c)
+          o[c] = static_cast<std::uint8_t>((q[c] + q[dx + c] + q[dy + c] + q[dy + dx + c] + 2) / 4);
+      }
+    }
+    chain.levels.push_back({w, h, out});
+  }
+  return chain;
+}
+
 }  // namespace raster::detail

@@ -33,6 +33,10 @@ struct MipChain {
 /// must stop; the caller looks at meter->stopped().
 MipChain build_mips(const Texture& texture, StopMeter* meter = nullptr);
 
+/// The same with the bytes averaged as stored, not in linear light (GL's glGenerateMipmap for RGBA8): the
+/// chain a shader's channel samples.
+MipChain build_raw_mips(const Texture& texture, StopMeter* meter = nullptr);
+
 /// Bytes the mip levels above level 0 of a w x h texture take.
 std::int64_t mip_bytes(int width, int height);
 

@@ -77,6 +77,22 @@ void add_polyline(const Scene& scene, const Primitive& prim, bool closed, const 
   if (closed) add_segment(scene, prim, n - 1, 0, false, false, call, setup);
 }
 
+// A shader: a call of its own and the rectangle of pixels it writes as one quad record, binned to the tiles
+// it reaches like any other (its program is run by shade/, not by the quad's coverage).
+void add_program(const ShaderPlan& p, const DrawPlan& draw, Setup& setup) {
+  DrawCall call = make_call(draw.mode);
+  call.shader = draw.shader;
+  const std::uint32_t index = setup.add_call(call);
+  const double x[4] = {double(p.x0), double(p.x1), double(p.x1), double(p.x0)};
+  const double y[4] = {double(p.y0), double(p.y0), double(p.y1), double(p.y1)};
+  SetupVertex v[4];
+  for (int k = 0; k < 4; ++k) {
+    v[k].x = x[k] * kSubpixelScale, v[k].y = y[k] * kSubpixelScale;
+    std::fill(std::begin(v[k].values), std::end(v[k].values), 0.0f);
+  }
+  setup.add_quad(index, v);
+}
+
 }  // namespace
 
 Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) {
@@ -94,6 +110,10 @@ Setup build_setup(const Scene& scene, const RenderPlan& plan, StopMeter& meter) 
     const Primitive& prim = scene.primitives[draw.primitive];
     if (prim.kind == PrimitiveKind::mesh) {
       add_mesh(scene.meshes[prim.mesh], draw, plan, setup, meter);
+      continue;
+    }
+    if (prim.kind == PrimitiveKind::shader) {
+      add_program(plan.shaders[static_cast<std::size_t>(draw.shader)], draw, setup);
       continue;
     }
     // Consecutive primitives drawn the same way share one call; a union-coverage primitive has its own,

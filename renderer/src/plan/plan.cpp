@@ -10,6 +10,7 @@
 #include "base/budget_ask.h"
 #include "base/grid.h"
 #include "base/mip_chain.h"
+#include "plan/shaders.h"
 #include "plan/view.h"
 
 namespace raster {
@@ -277,8 +278,21 @@ bool plan_shape(const Scene& scene, const Primitive& prim, DrawPlan& draw, Rende
   return true;
 }
 
+// A shader's draw (plan/shaders.cpp), and what it means for the rest: colours of every kind, and work that
+// grows with its program (a pixel of a program costs about one of a triangle per 16 instructions).
+bool plan_program(const Scene& scene, std::uint32_t index, const Limits& limits, const PlanOptions& options,
+                  DrawPlan& draw, RenderPlan& out, Tally& tally) {
+  if (!detail::plan_shader(scene, index, limits, options.shader_cache, out, draw)) return false;
+  const ShaderPlan& p = out.shaders.back();
+  tally.grey = false;
+  ++out.shader_count;
+  const std::int64_t pixels = std::int64_t{p.x1 - p.x0} * (p.y1 - p.y0);
+  tally.work += pixels * std::max<std::int64_t>(1, static_cast<std::int64_t>(p.shader->instructions()) / 16);
+  return true;
+}
+
 // The pass over the primitives: a draw for each visible one, in scene order, and the counts.
-Tally plan_draws(const Scene& scene, RenderPlan& out) {
+Tally plan_draws(const Scene& scene, const Limits& limits, const PlanOptions& options, RenderPlan& out) {
   Tally tally;
   tally.grey = scene.background.is_grey();
   const LightFacts lights = light_facts(scene);
@@ -288,9 +302,11 @@ Tally plan_draws(const Scene& scene, RenderPlan& out) {
     const Primitive& prim = scene.primitives[i];
     DrawPlan& draw = out.draws.emplace_back();
     draw.primitive = static_cast<std::uint32_t>(i);
-    const bool visible = prim.kind == PrimitiveKind::mesh
-                             ? plan_mesh(scene.meshes[prim.mesh], lights, draw, out, tally)
-                             : plan_shape(scene, prim, draw, out, tally);
+    const bool visible =
+        prim.kind == PrimitiveKind::mesh ? plan_mesh(scene.meshes[prim.mesh], lights, draw, out, tally)
+        : prim.kind == PrimitiveKind::shader
+            ? plan_program(scene, static_cast<std::uint32_t>(i), limits, options, draw, out, tally)
+            : plan_shape(scene, prim, draw, out, tally);
     if (!visible) {
       out.draws.pop_back();
       ++out.culled_count;
@@ -316,6 +332,8 @@ void plan_coverage(Antialias antialias, RenderPlan& out, Tally& tally) {
   }
   if (area && tally.any_3d)
     for (DrawPlan& d : out.draws) d.mode.union_coverage = false, tally.any_union = false;
+  // A program is evaluated at each sample position of a multisampled pixel (auto: of an edge pixel).
+  for (ShaderPlan& p : out.shaders) p.samples = multisampled(out.coverage) ? out.samples : 1;
   // Multisampled 3D lines are rectangles a pixel wide, so their edges are covered per sample like the rest.
   for (DrawPlan& d : out.draws) {
     d.line_mode.line_rectangles = d.line_mode.depth && out.samples > 1;
@@ -369,6 +387,7 @@ void plan_buffers(RenderPlan& out, bool any_union) {
       t.coverage_floats > 0 ? threads * t.coverage_floats * std::int64_t{sizeof(float)} + expanded_bytes : 0;
   // Edge sampling finds its edge pixels once over the whole image (shade/edges.cpp allocates exactly this).
   const std::int64_t blocks = std::int64_t{(out.width + 7) / 8} * ((out.height + 7) / 8);
+  for (const ShaderPlan& p : out.shaders) m.shader_bytes += threads * p.register_bytes;
   m.edge_bytes = out.coverage == Coverage::edge_samples
                      ? blocks * std::int64_t{sizeof(std::uint64_t)} + std::max(out.width - 1, 1) * channels
                      : 0;
@@ -408,7 +427,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   RenderPlan out;
   out.width = scene.width;
   out.height = scene.height;
-  Tally tally = plan_draws(scene, out);
+  Tally tally = plan_draws(scene, limits, options, out);
   const bool alpha = !scene.background.is_opaque();  // drawing over an opaque background stays opaque
   out.format = tally.grey ? (alpha ? PixelFormat::grey_alpha8 : PixelFormat::grey8)
                           : (alpha ? PixelFormat::rgba8 : PixelFormat::rgb8);
@@ -421,6 +440,7 @@ RenderPlan plan(const Scene& scene, const Limits& limits, const PlanOptions& opt
   }
   plan_threads(scene, options, out);
   out.scalar_coverage = options.scalar_coverage;
+  out.scalar_shading = options.scalar_shading;
   out.keep_samples = options.keep_samples;
   out.simd = std::min(best_simd(), options.max_simd);
   out.tiles_in_place = !tally.any_3d && out.coverage == Coverage::centre && scene.width % 8 == 0;

@@ -48,6 +48,7 @@ inline constexpr Range kViewHeight{0, kInf, true, true, "\"height\" (orthographi
 inline constexpr Range kAmbient{0, 1, false, false, "\"ambient\" is in 0..1"};
 inline constexpr Range kIntensity{0, kMaxLightIntensity, false, false, "\"intensity\" is in 0..1000"};
 static_assert(kMaxLightIntensity == 1000, "kIntensity's rule names the limit");
+inline constexpr Range kShaderInput{-1e9, 1e9, false, false, "a shader's input is a number within +-1e9"};
 inline constexpr Range kTexCoord{-1e30, 1e30, false, false,
                                  "a texture coordinate must be a number within +-1e30"};
 
@@ -103,13 +104,13 @@ struct Field {
 
 /// The bit of each key of `keys` in a table of fields (a key not in the table is a build error).
 template <class F, std::size_t N>
-requires(N <= 32)  // masks of fields are 32 bits
-    constexpr std::uint32_t mask_of(const F (&fields)[N], std::initializer_list<std::string_view> keys) {
-  std::uint32_t mask = 0;
+requires(N <= 64)  // masks of fields are 64 bits
+    constexpr std::uint64_t mask_of(const F (&fields)[N], std::initializer_list<std::string_view> keys) {
+  std::uint64_t mask = 0;
   for (std::string_view k : keys) {
     std::size_t i = 0;
     while (fields[i].key != k) ++i;  // runs off the table (not a constant expression) for a wrong key
-    mask |= 1u << i;
+    mask |= std::uint64_t{1} << i;
   }
   return mask;
 }

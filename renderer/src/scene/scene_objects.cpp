@@ -143,7 +143,7 @@ constexpr Field<LightState> kLightFields[] = {
      [](Reader& r, LightState& l, const Path& at) { l.ambient = r.ranged(at, format::kAmbient); }},
 };
 
-std::uint32_t light_keys(LightKind kind);
+std::uint64_t light_keys(LightKind kind);
 
 // One of "lights"; its "type" narrows the keys (light_keys).
 constexpr Field<LightsEntry> kLightsFields[] = {
@@ -171,8 +171,8 @@ constexpr Field<LightsEntry> kLightsFields[] = {
      [](Reader& r, LightsEntry& l, const Path& at) { l.light.position = r.vec3(at); }},
 };
 
-std::uint32_t light_keys(LightKind kind) {
-  constexpr std::uint32_t kAll = format::mask_of(kLightsFields, {"type", "color", "intensity"});
+std::uint64_t light_keys(LightKind kind) {
+  constexpr std::uint64_t kAll = format::mask_of(kLightsFields, {"type", "color", "intensity"});
   if (kind == LightKind::ambient) return kAll;
   return kAll |
          format::mask_of(kLightsFields, {kind == LightKind::point ? "position" : "direction", "space"});
@@ -241,10 +241,11 @@ Edges Reader::edges(const Path& at) {
   return e.edges;
 }
 
-// An image from "data" or "source" (one of them), within the texels the scene has left.
-Texture Reader::texture(const Path& at) {
+// An image from "data" or "source" (one of them), within the texels the scene has left (less `pending`,
+// what the primitive being read holds already).
+Texture Reader::texture(const Path& at, std::int64_t pending) {
   TextureState t;
-  t.budget = texels_left(scene, limits);
+  t.budget = texels_left(scene, limits) - pending;
   read_object(kTextureFields, t, at, "a texture object");
   if (std::popcount(t.seen & 3u) != 1)
     invalid(at, "a texture needs \"data\" (the PNG or JPEG file as base64) or \"source\" (an uploaded part)");

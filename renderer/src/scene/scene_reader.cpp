@@ -75,7 +75,7 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
      }},
     {"data", format::kString, "text",
      [](Reader& r, PrimitiveState& s, const Path&) { s.obj = r.in.string(); }},
-    {"source", format::kString, "the name of an uploaded part",
+    {"source", format::kString, "a string (a model: the name of an uploaded part; a shader: its GLSL)",
      [](Reader& r, PrimitiveState& s, const Path&) { s.source = r.in.string(); }},
     {"mtl", format::kString, "text",
      [](Reader& r, PrimitiveState& s, const Path&) { s.mtl = r.in.string(); }},
@@ -85,6 +85,32 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
      [](Reader& r, PrimitiveState& s, const Path& at) {
        s.format = model_formats()[r.choice(at, format_names())].format;
      }},
+    {"time", format::kNumber, "a number (seconds)",
+     [](Reader& r, PrimitiveState& s, const Path& at) {
+       s.shader.time = r.ranged(at, format::kShaderInput);
+     }},
+    {"frame", format::kNumber, "a whole number",
+     [](Reader& r, PrimitiveState& s, const Path& at) {
+       const std::int64_t f = r.integer(at);
+       if (f < 0 || f > INT32_MAX) r.invalid(at, "\"frame\" is a whole number from 0 to 2147483647");
+       s.shader.frame = static_cast<std::int32_t>(f);
+     }},
+    {"mouse", format::kArray, "[x, y, click x, click y] in pixels",
+     [](Reader& r, PrimitiveState& s, const Path& at) {
+       s.shader.mouse = r.four_numbers(at, "[x, y] or [x, y, click x, click y] in pixels", true);
+     }},
+    {"date", format::kArray, "[year, month, day, seconds]",
+     [](Reader& r, PrimitiveState& s, const Path& at) {
+       s.shader.date = r.four_numbers(at, "[year, month (0-11), day, seconds since midnight]", false);
+     }},
+    {"channels", format::kArray, "an array of up to four texture objects (or null)",
+     [](Reader& r, PrimitiveState& s, const Path& at) { r.channels(s, at); }},
+    {"uniforms", format::kObject, "an object of uniform name: value",
+     [](Reader& r, PrimitiveState& s, const Path& at) { r.uniforms(s, at); }},
+    {"rect", format::kArray, "[x, y, width, height] in pixels",
+     [](Reader& r, PrimitiveState& s, const Path& at) { r.rect(s, at); }},
+    {"opaque", format::kBool, "true or false",
+     [](Reader& r, PrimitiveState& s, const Path& at) { s.shader.opaque = r.boolean(at); }},
     {"textures", format::kObject, "an object of file name: base64 image",
      [](Reader& r, PrimitiveState& s, const Path& at) {
        for (bool more = r.in.object_begin(); more; more = r.in.object_next()) {
@@ -98,7 +124,7 @@ constexpr Field<PrimitiveState> kPrimitiveFields[] = {
 };
 
 // The bit of a primitive's key, at compile time.
-consteval std::uint32_t bit(std::string_view key) {
+consteval std::uint64_t bit(std::string_view key) {
   return format::mask_of(kPrimitiveFields, {key});
 }
 
@@ -106,7 +132,7 @@ struct PrimitiveType {
   std::string_view name;
   PrimitiveKind kind;
   std::uint32_t min_points, max_points;
-  std::uint32_t keys;  // bits of kPrimitiveFields
+  std::uint64_t keys;  // bits of kPrimitiveFields
 };
 constexpr PrimitiveType kTypes[] = {
     {"triangle", PrimitiveKind::triangle, 3, 3,
@@ -127,8 +153,13 @@ constexpr PrimitiveType kTypes[] = {
     {"obj", PrimitiveKind::mesh, 0, 0,
      format::mask_of(kPrimitiveFields, {"type", "data", "source", "mtl", "mtl_source", "textures", "color",
                                         "shading", "wireframe", "edges", "cull", "transform", "point_size"})},
+    // A program run at every pixel of the image or of "rect" (ShaderToy's image pass).
+    {"shader", PrimitiveKind::shader, 0, 0,
+     format::mask_of(kPrimitiveFields, {"type", "source", "time", "frame", "mouse", "date", "channels",
+                                        "uniforms", "rect", "opaque"})},
 };
-constexpr const char* kTypeNames = "\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\"";
+constexpr const char* kTypeNames =
+    "\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\", \"obj\" or \"shader\"";
 
 }  // namespace
 
@@ -310,6 +341,7 @@ void Reader::primitive(const Path& at) {
     throw;
   }
   if (s.type < 0) invalid(at, std::string("missing \"type\" (") + kTypeNames + ")");
+  if (kTypes[s.type].kind == PrimitiveKind::shader) return finish_shader(s, at);
   if (kTypes[s.type].kind != PrimitiveKind::mesh) return finish_drawn(s, at);
   s.seen_model = true;
   if (kTypes[s.type].name == "mesh")
@@ -321,6 +353,18 @@ void Reader::primitive(const Path& at) {
   p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
   scene.meshes.push_back(std::move(s.mesh));
   s.mesh = Mesh{};
+  scene.primitives.push_back(p);
+}
+
+void Reader::finish_shader(PrimitiveState& s, const Path& at) {
+  if (!(s.seen & bit("source")))
+    invalid(at, "a shader needs \"source\": the program as ShaderToy's editor holds it (a mainImage)");
+  s.seen_shader = true;
+  s.shader.source = s.source;
+  Primitive p;
+  p.kind = PrimitiveKind::shader;
+  p.mesh = static_cast<std::uint32_t>(scene.shaders.size());
+  scene.shaders.push_back(std::move(s.shader));
   scene.primitives.push_back(p);
 }
 

@@ -59,12 +59,14 @@ inline std::int64_t texels_left(const Scene& scene, const Limits& limits) {
   std::int64_t used = 0;
   for (const Mesh& m : scene.meshes)
     for (const Texture& t : m.textures) used += std::int64_t{t.width} * t.height;
+  for (const ShaderPrimitive& p : scene.shaders)
+    for (const Texture& t : p.textures) used += std::int64_t{t.width} * t.height;
   return limits.max_texture_pixels - used;
 }
 
 // The state of each object kind while it is read. `allowed` and `seen` are bits of its table's fields.
 struct Keys {
-  std::uint32_t allowed = ~0u, seen = 0;
+  std::uint64_t allowed = ~std::uint64_t{0}, seen = 0;
 };
 struct CameraState : Keys {
   Camera camera;
@@ -107,6 +109,7 @@ struct PrimitiveState : Keys {
   std::string source, mtl_source;     // a model's uploaded parts by name: "source" and "mtl_source"
   Uploads textures;                   // a model's "textures": the files it names, by file name
   std::optional<ModelFormat> format;  // a model's "format"; "obj" for the type "obj"
+  ShaderPrimitive shader;             // a shader's values ("source" is `source`)
   // Ready for the next primitive, keeping the flat buffers' capacity.
   void reset() {
     static_cast<Keys&>(*this) = Keys{};
@@ -118,8 +121,10 @@ struct PrimitiveState : Keys {
       format.reset();
       seen_model = false;
     }
+    if (seen_shader) shader = ShaderPrimitive{}, source.clear(), seen_shader = false;
   }
-  bool seen_model = false;  // the last primitive was a mesh or a model
+  bool seen_shader = false;  // the last primitive was a shader
+  bool seen_model = false;   // the last primitive was a mesh or a model
 };
 
 struct Reader;
@@ -212,7 +217,7 @@ struct Reader {
   template <class T, std::size_t N>
   void read_object(const Field<T> (&fields)[N], T& state, const Path& at, const char* expected);
   template <class F, std::size_t N>
-  [[noreturn]] void unknown_key(const F (&fields)[N], std::uint32_t allowed, std::string_view key,
+  [[noreturn]] void unknown_key(const F (&fields)[N], std::uint64_t allowed, std::string_view key,
                                 const Path& at);
 
   // Values (scene_values.cpp): each reads the value at the cursor, `at` its pointer for errors.
@@ -232,7 +237,13 @@ struct Reader {
   void lights(const Path& at);
   Mat4 transform(const Path& at);
   Edges edges(const Path& at);
-  Texture texture(const Path& at);
+  Texture texture(const Path& at, std::int64_t pending = 0);
+  // A shader primitive's values (scene_shader.cpp).
+  std::array<double, 4> four_numbers(const Path& at, const char* what, bool two_allowed);
+  void channels(PrimitiveState& s, const Path& at);
+  void uniforms(PrimitiveState& s, const Path& at);
+  void rect(PrimitiveState& s, const Path& at);
+  void finish_shader(PrimitiveState& s, const Path& at);
   // The document and its primitives (scene_reader.cpp).
   void primitives(const Path& at);
   void primitive(const Path& at);
@@ -245,7 +256,7 @@ struct Reader {
 };
 
 template <class F, std::size_t N>
-void Reader::unknown_key(const F (&fields)[N], std::uint32_t allowed, std::string_view key, const Path& at) {
+void Reader::unknown_key(const F (&fields)[N], std::uint64_t allowed, std::string_view key, const Path& at) {
   std::string best, known;
   std::size_t best_distance = 3;  // more than two edits away is not a typo
   for (std::size_t i = 0; i < N; ++i) {
@@ -260,7 +271,7 @@ void Reader::unknown_key(const F (&fields)[N], std::uint32_t allowed, std::strin
 
 template <class T, std::size_t N>
 void Reader::read_object(const Field<T> (&fields)[N], T& state, const Path& at, const char* expected) {
-  static_assert(N <= 32, "`allowed` and `seen` hold a bit per field");
+  static_assert(N <= 64, "`allowed` and `seen` hold a bit per field");
   expect(at, format::kObject, expected);
   std::size_t next = 0;  // where the search for a key starts: documents tend to keep the table's order
   for (bool more = in.object_begin(); more; more = in.object_next()) {
@@ -275,10 +286,10 @@ void Reader::read_object(const Field<T> (&fields)[N], T& state, const Path& at, 
     next = i + 1 == N ? 0 : i + 1;
     if (state.seen >> i & 1)
       invalid(field, "\"" + std::string(key) + "\" is given twice in one object; give each key once");
-    state.seen |= 1u << i;
+    state.seen |= std::uint64_t{1} << i;
     if (!(fields[i].kinds >> static_cast<int>(kind) & 1)) wrong_kind(field, kind, fields[i].expected);
     fields[i].read(*this, state, field);
-    if (const std::uint32_t early =
+    if (const std::uint64_t early =
             state.seen & ~state.allowed) {  // read before a "type" that does not take it
       const std::string_view k = fields[std::countr_zero(early)].key;
       unknown_key(fields, state.allowed, k, Path(at, k, field.byte()));

@@ -36,10 +36,34 @@ __attribute__((target_clones("avx2", "default"))) bool finite(const std::vector<
   return !(ones & 0x80000000u);
 }
 
+// A shader primitive's program exists, its inputs are finite, its channels name its images and its
+// rectangle has an area.
+void check_shader(const Scene& scene, const Primitive& p, const std::string& where) {
+  if (p.mesh >= scene.shaders.size())
+    throw SceneError(ErrorKind::invalid, "shader primitive refers to a missing shader", {where, 0, 0});
+  const ShaderPrimitive& s = scene.shaders[p.mesh];
+  bool finite = format::kShaderInput.contains(s.time);
+  for (const double v : s.mouse) finite &= format::kShaderInput.contains(v);
+  for (const double v : s.date) finite &= format::kShaderInput.contains(v);
+  if (!finite) throw SceneError(ErrorKind::invalid, format::kShaderInput.rule, {where, 0, 0});
+  for (const std::int32_t c : s.channels)
+    if (c < -1 || c >= static_cast<std::int32_t>(s.textures.size()))
+      throw SceneError(ErrorKind::invalid, "a shader's channel refers to an image it does not have",
+                       {where + "/channels", 0, 0});
+  if (!s.whole && (s.rect[2] < 1 || s.rect[3] < 1 || s.rect[2] > kMaxImageSide || s.rect[3] > kMaxImageSide ||
+                   std::abs(s.rect[0]) > kMaxImageSide || std::abs(s.rect[1]) > kMaxImageSide))
+    throw SceneError(ErrorKind::invalid, "a shader's rect is [x, y, width, height] within 16384 pixels",
+                     {where + "/rect", 0, 0});
+}
+
 void check_references(const Scene& scene) {
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& p = scene.primitives[i];
     if (p.kind == PrimitiveKind::mesh) continue;  // checked below
+    if (p.kind == PrimitiveKind::shader) {
+      check_shader(scene, p, "/primitives/" + std::to_string(i));
+      continue;
+    }
     const std::size_t colors = p.per_vertex_color ? p.point_count : 1;
     const bool ok = std::size_t{p.first_point} + p.point_count <= scene.points.size() &&
                     std::size_t{p.first_color} + colors <= scene.colors.size() &&

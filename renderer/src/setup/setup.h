@@ -31,6 +31,8 @@ struct DrawCall {
   const MipChain* texture = nullptr;
   /// Specular modes (PrimitivePlan::specular): its triangles' material; model lambert for faces without one.
   Specular specular;
+  /// Shader primitives: index into RenderPlan::shaders; its one quad record covers the program's pixels.
+  std::int32_t shader = -1;
 };
 
 /// A draw call for `mode`, lighting at its defaults.

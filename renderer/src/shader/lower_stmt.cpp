@@ -1,0 +1,318 @@
+// The lowering's statements and calls. Control flow becomes mask operations (ir.h): an if narrows `exec`
+// to its condition and merges the lanes back; a loop runs while a lane is live, lanes leaving by break,
+// continue and return gathered in accumulators and restored where their statement ends. A call is
+// inlined, its parameters bound to the arguments' slots when the function never writes them.
+#include "shader/lowerer.h"
+
+namespace raster::shader {
+namespace {
+
+// Whether a return sits inside an if, loop or switch of `s` (then lanes can return at different times,
+// and the function needs a return mask and a result to store into).
+bool nested_return(const Stmt* s, int depth) {
+  if (!s) return false;
+  switch (s->kind) {
+    case StmtKind::return_:
+      return depth > 0;
+    case StmtKind::block:
+      for (const Stmt* c : s->list)
+        if (nested_return(c, depth)) return true;
+      return false;
+    case StmtKind::if_:
+      return nested_return(s->body, depth + 1) || nested_return(s->else_body, depth + 1);
+    case StmtKind::for_:
+    case StmtKind::while_:
+    case StmtKind::do_:
+    case StmtKind::switch_:
+      return nested_return(s->body, depth + 1);
+    default:
+      return false;
+  }
+}
+
+bool has_continue(const Stmt* s) {
+  if (!s) return false;
+  switch (s->kind) {
+    case StmtKind::continue_:
+      return true;
+    case StmtKind::block:
+      for (const Stmt* c : s->list)
+        if (has_continue(c)) return true;
+      return false;
+    case StmtKind::if_:
+      return has_continue(s->body) || has_continue(s->else_body);
+    case StmtKind::switch_:
+      return has_continue(s->body);
+    default:
+      return false;  // a nested loop's continue is its own
+  }
+}
+
+}  // namespace
+
+void Lowerer::leave(Slot accumulator) {
+  emit_to(Op::leave, accumulator);
+}
+
+void Lowerer::block(const Stmt* s) {
+  for (const Stmt* c : s->list) {
+    if (terminated_ || failed_) return;
+    statement(c);
+  }
+}
+
+void Lowerer::statement(const Stmt* s) {
+  if (!s || terminated_ || !tick()) return;
+  switch (s->kind) {
+    case StmtKind::block:
+      return block(s);
+    case StmtKind::declaration:
+      return declaration(s->decl);
+    case StmtKind::expression:
+      if (s->expr) expr(s->expr);
+      return;
+    case StmtKind::if_:
+      return if_statement(s);
+    case StmtKind::for_:
+    case StmtKind::while_:
+    case StmtKind::do_:
+      return loop(s);
+    case StmtKind::switch_:
+      return switch_statement(s);
+    case StmtKind::break_:
+      return leave(breakables_.back().exit);
+    case StmtKind::continue_:
+      for (auto b = breakables_.rbegin(); b != breakables_.rend(); ++b)
+        if (b->loop) return leave(b->resume);
+      return;
+    case StmtKind::return_:
+      return return_statement(s);
+    case StmtKind::discard:
+      // Discarded lanes never matter again, so stores after it need no mask for them.
+      leave(kDiscardSlot);
+      if (frames_.size() == 1 && frames_.back().nesting == 0) terminated_ = true;
+      return;
+    default:
+      return;  // empty; case labels are the switch's
+  }
+}
+
+void Lowerer::declaration(const Declaration* d) {
+  for (const Declarator& dv : d->vars) {
+    const Variable* v = dv.variable;
+    if (!v) continue;
+    if (v->constant) {
+      frames_.back().vars[v] = constant_value(v->type, v->value, v->type.is_array());
+      continue;
+    }
+    const Value init = dv.init ? expr(dv.init) : Value{};
+    auto& vars = frames_.back().vars;  // after the initializer, whose calls may have grown frames_
+    if (!v->written) {                 // never assigned: the initializer's slots (or zeros) are the variable
+      vars[v] =
+          dv.init ? stable(init)
+                  : constant_value(v->type,
+                                   std::vector<std::uint32_t>(static_cast<std::size_t>(v->type.slots()), 0u),
+                                   false);
+      continue;
+    }
+    // A fresh variable: lanes not live here cannot read it within its scope, so the first store is whole.
+    Value value = fresh(v->type);
+    if (!value.s.empty()) mutable_group_[out_.group_of[value.s[0]]] = true;
+    for (std::size_t i = 0; i < value.s.size(); ++i)
+      emit_to(Op::mov, value.s[i], dv.init ? init.s[i] : constant(0));
+    vars[v] = value;
+  }
+}
+
+void Lowerer::if_statement(const Stmt* s) {
+  const Value c = expr(s->expr);
+  if (s->expr->constant) {  // a constant condition: only its branch exists
+    const std::vector<std::uint32_t> k = s->expr->value.empty() ? fold_constant(*s->expr) : s->expr->value;
+    if (!k.empty()) return statement(k[0] ? s->body : s->else_body);
+  }
+  const Slot saved = group(1);
+  const std::size_t begin = emit_to(Op::if_begin, saved, c.s[0]);
+  const bool was_uniform = uniform_;
+  uniform_ = false;
+  ++frames_.back().nesting;
+  statement(s->body);
+  if (s->else_body) {
+    const Slot after_then = group(1);
+    const std::size_t middle = emit_to(Op::if_else, after_then, saved, c.s[0]);
+    out_.program.code[begin].imm = static_cast<std::uint32_t>(middle);
+    statement(s->else_body);
+    out_.program.code[middle].imm = static_cast<std::uint32_t>(emit_to(Op::if_end, 0, after_then));
+  } else {
+    out_.program.code[begin].imm = static_cast<std::uint32_t>(emit_to(Op::if_merge, 0, saved, c.s[0]));
+  }
+  --frames_.back().nesting;
+  uniform_ = was_uniform && !frames_.back().returned;
+}
+
+// for, while and do-while: exits (the condition false, or break) gather in `exit`, lanes that continue in
+// `resume` until the iteration's end; the loop goes round while any lane is live.
+void Lowerer::loop(const Stmt* s) {
+  if (s->kind == StmtKind::for_) statement(s->init);
+  Breakable b;
+  b.loop = true;
+  b.exit = group(1);
+  emit_to(Op::clear, b.exit);
+  if (has_continue(s->body)) {
+    b.resume = group(1);
+    emit_to(Op::clear, b.resume);
+  }
+  const bool was_uniform = uniform_;
+  uniform_ = false;
+  ++frames_.back().nesting;
+  breakables_.push_back(b);
+  const auto index = static_cast<Slot>(out_.program.loops.size());
+  out_.program.loops.push_back({s->pos});
+  const auto top = static_cast<std::uint32_t>(patch_target());
+  std::vector<std::size_t> tests;
+  const auto test = [&] {
+    Slot c = 0;
+    if (s->decl) {
+      declaration(s->decl);
+      c = variable(s->decl->vars.front().variable).s.at(0);
+    } else if (s->expr) {
+      if (s->expr->constant && !s->expr->value.empty() && s->expr->value[0] != 0) return;  // while (true)
+      c = expr(s->expr).s[0];
+    } else {
+      return;  // for (;;)
+    }
+    tests.push_back(emit_to(Op::loop_test, b.exit, c));
+  };
+  if (s->kind != StmtKind::do_) test();
+  statement(s->body);
+  if (b.resume) {
+    emit_to(Op::mask_or, 0, b.resume);
+    emit_to(Op::clear, b.resume);
+  }
+  if (s->step) expr(s->step);
+  if (s->kind == StmtKind::do_) test();
+  emit_to(Op::loop_back, 0, 0, 0, index, top);
+  const std::size_t end = emit_to(Op::loop_end, 0, b.exit);
+  for (const std::size_t t : tests) out_.program.code[t].imm = static_cast<std::uint32_t>(end);
+  breakables_.pop_back();
+  --frames_.back().nesting;
+  uniform_ = was_uniform && !frames_.back().returned;
+}
+
+// A switch: no lane runs until its label; a case adds the lanes whose value matches, default those no
+// case matches, and lanes fall through to the next label's statements until they break.
+void Lowerer::switch_statement(const Stmt* s) {
+  const Slot value = expr(s->expr).s[0];
+  const Slot entry = group(1);
+  emit_to(Op::mov, entry, kExecSlot);
+  Breakable b;
+  b.exit = group(1);
+  emit_to(Op::clear, b.exit);
+  std::vector<Slot> labels;
+  Slot none = 0;
+  for (const Stmt* c : s->body->list) {
+    if (c->kind != StmtKind::case_) continue;
+    const std::vector<std::uint32_t> k = c->expr->value.empty() ? fold_constant(*c->expr) : c->expr->value;
+    labels.push_back(emit(Op::ieq, value, constant(k.empty() ? 0 : k[0])));
+  }
+  Slot any = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) any = i == 0 ? labels[0] : emit(Op::bor, any, labels[i]);
+  none = labels.empty() ? constant(~0u) : emit(Op::bnot, any);
+  leave(group(1));  // exec = 0
+  const bool was_uniform = uniform_;
+  uniform_ = false;
+  ++frames_.back().nesting;
+  breakables_.push_back(b);
+  std::size_t next_label = 0;
+  for (const Stmt* c : s->body->list) {
+    if (c->kind == StmtKind::case_) {
+      emit_to(Op::mask_or_and, 0, entry, labels[next_label++]);
+    } else if (c->kind == StmtKind::default_) {
+      emit_to(Op::mask_or_and, 0, entry, none);
+    } else {
+      statement(c);
+    }
+  }
+  emit_to(Op::mask_or, 0, b.exit);
+  breakables_.pop_back();
+  --frames_.back().nesting;
+  uniform_ = was_uniform && !frames_.back().returned;
+}
+
+void Lowerer::return_statement(const Stmt* s) {
+  Value v;
+  if (s->expr) v = expr(s->expr);  // may inline calls, which grow frames_: look at the frame after
+  Frame& f = frames_.back();
+  if (f.nesting == 0 && !f.result_group) {  // the last return, on every live lane: the value is the result
+    if (s->expr) f.result = stable(v);
+    terminated_ = true;
+    return;
+  }
+  for (std::size_t i = 0; i < v.s.size() && i < f.result.s.size(); ++i)
+    emit_to(uniform_ ? Op::mov : Op::store, f.result.s[i], v.s[i]);
+  if (f.nesting == 0) {
+    terminated_ = true;
+    return;
+  }
+  leave(f.returns);
+  f.returned = true;
+  uniform_ = false;
+}
+
+// Runs `f`'s body in `frame`: the lanes that return early rejoin at its end.
+void Lowerer::function_body(const FunctionDecl* f, Frame& frame) {
+  const Type ret = frame.function ? frame.function->ret : Type::of(Basic::void_);
+  if (nested_return(f->body, 0)) {
+    frame.result_group = true;
+    frame.returns = group(1);
+    emit_to(Op::clear, frame.returns);
+    if (!ret.is_void()) {
+      frame.result = fresh(ret);
+      for (const Slot r : frame.result.s) emit_to(Op::mov, r, constant(0));  // a lane that falls off the end
+    }
+  }
+  const bool was_terminated = terminated_, was_uniform = uniform_;
+  terminated_ = false;
+  frames_.push_back(std::move(frame));
+  block(f->body);
+  frame = std::move(frames_.back());
+  frames_.pop_back();
+  if (frame.returns) emit_to(Op::mask_or, 0, frame.returns);
+  terminated_ = was_terminated;
+  uniform_ = was_uniform;
+  if (!ret.is_void() && frame.result.s.size() != static_cast<std::size_t>(ret.slots()))
+    frame.result =
+        constant_value(ret, std::vector<std::uint32_t>(static_cast<std::size_t>(ret.slots()), 0u), false);
+}
+
+Value Lowerer::call(const Expr* e) {
+  const Function* fn = e->function;
+  Frame frame;
+  frame.function = fn;
+  std::vector<std::pair<Place, Value>> copy_back;
+  for (std::size_t i = 0; i < e->args.size(); ++i) {
+    const Variable* param = fn->parameters[i];
+    const Qualifier q = fn->qualifiers[i];
+    Value bound;
+    if (q == Qualifier::out || q == Qualifier::inout) {
+      const Place p = place(e->args[i]);
+      bound = fresh(param->type);
+      const Value in = q == Qualifier::inout ? read(p) : Value{};
+      for (std::size_t k = 0; k < bound.s.size(); ++k)
+        emit_to(Op::mov, bound.s[k], q == Qualifier::inout ? in.s[k] : constant(0));
+      copy_back.emplace_back(p, bound);
+    } else {
+      const Value a = expr(e->args[i]);
+      bound = param->written ? contiguous_copy(a) : stable(a);
+      bound.channel = a.channel;
+    }
+    if (param->written && !bound.s.empty()) mutable_group_[out_.group_of[bound.s[0]]] = true;
+    frame.vars[param] = bound;
+  }
+  function_body(fn->definition, frame);
+  for (const auto& [p, v] : copy_back) write(p, v);
+  Value result = frame.result;
+  result.type = fn->ret;
+  return result;
+}
+
+}  // namespace raster::shader

@@ -1,0 +1,6 @@
+// rule: 3.3 Preprocessor: __LINE__ is predefined and cannot be undefined
+// error: '#undef' : predefined names can't be (un)defined: __LINE__
+#undef __LINE__
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    fragColor = vec4(1.0);
+}

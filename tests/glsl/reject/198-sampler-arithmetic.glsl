@@ -1,0 +1,6 @@
+// rule: 4.1.7 Sampler Types: samplers are opaque; there is no arithmetic on them
+// error: '+' : wrong operand types: no operation '+' exists that takes a left-hand operand of type ' uniform highp s...
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    fragColor = vec4(1.0);
+    iChannel0 + iChannel1;
+}

@@ -1,0 +1,7 @@
+// rule: 5.7 Structure and Array Operations: .length() applies to arrays only in ES 3.00 (not matrices)
+// error: '.length() on vectors and matrices' : not supported with this profile: es
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    mat3 m = mat3(1.0);
+    int n = m.length();
+    fragColor = vec4(float(n));
+}

@@ -1,0 +1,6 @@
+// rule: 5.1 Operators: || takes bool operands
+// error: '||' : wrong operand types: no operation '||' exists that takes a left-hand operand of type ' uniform highp...
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    bool b = iTime || false;
+    fragColor = vec4(b ? 1.0 : 0.0);
+}

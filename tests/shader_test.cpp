@@ -1,0 +1,258 @@
+// Shader primitives (issue 61): programs compiled by rasterd's GLSL front end and drawn, pixel by pixel
+// against values computed here with the same float operations, and the same bytes from every lane width and
+// thread count.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "raster/plan.h"
+#include "raster/render.h"
+#include "raster/scene.h"
+#include "raster/shader.h"
+
+namespace {
+
+using raster::Image;
+using raster::Scene;
+
+Scene shader_scene(const std::string& source, int width, int height) {
+  Scene s;
+  s.width = width, s.height = height;
+  raster::ShaderPrimitive p;
+  p.source = source;
+  s.shaders.push_back(p);
+  raster::Primitive prim;
+  prim.kind = raster::PrimitiveKind::shader;
+  s.primitives.push_back(prim);
+  return s;
+}
+
+// With `threads`, exactly that many, whatever the plan's estimate of the work.
+Image draw(const Scene& scene, const raster::PlanOptions& options = {}, int threads = 0) {
+  raster::RenderPlan plan = raster::plan(scene, {}, options);
+  if (threads > 0) plan.threads = threads;
+  return raster::render(scene, plan);
+}
+
+Image draw(const std::string& source, int width = 16, int height = 16) {
+  return draw(shader_scene(source, width, height));
+}
+
+// A float as GL writes it to a byte: clamped to 0..1, times 255, rounded to nearest even.
+int gl_byte(float v) {
+  v = v > 0 ? (v < 1 ? v : 1) : 0;
+  return static_cast<int>(std::nearbyint(v * 255.0f));
+}
+
+int channel(const Image& im, int x, int y, int c) {
+  return im.at(x, y)[c];
+}
+
+std::string program(const std::string& body) {
+  return "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n" + body + "\n}\n";
+}
+
+TEST(Shader, FragCoordHasGlsOriginAtTheBottomLeftAndPixelCentres) {
+  // Red is x / 16, green y / 16 of the pixel centre: the top-left pixel is (0.5, 15.5).
+  const Image im = draw(program("fragColor = vec4(fragCoord / iResolution.xy, 0.25, 1.0);"));
+  ASSERT_EQ(im.width, 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      EXPECT_EQ(channel(im, x, y, 0), gl_byte((x + 0.5f) / 16.0f)) << x << "," << y;
+      EXPECT_EQ(channel(im, x, y, 1), gl_byte((15 - y + 0.5f) / 16.0f)) << x << "," << y;
+      EXPECT_EQ(channel(im, x, y, 2), gl_byte(0.25f));
+    }
+}
+
+TEST(Shader, ARectangleHasItsOwnOriginAndResolution) {
+  Scene s = shader_scene(
+      program("fragColor = vec4(fragCoord.x / iResolution.x, iResolution.y / 255.0, 0, 1);"), 16, 16);
+  s.background = {0, 0, 255, 255};
+  s.shaders[0].whole = false;
+  s.shaders[0].rect = {4, 2, 8, 10};
+  const Image im = draw(s);
+  EXPECT_EQ(channel(im, 3, 5, 2), 255) << "outside the rectangle: the background";
+  EXPECT_EQ(channel(im, 4, 2, 0), gl_byte(0.5f / 8.0f));
+  EXPECT_EQ(channel(im, 11, 11, 0), gl_byte(7.5f / 8.0f));
+  EXPECT_EQ(channel(im, 11, 11, 1), 10);
+  EXPECT_EQ(channel(im, 12, 11, 2), 255);
+}
+
+TEST(Shader, ControlFlowRunsEachPixelsOwnPath) {
+  // Per pixel: a loop that breaks at a pixel-dependent count, a continue, an early return in a function, a
+  // switch with fall-through, and a dynamically indexed array.
+  const std::string src = R"(
+int steps(int n) {
+  int k = 0;
+  for (int i = 0; i < 100; i++) {
+    if (i == n) break;
+    if (i % 2 == 1) continue;
+    k += 1;
+  }
+  return k;
+}
+float pick(int i) {
+  if (i > 10) return 1.0;
+  float a[4] = float[](0.1, 0.2, 0.3, 0.4);
+  return a[i & 3];
+}
+int fall(int v) {
+  int r = 0;
+  switch (v) {
+    case 0: r += 1;
+    case 1: r += 2; break;
+    case 2: r += 4;
+    default: r += 8;
+  }
+  return r;
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+  int x = int(fragCoord.x), y = int(fragCoord.y);
+  fragColor = vec4(float(steps(x)) / 255.0, pick(y), float(fall(x % 4)) / 255.0, 1.0);
+}
+)";
+  const Image im = draw(src, 16, 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const int gy = 15 - y;
+      const int expect_steps = (x + 1) / 2;
+      const float a[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+      const float expect_pick = gy > 10 ? 1.0f : a[gy & 3];
+      const int v = x % 4;
+      const int expect_fall = v == 0 ? 3 : v == 1 ? 2 : v == 2 ? 12 : 8;
+      EXPECT_EQ(channel(im, x, y, 0), expect_steps) << x << "," << y;
+      EXPECT_EQ(channel(im, x, y, 1), gl_byte(expect_pick)) << x << "," << y;
+      EXPECT_EQ(channel(im, x, y, 2), expect_fall) << x << "," << y;
+    }
+}
+
+TEST(Shader, DiscardedPixelsKeepWhatIsBelow) {
+  Scene s = shader_scene(program("if (fragCoord.x < 8.0) discard; fragColor = vec4(1, 0, 0, 1);"), 16, 4);
+  s.background = {0, 255, 0, 255};
+  const Image im = draw(s);
+  EXPECT_EQ(channel(im, 7, 0, 1), 255);
+  EXPECT_EQ(channel(im, 8, 0, 0), 255);
+  EXPECT_EQ(channel(im, 8, 0, 1), 0);
+}
+
+TEST(Shader, NotOpaqueCompositesByTheProgramsAlpha) {
+  Scene s = shader_scene(program("fragColor = vec4(1.0, 0.0, 0.0, 0.5);"), 8, 8);
+  s.background = {0, 0, 255, 255};
+  const Image opaque = draw(s);
+  EXPECT_EQ(channel(opaque, 0, 0, 0), 255);
+  EXPECT_EQ(channel(opaque, 0, 0, 2), 0);
+  s.shaders[0].opaque = false;
+  const Image blended = draw(s);
+  EXPECT_EQ(channel(blended, 0, 0, 0), 128);
+  EXPECT_EQ(channel(blended, 0, 0, 2), 127);
+}
+
+TEST(Shader, UndefinedIntegerOperationsHaveOneAnswer) {
+  // x / 0, x % 0, INT_MIN / -1, shifts past 31, and NaN and Inf colours: the answers the README states.
+  const std::string src = program(R"(
+  int zero = int(fragCoord.x) - int(fragCoord.x);
+  int m = int(0x80000000u);
+  int q = 7 / zero, r = 7 % zero, big = m / (zero - 1);
+  uint uq = 7u / uint(zero);
+  int s = 1 << (33 + zero);
+  float nan = sqrt(-1.0 + float(zero)), inf = 1.0 / float(zero);
+  fragColor = vec4(float(q == 0) * 0.5 + float(r == -1) * 0.25, float(big == m) * 0.5 + float(uq == 0xffffffffu) * 0.25,
+                   float(s == 2), 1.0);
+  if (fragCoord.x > 4.0) fragColor = vec4(nan, inf, -inf, 1.0);
+)");
+  const Image im = draw(src, 8, 1);
+  EXPECT_EQ(channel(im, 0, 0, 0), gl_byte(0.75f));
+  EXPECT_EQ(channel(im, 0, 0, 1), gl_byte(0.75f));
+  EXPECT_EQ(channel(im, 0, 0, 2), 255);
+  EXPECT_EQ(channel(im, 6, 0, 0), 0) << "NaN is 0";
+  EXPECT_EQ(channel(im, 6, 0, 1), 255) << "+Inf is 1";
+  EXPECT_EQ(channel(im, 6, 0, 2), 0) << "-Inf is 0";
+}
+
+TEST(Shader, UniformsAreSetByName) {
+  Scene s = shader_scene(
+      "uniform vec3 tint; uniform int level;\n" + program("fragColor = vec4(tint * float(level), 1.0);"), 8,
+      8);
+  s.shaders[0].uniforms = {{"tint", {0.25, 0.5, 0.125}}, {"level", {2}}};
+  const Image im = draw(s);
+  EXPECT_EQ(channel(im, 3, 3, 0), gl_byte(0.5f));
+  EXPECT_EQ(channel(im, 3, 3, 1), 255);
+  EXPECT_EQ(channel(im, 3, 3, 2), gl_byte(0.25f));
+  s.shaders[0].uniforms = {{"tnit", {1, 2, 3}}};
+  try {
+    draw(s);
+    FAIL() << "an undeclared uniform is an error";
+  } catch (const raster::SceneError& e) {
+    EXPECT_EQ(e.kind(), raster::ErrorKind::invalid);
+    EXPECT_EQ(e.where().pointer, "/primitives/0/uniforms/tnit");
+    EXPECT_NE(std::string(e.what()).find("tint"), std::string::npos)
+        << "names what it declares: " << e.what();
+  }
+}
+
+TEST(Shader, CompileErrorsSayWhereEachIs) {
+  const raster::ShaderCompileResult r = raster::compile_shadertoy(
+      "void mainImage(out vec4 c, in vec2 p) {\n  float x = 1;\n  c = vec4(y);\n}\n");
+  ASSERT_FALSE(r.shader);
+  ASSERT_EQ(r.errors.size(), 2u);
+  EXPECT_EQ(r.errors[0].line, 2);
+  EXPECT_EQ(r.errors[0].column, 13);
+  EXPECT_EQ(r.errors[0].string, 1);
+  EXPECT_EQ(r.errors[1].line, 3);
+  EXPECT_NE(r.errors[1].text.find("'y'"), std::string::npos) << r.errors[1].text;
+  // Through a scene, the first error's place and every message.
+  try {
+    draw(shader_scene("void mainImage(out vec4 c, in vec2 p) {\n  float x = 1;\n  c = vec4(y);\n}\n", 8, 8));
+    FAIL() << "a program that does not compile cannot draw";
+  } catch (const raster::SceneError& e) {
+    EXPECT_EQ(e.kind(), raster::ErrorKind::shader);
+    EXPECT_EQ(e.where().pointer, "/primitives/0/source");
+    EXPECT_EQ(e.where().line, 2u);
+    EXPECT_EQ(e.where().column, 13u);
+    EXPECT_EQ(e.notes().size(), 2u);
+  }
+}
+
+TEST(Shader, ALoopThatNeverEndsStopsAtItsBoundAndNamesTheLoop) {
+  Scene s = shader_scene(
+      program("float t = 0.0;\nwhile (iTime >= 0.0) {\n  t += 1.0;\n}\nfragColor = vec4(t);"), 8, 8);
+  try {
+    draw(s);
+    FAIL() << "an endless loop must stop";
+  } catch (const raster::SceneError& e) {
+    EXPECT_EQ(e.kind(), raster::ErrorKind::program);
+    EXPECT_EQ(e.where().line, 3u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pixel ("), std::string::npos) << e.what();
+  }
+}
+
+// The bench programs (and this suite's) give one picture from the scalar reference, SSE2 and AVX2, and at
+// 1, 2, 3 and 7 threads.
+TEST(Shader, EveryLaneWidthAndThreadCountGivesTheSameBytes) {
+  for (const char* name : {"gradient", "checker_aa", "mandelbrot", "raymarch_shadow", "fbm_noise",
+                           "sine_hash", "voronoi", "features"}) {
+    std::ifstream f(std::string(RASTERD_SOURCE_DIR) + "/bench/shaders/" + name + ".glsl");
+    ASSERT_TRUE(f) << name;
+    std::stringstream text;
+    text << f.rdbuf();
+    const Scene s = shader_scene(text.str(), 72, 40);
+    raster::PlanOptions scalar;
+    scalar.scalar_shading = true, scalar.max_threads = 1;
+    const Image reference = draw(s, scalar);
+    for (const raster::Simd simd : {raster::Simd::sse2, raster::Simd::avx2}) {
+      if (simd == raster::Simd::avx2 && raster::best_simd() != raster::Simd::avx2) continue;
+      for (const int threads : {1, 2, 3, 7}) {
+        raster::PlanOptions o;
+        o.max_simd = simd, o.max_threads = threads, o.tile = 16;
+        EXPECT_EQ(draw(s, o, threads).pixels, reference.pixels)
+            << name << " simd " << int(simd) << " threads " << threads;
+      }
+    }
+  }
+}
+
+}  // namespace
