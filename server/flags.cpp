@@ -53,6 +53,70 @@ constexpr Flag kFlags[] = {
     {"shutdown-grace-ms", "after SIGTERM/SIGINT, time for running and queued renders (default 20000)"},
     {"cache-max-age",
      "seconds in Cache-Control: public, max-age=N, immutable on GET /render (default 86400)"},
+    {"shader-cache-bytes",
+     "compiled shader programs kept between requests, by source (default 67108864 = 64 MiB; 0 = none); set "
+     "aside from the default memory budget"},
+    {"shader-max-source-bytes", "a shader program's text, 400 invalid-shader above (default 65536)"},
+    {"shader-max-tokens",
+     "a program's tokens after preprocessing, every macro expansion counted, 400 above (default 262144)"},
+    {"shader-max-nesting",
+     "brackets, operators, statements and #if blocks inside each other, 400 above (default 200)"},
+    {"shader-max-instructions",
+     "a program's operations once every function is inlined, 400 above (default 1048576)"},
+    {"shader-max-slots",
+     "32-bit values a program holds for a pixel at once (arrays included), 400 above (default 16384)"},
+    {"shader-max-loop-iterations",
+     "loop iterations a pixel (a sample) may take, every loop together, 422 shader-limit past it (default "
+     "65536)"},
+};
+
+// The flags that take a whole number: its range, and where it goes.
+struct NumberFlag {
+  const char* name;
+  long long lo, hi;
+  void (*set)(ServiceConfig&, long long);
+};
+constexpr NumberFlag kNumberFlags[] = {
+    {"max-body-bytes", 1, 1ll << 32,
+     [](ServiceConfig& c, long long n) { c.max_body_bytes = std::size_t(n); }},
+    {"max-width", 1, raster::kMaxImageSide,
+     [](ServiceConfig& c, long long n) { c.limits.max_width = int(n); }},
+    {"max-height", 1, raster::kMaxImageSide,
+     [](ServiceConfig& c, long long n) { c.limits.max_height = int(n); }},
+    {"max-pixels", 1, 1ll << 28, [](ServiceConfig& c, long long n) { c.limits.max_pixels = n; }},
+    {"max-primitives", 1, 1ll << 31, [](ServiceConfig& c, long long n) { c.limits.max_primitives = n; }},
+    {"max-model-faces", 1, 1ll << 31, [](ServiceConfig& c, long long n) { c.limits.max_model_faces = n; }},
+    {"max-model-points", 1, 1ll << 31, [](ServiceConfig& c, long long n) { c.limits.max_model_points = n; }},
+    {"max-json-depth", 2, 1000, [](ServiceConfig& c, long long n) { c.limits.max_json_depth = int(n); }},
+    {"render-deadline-ms", 1, 3'600'000,
+     [](ServiceConfig& c, long long n) { c.render_deadline = std::chrono::milliseconds(n); }},
+    {"body-deadline-ms", 1, 3'600'000,
+     [](ServiceConfig& c, long long n) { c.body_deadline = std::chrono::milliseconds(n); }},
+    {"workers", 1, 1024, [](ServiceConfig& c, long long n) { c.workers = int(n); }},
+    {"max-queue", 1, 4096, [](ServiceConfig& c, long long n) { c.max_queue = int(n); }},
+    {"max-queue-wait-ms", 0, 3'600'000,
+     [](ServiceConfig& c, long long n) { c.max_queue_wait = std::chrono::milliseconds(n); }},
+    {"max-queued-bytes", 0, 1ll << 40,
+     [](ServiceConfig& c, long long n) { c.max_queued_bytes = std::size_t(n); }},
+    {"render-threads", 1, 1024, [](ServiceConfig& c, long long n) { c.render_threads = int(n); }},
+    {"shutdown-grace-ms", 0, 3'600'000,
+     [](ServiceConfig& c, long long n) { c.shutdown_grace = std::chrono::milliseconds(n); }},
+    {"cache-max-age", 0, 31'536'000, [](ServiceConfig& c, long long n) { c.cache_max_age = int(n); }},
+    {"shader-cache-bytes", 0, 1ll << 40,
+     [](ServiceConfig& c, long long n) { c.shader_cache_bytes = std::size_t(n); }},
+    {"shader-max-source-bytes", 1, 1ll << 26,
+     [](ServiceConfig& c, long long n) { c.limits.shader.max_source_bytes = std::size_t(n); }},
+    {"shader-max-tokens", 1, 1ll << 26,
+     [](ServiceConfig& c, long long n) { c.limits.shader.max_tokens = std::size_t(n); }},
+    // The parser recurses once a level: a bound the connection threads' stacks hold.
+    {"shader-max-nesting", 1, 1000,
+     [](ServiceConfig& c, long long n) { c.limits.shader.max_nesting = int(n); }},
+    {"shader-max-instructions", 1, 1ll << 26,
+     [](ServiceConfig& c, long long n) { c.limits.shader.max_instructions = std::size_t(n); }},
+    {"shader-max-slots", 1, 1ll << 20,
+     [](ServiceConfig& c, long long n) { c.limits.shader.max_slots = std::size_t(n); }},
+    {"shader-max-loop-iterations", 1, 1ll << 40,
+     [](ServiceConfig& c, long long n) { c.limits.shader.max_loop_iterations = n; }},
 };
 
 // "*", "none", or a comma-separated list of origins (blanks around commas ignored).
@@ -128,45 +192,17 @@ std::string apply_flag_values(std::map<std::string, std::string>& values, Servic
     return n;
   };
   for (const auto& [name, v] : values) {
-    if (name == "host")
+    const auto numeric = std::find_if(std::begin(kNumberFlags), std::end(kNumberFlags),
+                                      [&](const NumberFlag& f) { return name == f.name; });
+    if (numeric != std::end(kNumberFlags)) {
+      numeric->set(config, number(name, numeric->lo, numeric->hi));
+    } else if (name == "host") {
       host = v;
-    else if (name == "port")
+    } else if (name == "port") {
       port = static_cast<int>(number(name, 0, 65535));
-    else if (name == "max-body-bytes")
-      config.max_body_bytes = static_cast<std::size_t>(number(name, 1, 1ll << 32));
-    else if (name == "max-width")
-      config.limits.max_width = static_cast<int>(number(name, 1, raster::kMaxImageSide));
-    else if (name == "max-height")
-      config.limits.max_height = static_cast<int>(number(name, 1, raster::kMaxImageSide));
-    else if (name == "max-pixels")
-      config.limits.max_pixels = number(name, 1, 1ll << 28);
-    else if (name == "max-primitives")
-      config.limits.max_primitives = number(name, 1, 1ll << 31);
-    else if (name == "max-model-faces")
-      config.limits.max_model_faces = number(name, 1, 1ll << 31);
-    else if (name == "max-model-points")
-      config.limits.max_model_points = number(name, 1, 1ll << 31);
-    else if (name == "max-json-depth")
-      config.limits.max_json_depth = static_cast<int>(number(name, 2, 1000));
-    else if (name == "render-deadline-ms")
-      config.render_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
-    else if (name == "body-deadline-ms")
-      config.body_deadline = std::chrono::milliseconds(number(name, 1, 3'600'000));
-    else if (name == "workers")
-      config.workers = static_cast<int>(number(name, 1, 1024));
-    else if (name == "max-queue")
-      config.max_queue = static_cast<int>(number(name, 1, 4096));
-    else if (name == "max-queue-wait-ms")
-      config.max_queue_wait = std::chrono::milliseconds(number(name, 0, 3'600'000));
-    else if (name == "max-queued-bytes")
-      config.max_queued_bytes = static_cast<std::size_t>(number(name, 0, 1ll << 40));
-    else if (name == "cors-origins")
+    } else if (name == "cors-origins") {
       config.cors_origins = parse_origins(v);
-    else if (name == "render-threads")
-      config.render_threads = static_cast<int>(number(name, 1, 1024));
-    else if (name == "shutdown-grace-ms")
-      config.shutdown_grace = std::chrono::milliseconds(number(name, 0, 3'600'000));
-    else if (name == "memory-budget") {
+    } else if (name == "memory-budget") {
       config.memory_budget = parse_size(v);
       if (config.memory_budget < (1 << 20) && error.empty())
         error = "--memory-budget must be a size of at least 1M (e.g. 1536M, 2G or bytes), got '" + v + "'";
@@ -174,8 +210,7 @@ std::string apply_flag_values(std::map<std::string, std::string>& values, Servic
       if (v != "text" && v != "json" && error.empty())
         error = "--log-format must be text or json, got '" + v + "'";
       config.log_json = v == "json";
-    } else if (name == "cache-max-age")
-      config.cache_max_age = static_cast<int>(number(name, 0, 31'536'000));
+    }
   }
   return error;
 }
@@ -187,8 +222,8 @@ std::string service_help() {
       "rasterd serve [--flag value ...]\n\nEach flag can also be set in the environment as RASTERD_<FLAG> "
       "(e.g. RASTERD_MAX_BODY_BYTES);\nflags win over the environment.\n\n";
   for (const Flag& f : kFlags) {
-    char line[200];
-    std::snprintf(line, sizeof line, "  --%-20s %s\n", f.name, f.help);
+    char line[320];
+    std::snprintf(line, sizeof line, "  --%-26s %s\n", f.name, f.help);
     h += line;
   }
   return h;

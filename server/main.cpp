@@ -1,4 +1,5 @@
-// rasterd: `rasterd render scene.json -o out.png` and `rasterd serve --port 8080`.
+// rasterd: `rasterd render scene.json -o out.png` (or a model, or a ShaderToy program) and `rasterd serve
+// --port 8080`.
 #include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
@@ -28,11 +29,16 @@
 #include "request.h"
 #include "resources.h"
 #include "service.h"
+#include "shader_request.h"
 
 namespace {
 
 constexpr const char* kUsage = R"(usage:
   rasterd render SCENE.json [-o OUT.png] [--explain]   render a scene file ('-' = stdin / stdout)
+  rasterd render PROGRAM.glsl [-o OUT.png] [--width N] [--height N] [--time T] [--frame N]
+                 [--mouse x,y,cx,cy] [--antialias 1|4|8|16|area|auto] [--explain]
+                                                        a bare ShaderToy program (.glsl, .frag, .fs, or
+                                                        text with a mainImage), 512x288 by default
   rasterd render MODEL [-o OUT.png] [--width N] [--height N] [--background C] [--view V]
                  [--projection P] [--fov DEG] [--eye x,y,z] [--target x,y,z] [--up x,y,z|+z]
                  [--antialias 1|4|8|16|area|auto] [--format F] [--scale S] [--part NAME=FILE]
@@ -46,7 +52,8 @@ constexpr const char* kUsage = R"(usage:
   rasterd --version                                     the release and the render version
 
 render:  writes the PNG to OUT.png (default: stdout); --explain writes the render plan as JSON instead.
-         A scene file sets everything itself: the model options are for a bare model only.
+         A scene file sets everything itself: the model options are for a bare model only, and the
+         program options for a bare program, whose compile errors are printed as FILE:LINE:COLUMN: message.
 serve:   POST /render (scene JSON, a model, or multipart) -> image/png; GET /healthz; GET /metrics.
          `rasterd serve --help` lists the limits and their flags.
 )";
@@ -91,26 +98,29 @@ int write_all(const std::string& path, const char* data, std::size_t size) {
 
 // The service's words for a query parameter are a flag's here: 'query parameter "width": ...' reads
 // '--width: ...', and an unknown one is answered with the list of flags.
-std::string as_flags(std::string message) {
+std::string as_flags(std::string message, bool program) {
   const std::string prefix = "query parameter \"";
   if (message.rfind(prefix, 0) == 0)
     if (const std::size_t end = message.find('"', prefix.size()); end != std::string::npos)
       message = "--" + message.substr(prefix.size(), end - prefix.size()) + message.substr(end + 1);
   if (const std::size_t at = message.find(": unknown; known: "); at != std::string::npos) {
     std::string flags;
-    for (std::string_view name : rasterd::model_param_names()) flags.append("--").append(name).append(", ");
-    message = message.substr(0, at) + ": not a flag of render; its flags: -o, --explain, --part, " + flags +
-              "--scale";
+    for (std::string_view name : program ? rasterd::program_param_names() : rasterd::model_param_names())
+      flags.append(", --").append(name);
+    message = message.substr(0, at) +
+              (program ? ": not a flag of a program's render; its flags: -o, --explain"
+                       : ": not a flag of render; its flags: -o, --explain, --part") +
+              flags + (program ? "" : ", --scale");
   }
   return message;
 }
 
-std::string describe(const raster::SceneError& e) {
+std::string describe(const raster::SceneError& e, bool program) {
   std::string where;
   if (!e.where().pointer.empty()) where = " at " + e.where().pointer;
   if (e.where().byte) where += " (byte " + std::to_string(e.where().byte) + ")";
   if (e.where().line) where += " (line " + std::to_string(e.where().line) + ")";
-  return as_flags(e.what()) + where;
+  return as_flags(e.what(), program) + where;
 }
 
 // A model read from a file finds the files it names beside it, as model viewers do: an OBJ's MTL its mtllib
@@ -132,34 +142,39 @@ void gather_model_files(const std::string& model_path, const std::string& model,
     }
 }
 
-int run_render(const std::vector<std::string>& args) {
+// What `rasterd render` was asked: the input, where the output goes, and the options.
+struct RenderArgs {
   std::string input, output = "-";
   bool explain = false;
   rasterd::Params params;
   raster::Uploads uploads;
+};
+
+// The command line of `rasterd render`; returns the exit code of a usage error or failed read, else -1.
+int parse_render_args(const std::vector<std::string>& args, RenderArgs& out) {
   std::vector<rasterd::PartName> parts;  // --part NAME=FILE, in order
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" && i + 1 < args.size()) {
-      output = args[++i];
+      out.output = args[++i];
     } else if (a == "--explain") {
-      explain = true;
+      out.explain = true;
     } else if (a == "--part" && i + 1 < args.size()) {  // NAME=FILE, as a multipart upload would carry it
       const std::string spec = args[++i];
       const std::size_t eq = spec.find('=');
       if (eq == std::string::npos) return usage_error("--part takes NAME=FILE");
       const std::string file = spec.substr(eq + 1);
       parts.push_back({spec.substr(0, eq), rasterd::upload_key(spec.substr(0, eq), file)});
-      if (!read_all(file, uploads[parts.back().key])) {
+      if (!read_all(file, out.uploads[parts.back().key])) {
         std::cerr << "rasterd: cannot read " << spec.substr(eq + 1) << ": " << std::strerror(errno) << "\n";
         return 1;
       }
     } else if (a.rfind("--", 0) == 0 && a.size() > 2) {
       // --width 800 -> width=800, --width=800 too (validated with the scene, as query parameters are)
       if (const std::size_t eq = a.find('='); eq != std::string::npos) {
-        params[a.substr(2, eq - 2)] = a.substr(eq + 1);
+        out.params[a.substr(2, eq - 2)] = a.substr(eq + 1);
       } else if (i + 1 < args.size()) {
-        params[a.substr(2)] = args[++i];
+        out.params[a.substr(2)] = args[++i];
       } else {
         return usage_error(
             a + " needs a value" +
@@ -167,47 +182,82 @@ int run_render(const std::vector<std::string>& args) {
       }
     } else if (a == "-o") {
       return usage_error("-o needs a file name");
-    } else if (input.empty()) {
-      input = a;
+    } else if (out.input.empty()) {
+      out.input = a;
     } else {
       return usage_error("unexpected argument '" + a + "'");
     }
   }
-  rasterd::add_part_names(uploads, parts);
-  if (input.empty()) return usage_error("render needs a scene file (or '-' for stdin)");
-  std::string text;
-  if (!read_all(input, text)) {
-    std::cerr << "rasterd: cannot read " << input << ": " << std::strerror(errno) << "\n";
-    return 1;
+  rasterd::add_part_names(out.uploads, parts);
+  if (out.input.empty()) return usage_error("render needs a scene file (or '-' for stdin)");
+  return -1;
+}
+
+// Every compile error of a program as a compiler says it, one line each: `FILE:LINE:COLUMN: message` for
+// a bare program; a scene's program is a string of the scene, so its errors name the primitive's source
+// (`FILE: /primitives/0/source:LINE:COLUMN: message`). An error with no place in the program (ShaderToy's
+// frame around it) has none.
+void print_shader_errors(const std::string& input, bool program, const raster::SceneError& e) {
+  const std::string file = program ? input : input + ": " + e.where().pointer;
+  for (const raster::ErrorNote& n : e.notes()) {
+    std::cerr << (program ? "" : "rasterd: ") << file;
+    if (n.line) std::cerr << ":" << n.line << ":" << n.column;
+    std::cerr << ": " << n.message << "\n";
   }
+  if (e.notes().empty()) std::cerr << "rasterd: " << input << ": " << e.what() << "\n";
+}
+
+// The scene `args` asks for: a bare ShaderToy program (by its file name, or text that is no scene and
+// holds mainImage), else what the service would make of the file as a request body (a scene or a model,
+// whose files are gathered from its folder). Throws raster::SceneError.
+raster::Scene read_scene(RenderArgs& args, std::string text, bool& program) {
+  program = rasterd::is_shader_program(args.input == "-" ? "" : args.input, text);
+  if (program) return rasterd::program_scene(std::move(text), args.params, raster::Limits{});
   // Sniffed once, here, as the readers take it (its byte order mark blanked), and the answer handed on. A
   // model's files are gathered (text that is no scene, or a glTF document): as an OBJ's when the bytes tell
   // no format (what is not OBJ text names none) or the file is empty (its model is a --part, if any).
-  const rasterd::Sniffed sniffed = rasterd::sniff_request(text, uploads);
-  if (input != "-" && (!rasterd::is_scene_text(text) || sniffed.format == raster::ModelFormat::gltf)) {
+  const rasterd::Sniffed sniffed = rasterd::sniff_request(text, args.uploads);
+  if (args.input != "-" && (!rasterd::is_scene_text(text) || sniffed.format == raster::ModelFormat::gltf)) {
     const auto format =
         text.empty() ? raster::ModelFormat::obj : sniffed.format.value_or(raster::ModelFormat::obj);
-    gather_model_files(input, text, raster::model_format(format), uploads);
+    gather_model_files(args.input, text, raster::model_format(format), args.uploads);
   }
+  return rasterd::scene_from_request(std::move(text), std::move(args.uploads), args.params, raster::Limits{},
+                                     false, raster::format_of_file_name(args.input), sniffed);
+}
+
+int run_render(const std::vector<std::string>& argv) {
+  RenderArgs args;
+  if (const int code = parse_render_args(argv, args); code >= 0) return code;
+  std::string text;
+  if (!read_all(args.input, text)) {
+    std::cerr << "rasterd: cannot read " << args.input << ": " << std::strerror(errno) << "\n";
+    return 1;
+  }
+  bool program = false;
   try {
-    raster::Scene scene =
-        rasterd::scene_from_request(std::move(text), std::move(uploads), params, raster::Limits{}, false,
-                                    raster::format_of_file_name(input), sniffed);
+    raster::Scene scene = read_scene(args, std::move(text), program);
     const raster::RenderPlan plan = raster::plan(scene);
     // The plan or the PNG, written where -o says (the PNG is not copied: it can be tens of MB).
     std::string plan_text;
     std::vector<std::uint8_t> png;
-    if (explain) {
+    if (args.explain) {
       plan_text = raster::explain_json(plan) + "\n";
     } else {
       raster::Image image = raster::render(scene, plan);
       scene = {};  // as the server does: the scene's memory goes before the PNG's comes
       png = raster::encode_png(std::move(image), plan.png);
     }
-    return explain ? write_all(output, plan_text.data(), plan_text.size())
-                   : write_all(output, reinterpret_cast<const char*>(png.data()), png.size());
+    return args.explain ? write_all(args.output, plan_text.data(), plan_text.size())
+                        : write_all(args.output, reinterpret_cast<const char*>(png.data()), png.size());
   } catch (const raster::SceneError& e) {
-    std::cerr << "rasterd: " << input << ": " << describe(e) << "\n";
+    if (e.kind() == raster::ErrorKind::shader) {
+      print_shader_errors(args.input, program, e);
+    } else if (program && e.kind() == raster::ErrorKind::program && e.where().line) {
+      std::cerr << args.input << ":" << e.where().line << ": " << e.what() << "\n";
+    } else {
+      std::cerr << "rasterd: " << args.input << ": " << describe(e, program) << "\n";
+    }
     return 1;
   }
 }

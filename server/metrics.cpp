@@ -143,7 +143,20 @@ std::string Metrics::text(int in_flight, int queued) {
   return t;
 }
 
-std::string metrics_page(Metrics& metrics, int in_flight, int queued, const MemoryPool& memory) {
+// The compiled-program cache: how often a request found its program compiled, and what the cache holds.
+std::string shader_cache_metrics(const raster::ShaderCache& cache) {
+  return gauge("rasterd_shader_cache_hits_total",
+               "Shader programs found compiled in the cache (--shader-cache-bytes).", "counter",
+               static_cast<double>(cache.hits())) +
+         gauge("rasterd_shader_cache_misses_total",
+               "Shader programs compiled because the cache did not hold them.", "counter",
+               static_cast<double>(cache.misses())) +
+         gauge("rasterd_shader_cache_bytes", "Bytes of compiled shader programs the cache holds now.",
+               "gauge", static_cast<double>(cache.bytes()));
+}
+
+std::string metrics_page(Metrics& metrics, int in_flight, int queued, const MemoryPool& memory,
+                         const raster::ShaderCache* shader_cache) {
   std::string text = metrics.text(in_flight, queued);
   text += gauge("rasterd_memory_budget_bytes", "Bytes requests may reserve at once (--memory-budget).",
                 "gauge", static_cast<double>(memory.capacity()));
@@ -152,6 +165,7 @@ std::string metrics_page(Metrics& metrics, int in_flight, int queued, const Memo
                 static_cast<double>(memory.reserved()));
   text += gauge("rasterd_memory_reserved_peak_bytes", "Most bytes reserved at once since start.", "gauge",
                 static_cast<double>(memory.peak()));
+  if (shader_cache) text += shader_cache_metrics(*shader_cache);
   text += gauge(
       "rasterd_build_info", "The release and render version of this binary.", "gauge", 1,
       "{version=\"" RASTERD_VERSION "\",render_version=\"" + std::to_string(raster::kRenderVersion) + "\"}");

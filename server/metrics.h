@@ -1,6 +1,6 @@
 // Prometheus metrics. In: each request's route label, status and bytes, each render's duration, each
-// refusal's reason, and the gauges read at scrape time (admission load, memory pool). Out: the text of
-// GET /metrics, and refuse(), which writes a refusal's problem and counts it by reason.
+// refusal's reason, and the gauges read at scrape time (admission load, memory pool, shader cache). Out: the
+// text of GET /metrics, and refuse(), which writes a refusal's problem and counts it by reason.
 #pragma once
 
 #include <array>
@@ -15,6 +15,7 @@
 
 #include "memory_budget.h"
 #include "problem.h"
+#include "raster/shader.h"
 
 namespace rasterd {
 
@@ -39,8 +40,10 @@ class Metrics {
   std::uint64_t bytes_in_ = 0, bytes_out_ = 0;     ///< body bytes
 };
 
-/// The whole GET /metrics text: `metrics`, the memory pool's gauges, the build and the process_* metrics.
-std::string metrics_page(Metrics& metrics, int in_flight, int queued, const MemoryPool& memory);
+/// The whole GET /metrics text: `metrics`, the memory pool's gauges, the shader cache's counts (none when
+/// `shader_cache` is null), the build and the process_* metrics.
+std::string metrics_page(Metrics& metrics, int in_flight, int queued, const MemoryPool& memory,
+                         const raster::ShaderCache* shader_cache = nullptr);
 
 /// Writes `p` and counts it under rasterd_rejected_total{reason}. Returns false, for `return refuse(...)`
 /// in the checks that stop a request.

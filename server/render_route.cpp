@@ -115,7 +115,10 @@ void RenderRoute::draw(const httplib::Request& req, httplib::Response& res, Requ
   raster::Scene scene = scene_from_request(std::move(in.body), std::move(in.uploads), in.params, limits,
                                            in.declared_json, in.named_format, in.sniffed);
   budget.release(body_bytes);  // read and freed: what was sent is gone, the scene holds what it needs
-  const raster::RenderPlan plan = raster::plan(scene, limits, {config_.render_threads});
+  raster::PlanOptions options;
+  options.max_threads = config_.render_threads;
+  options.shader_cache = shader_cache_;  // a program seen before is not compiled again
+  const raster::RenderPlan plan = raster::plan(scene, limits, options);
   if (explain_requested(in.params)) {  // no tag: the plan also depends on the thread count
     res.set_content(raster::explain_json(plan), "application/json");
     return;

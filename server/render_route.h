@@ -1,7 +1,8 @@
 // The render route: POST /render (the scene, model or multipart upload is the body), GET /render?scene=
 // (the scene is in the URL) and its CORS preflight. In: the request, the service's configuration, and the
-// admission, memory pool, metrics and cancel flag it shares with the other requests. Out: a PNG (with its
-// ETag, Server-Timing, X-Render-Plan and cache headers), a 304, the plan as JSON (?explain), or a problem.
+// admission, memory pool, metrics, cancel flag and shader cache it shares with the other requests. Out: a PNG
+// (with its ETag, Server-Timing, X-Render-Plan and cache headers), a 304, the plan as JSON (?explain), or a
+// problem.
 #pragma once
 
 #include <atomic>
@@ -24,8 +25,13 @@ namespace rasterd {
 class RenderRoute {
  public:
   RenderRoute(const ServiceConfig& config, Admission& admission, MemoryPool& memory, Metrics& metrics,
-              const std::atomic<bool>& cancel)
-      : config_(config), admission_(admission), memory_(memory), metrics_(metrics), cancel_(cancel) {}
+              const std::atomic<bool>& cancel, raster::ShaderCache* shader_cache)
+      : config_(config),
+        admission_(admission),
+        memory_(memory),
+        metrics_(metrics),
+        cancel_(cancel),
+        shader_cache_(shader_cache) {}
 
   /// POST /render: the scene (or model, or multipart upload) is the body.
   void post(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
@@ -59,7 +65,8 @@ class RenderRoute {
   Admission& admission_;
   MemoryPool& memory_;
   Metrics& metrics_;
-  const std::atomic<bool>& cancel_;  ///< set at shutdown past the grace period: running renders stop
+  const std::atomic<bool>& cancel_;    ///< set at shutdown past the grace period: running renders stop
+  raster::ShaderCache* shader_cache_;  ///< compiled programs shared by every request; null: none kept
 };
 
 }  // namespace rasterd

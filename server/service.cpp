@@ -64,13 +64,17 @@ struct Service::State {
   Metrics metrics;
   std::atomic<bool> cancel{false};  ///< set by cancel_renders(): running renders stop
   int listen_socket = -1;           ///< remembered from the socket-options hook, for widen_backlog()
+  /// Compiled programs by source, shared by every request; null when --shader-cache-bytes is 0.
+  std::unique_ptr<raster::ShaderCache> shader_cache;
   RenderRoute render_route;
 
   explicit State(ServiceConfig c)
       : config(c),
         admission(c.workers, c.max_queue, c.max_queued_bytes, c.max_queue_wait),
         memory(c.memory_budget),
-        render_route(config, admission, memory, metrics, cancel) {}
+        shader_cache(c.shader_cache_bytes > 0 ? std::make_unique<raster::ShaderCache>(c.shader_cache_bytes)
+                                              : nullptr),
+        render_route(config, admission, memory, metrics, cancel, shader_cache.get()) {}
 
   void install_connections(httplib::Server& server);
   void install_request_hooks(httplib::Server& server);
@@ -157,7 +161,13 @@ Service::Service(ServiceConfig config) {
   if (config.workers <= 0) config.workers = cpus;
   if (config.render_threads <= 0) config.render_threads = cpus;
   if (config.limits.threads <= 0) config.limits.threads = config.render_threads;  // the OBJ reader's pieces
-  if (config.memory_budget <= 0) config.memory_budget = default_memory_budget(memory_limit());
+  // The shader cache's memory is held between requests, outside any request's reservation: the default
+  // budget sets it aside as it does the process's own.
+  if (config.memory_budget <= 0)
+    config.memory_budget = std::max<std::int64_t>(
+        default_memory_budget(memory_limit()) -
+            static_cast<std::int64_t>(std::min<std::size_t>(config.shader_cache_bytes, 1ull << 40)),
+        std::int64_t{64} << 20);
   // Each worker's PNG encoder set up now, not on the first requests.
   raster::prepare_png_encoders(config.workers);
   state_ = std::make_unique<State>(config);
@@ -184,8 +194,9 @@ void Service::install(httplib::Server& server) {
   s.install_request_hooks(server);
   install_routes(server, {s.render_route, [&s](const httplib::Request&, httplib::Response& res) {
                             const auto [running, waiting] = s.admission.load();
-                            res.set_content(metrics_page(s.metrics, running, waiting, s.memory),
-                                            "text/plain; version=0.0.4");
+                            res.set_content(
+                                metrics_page(s.metrics, running, waiting, s.memory, s.shader_cache.get()),
+                                "text/plain; version=0.0.4");
                           }});
 }
 

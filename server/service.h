@@ -1,6 +1,7 @@
 // The HTTP service: the Service object that wires the concerns together on a cpp-httplib server: the routes
 // (routes.cpp), the render route (render_route.cpp), body reading (body.cpp), admission (admission.cpp),
-// metrics (metrics.cpp), request ids (request_id.cpp), and the connection and shutdown settings. In: a
+// metrics (metrics.cpp), request ids (request_id.cpp), the compiled shader programs every request shares
+// (a raster::ShaderCache, --shader-cache-bytes), and the connection and shutdown settings. In: a
 // ServiceConfig (flags.cpp reads one from `rasterd serve`'s flags). Out: a server that answers every route.
 // No rendering logic lives here.
 #pragma once

@@ -16,7 +16,7 @@
 namespace rasterd {
 
 struct ServiceConfig {
-  raster::Limits limits;  ///< scene limits, enforced by the library
+  raster::Limits limits;  ///< scene limits, enforced by the library (limits.shader: the programs' bounds)
   /// Request body cap in bytes (413 above it): 256 MiB, which holds the largest binary STL the face limit
   /// takes (5M facets, 250 MB) and so every 3D-print file rasterd would draw (docs/memory.md: what a 2 GiB
   /// pod takes of them at once).
@@ -41,6 +41,9 @@ struct ServiceConfig {
   /// cookies or credentials to protect); empty sends no CORS headers. Exact "scheme://host[:port]" strings.
   std::vector<std::string> cors_origins{"*"};
   int cache_max_age = 86'400;  ///< seconds, in Cache-Control: public, max-age=N, immutable (GET /render)
+  /// Compiled shader programs kept between requests, by their source (raster::ShaderCache), at most this
+  /// many bytes; 0 keeps none (each request compiles its programs). The default memory budget sets it aside.
+  std::size_t shader_cache_bytes = 64u << 20;
   /// Tests only (empty in service): runs on the request's thread once a render is admitted, before its
   /// scene is read. A test holds renders in flight on a latch here, or throws to force an internal error.
   std::function<void()> after_admission;

@@ -7,6 +7,8 @@
 #include <initializer_list>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "support.h"
 
 namespace {
@@ -172,6 +174,65 @@ TEST(Plan, ExplainShowsTheDecisions) {
   const std::string j = raster::explain_json(p);
   EXPECT_NE(j.find("\"format\": \"rgb8\""), std::string::npos) << j;
   EXPECT_NE(j.find("\"color\": 600"), std::string::npos) << j;
+}
+
+// Issue 61: each shader draw's program in the explain: its size, per-render part, slots (and a thread's
+// bytes of them), loops, derivatives and the channels it samples; the count; and their memory.
+TEST(Plan, ExplainShowsEachShadersProgram) {
+  raster::Scene s;
+  s.width = 40, s.height = 20;
+  const auto add = [&](const std::string& source) {
+    raster::ShaderPrimitive sp;
+    sp.source = source;
+    s.shaders.push_back(sp);
+    raster::Primitive p;
+    p.kind = raster::PrimitiveKind::shader;
+    p.mesh = static_cast<std::uint32_t>(s.shaders.size() - 1);
+    s.primitives.push_back(p);
+  };
+  add("void mainImage(out vec4 c, in vec2 p) { c = vec4(p / iResolution.xy, 0.5, 1.0); }");
+  add("uniform float k;\nvoid mainImage(out vec4 c, in vec2 p) {\n  float a = 0.0;\n"
+      "  for (int i = 0; i < int(k); i++) a += fwidth(p.x) * k;\n"
+      "  c = texture(iChannel2, p / iResolution.xy) + vec4(a);\n}\n");
+  s.shaders[1].whole = false, s.shaders[1].rect = {30, 5, 20, 10};  // half outside: clipped to 10 x 10
+  s.shaders[1].opaque = false;
+  const auto p = plan_of(s, 2);
+  ASSERT_EQ(p.shaders.size(), 2u);
+  EXPECT_NE(raster::explain_line(p).find(" shaders=2 "), std::string::npos) << raster::explain_line(p);
+  const auto j = nlohmann::json::parse(raster::explain_json(p));
+  EXPECT_EQ(j["primitives"]["shaders"], 2);
+  ASSERT_EQ(j["shaders"].size(), 2u);
+  for (int k = 0; k < 2; ++k) {
+    const nlohmann::json& e = j["shaders"][k];
+    const raster::CompiledShader& c = *p.shaders[static_cast<std::size_t>(k)].shader;
+    EXPECT_EQ(e["primitive"], k);
+    EXPECT_EQ(e["instructions"], c.instructions());
+    EXPECT_EQ(e["prologue_instructions"], c.prologue_instructions());
+    EXPECT_EQ(e["slots"], c.slots());
+    EXPECT_EQ(e["register_bytes"], c.slots() * 64 * 4) << "a thread's values for a block of 64 pixels";
+    EXPECT_EQ(e["loops"], c.loops());
+    EXPECT_EQ(e["program_bytes"], c.bytes());
+  }
+  EXPECT_EQ(j["shaders"][0]["rect"], nlohmann::json({0, 0, 40, 20}));
+  EXPECT_EQ(j["shaders"][1]["rect"], nlohmann::json({30, 5, 10, 10}));
+  EXPECT_EQ(j["shaders"][0]["loops"], 0);
+  EXPECT_EQ(j["shaders"][1]["loops"], 1);
+  EXPECT_EQ(j["shaders"][0]["derivatives"], false);
+  EXPECT_EQ(j["shaders"][1]["derivatives"], true);
+  EXPECT_EQ(j["shaders"][0]["channels"], nlohmann::json::array());
+  EXPECT_EQ(j["shaders"][1]["channels"], nlohmann::json({2}));
+  EXPECT_EQ(j["shaders"][1]["opaque"], false);
+  EXPECT_GT(j["shaders"][1]["instructions"].get<int>(), j["shaders"][0]["instructions"].get<int>());
+  EXPECT_EQ(j["memory_bytes"]["shaders"], p.memory.shader_bytes);
+  EXPECT_EQ(p.memory.shader_bytes,
+            std::int64_t{p.threads} * (p.shaders[0].register_bytes + p.shaders[1].register_bytes));
+  EXPECT_GT(p.memory.shader_bytes, 0);
+  // A scene without shaders says nothing of them but their count.
+  SceneBuilder plain(8, 8);
+  const auto q = nlohmann::json::parse(raster::explain_json(plan_of(plain.scene)));
+  EXPECT_FALSE(q.contains("shaders"));
+  EXPECT_EQ(q["primitives"]["shaders"], 0);
+  EXPECT_EQ(raster::explain_line(plan_of(plain.scene)).find("shaders="), std::string::npos);
 }
 
 TEST(Plan, RejectsScenesBuiltInCodeThatReferToMissingData) {

@@ -75,7 +75,8 @@ class DocumentGenerator {
  private:
   std::string primitive() {
     std::vector<std::string> fields;
-    const int kind = integer_value(0, 4);
+    const int kind = integer_value(0, 5);
+    if (kind == 5) return shader();
     if (kind == 4 && chance(0.5)) {  // an OBJ model
       fields = {member("type", "\"obj\""), member("data", "\"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\n\"")};
     } else if (kind == 4) {  // a model in another format, named or told by its text
@@ -128,6 +129,43 @@ class DocumentGenerator {
     std::shuffle(fields.begin(), fields.end(), rng_);
     return object(fields);
   }
+
+  // A shader primitive with some of its fields (the program is not compiled by the readers).
+  std::string shader() {
+    std::vector<std::string> fields = {
+        member("type", "\"shader\""),
+        member("source",
+               pick({R"("void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }")",
+                     R"("uniform float k;\nvoid mainImage(out vec4 c, in vec2 p) {\n  c = vec4(k);\n}\n")",
+                     R"("\u0076oid mainImage(out vec4 c, in vec2 p) {}")", R"("")"}))};
+    if (chance(0.3)) fields.push_back(member("time", pick({"0", "1.5", "-2", "1e9", "123456.789", "-0"})));
+    if (chance(0.3)) fields.push_back(member("frame", pick({"0", "7", "60.0", "2147483647"})));
+    if (chance(0.3))
+      fields.push_back(member("mouse", chance(0.5) ? array({integer(-50, 300), "12.25"})
+                                                   : array({integer(0, 300), integer(0, 300), "0", "-1"})));
+    if (chance(0.2)) fields.push_back(member("date", array({"2026", "11", "3", "45296.5"})));
+    if (chance(0.2)) {
+      std::vector<std::string> channels;
+      for (int k = integer_value(0, 4); k > 0; --k)
+        channels.push_back(chance(0.4) ? "null" : object({member("data", std::string("\"") + kPng + "\"")}));
+      fields.push_back(member("channels", array(channels)));
+    }
+    if (chance(0.3)) {
+      std::vector<std::string> uniforms;
+      if (chance(0.7)) uniforms.push_back(member("k", pick({"0.5", "true", "[1, 2]", "[[1, 0], [0, 1]]"})));
+      if (chance(0.5)) uniforms.push_back(member("tint_2", array({"0.25", "false", coordinate()})));
+      fields.push_back(member("uniforms", object(uniforms)));
+    }
+    if (chance(0.3))
+      fields.push_back(member("rect", array({integer(-20, 40), integer(-20, 40), integer(1, 64), "4.0"})));
+    if (chance(0.2)) fields.push_back(member("opaque", pick({"true", "false"})));
+    std::shuffle(fields.begin(), fields.end(), rng_);
+    return object(fields);
+  }
+
+  // A 1x1 RGBA PNG: a channel's image.
+  static constexpr const char* kPng =
+      "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg==";
 
   std::string coordinate() {
     switch (integer_value(0, 7)) {
@@ -309,8 +347,17 @@ TEST(SceneReader, EveryFieldOnEveryKindIsJudgedAsTheOracleJudgesIt) {
       {"line", R"("points":[[0,0],[4,4]])"},
       {"polyline", R"("points":[[0,0],[4,4],[8,0]])"},
       {"triangle", R"("points":[[0,0,0],[1,0,0],[0,1,0]])"},
-      {"mesh", R"("positions":[0,0,0,1,0,0,0,1,0],"indices":[0,1,2])"}};
+      {"mesh", R"("positions":[0,0,0,1,0,0,0,1,0],"indices":[0,1,2])"},
+      {"shader", R"("source":"void mainImage(out vec4 c, in vec2 p) {}")"}};
   const std::vector<std::string> fields = {R"("points":[[1,1],[2,2]])",
+                                           R"("time":2.5)",
+                                           R"("frame":3)",
+                                           R"("mouse":[1,2,3,4])",
+                                           R"("date":[2026,11,3,0])",
+                                           R"("channels":[null])",
+                                           R"("uniforms":{"k":[1,2]})",
+                                           R"("rect":[0,0,4,4])",
+                                           R"("opaque":false)",
                                            R"("color":"#f00")",
                                            R"("color":[1,0,0])",
                                            R"("colors":["#f00","#0f0","#00f"])",
@@ -346,6 +393,99 @@ TEST(SceneReader, EveryFieldOnEveryKindIsJudgedAsTheOracleJudgesIt) {
     }
   }
   EXPECT_GT(accepted, 20);
+}
+
+// Issue 61: a shader's fields on and just past every rule, to both readers.
+TEST(SceneReader, ShaderFieldsAreJudgedAsTheOracleJudgesThem) {
+  const std::string png =
+      "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg==";
+  const std::vector<std::string> fields = {R"("time":1e9)",
+                                           R"("time":-1e9)",
+                                           R"("time":1.0000001e9)",
+                                           R"("time":"1")",
+                                           R"("frame":0)",
+                                           R"("frame":2147483647)",
+                                           R"("frame":2147483648)",
+                                           R"("frame":-1)",
+                                           R"("frame":1.5)",
+                                           R"("frame":4.0)",
+                                           R"("mouse":[1,2])",
+                                           R"("mouse":[1,2,3])",
+                                           R"("mouse":[1,2,3,4,5])",
+                                           R"("mouse":[])",
+                                           R"("mouse":[1e10,0])",
+                                           R"("mouse":[1,"2"])",
+                                           R"("date":[2026,0,1,0])",
+                                           R"("date":[2026,0,1])",
+                                           R"("date":{})",
+                                           R"("channels":[])",
+                                           R"("channels":[null,null,null,null])",
+                                           R"("channels":[null,null,null,null,null])",
+                                           R"("channels":[{"data":")" + png + R"("}])",
+                                           R"("channels":[null,{"data":")" + png + R"(","wrap":"clamp"}])",
+                                           R"("channels":[{"data":")" + png + R"(","colour":1}])",
+                                           R"("channels":[{"source":"model"}])",
+                                           R"("channels":[{}])",
+                                           R"("channels":[1])",
+                                           R"("channels":{})",
+                                           R"("uniforms":{})",
+                                           R"("uniforms":{"k":true,"m":[[1,0],[0,1]],"v":[0.5,false,3]})",
+                                           R"("uniforms":{"k":[[[1]]]})",
+                                           R"("uniforms":{"k":[]})",
+                                           R"("uniforms":{"k":[[],[]]})",
+                                           R"("uniforms":{"k":[[],[1]]})",
+                                           R"("uniforms":{"k":null})",
+                                           R"("uniforms":{"k":"1"})",
+                                           R"("uniforms":{"iTime":1})",
+                                           R"("uniforms":{"2k":1})",
+                                           R"("uniforms":{"k-1":1})",
+                                           R"("uniforms":{"":1})",
+                                           R"("uniforms":{"k":3.5e38})",
+                                           R"("uniforms":{"k":3.4e38})",
+                                           R"("uniforms":[1])",
+                                           R"("rect":[0,0,1,1])",
+                                           R"("rect":[-16384,16384,16384,1])",
+                                           R"("rect":[-16385,0,1,1])",
+                                           R"("rect":[0,0,0,1])",
+                                           R"("rect":[0,0,1,16385])",
+                                           R"("rect":[0,0,1])",
+                                           R"("rect":[0,0,1,1,1])",
+                                           R"("rect":[0.5,0,1,1])",
+                                           R"("rect":[0,0,2.0,1])",
+                                           R"("opaque":true)",
+                                           R"("opaque":0)",
+                                           R"("source":1)",
+                                           R"("sources":"x")",
+                                           R"("color":"#fff")"};
+  // A uniform of 4096 values is the most; a 4097th, flat or in a nested array, is one too many.
+  const auto values = [](int n) {
+    std::string v = "[";
+    for (int k = 0; k < n; ++k) v += k ? ",1" : "1";
+    return v + "]";
+  };
+  std::vector<std::string> all = fields;
+  for (const std::string& v : {values(4096), values(4097), "[" + values(4096) + "]",
+                               "[" + values(4096) + ",[]]", "[" + values(4095) + ",1,1]"})
+    all.push_back(R"("uniforms":{"big":)" + v + "}");
+  int accepted = 0, rejected = 0;
+  for (const std::string& field : all) {
+    const std::string text =
+        R"({"width":8,"height":8,"primitives":[{"type":"shader","source":"x",)" + field + "}]}";
+    const Verdict expected = oracle(text), got = reader(text);
+    ASSERT_EQ(got.scene.has_value(), expected.scene.has_value()) << field.substr(0, 160);
+    if (got.scene) {
+      ASSERT_TRUE(same(*got.scene, *expected.scene)) << field.substr(0, 160);
+      ++accepted;
+    } else {
+      ++rejected;
+    }
+  }
+  EXPECT_GT(accepted, 20);
+  EXPECT_GT(rejected, 30);
+  // Without "source" there is no program: both refuse.
+  const std::string bare = R"({"width":8,"height":8,"primitives":[{"type":"shader","time":1}]})";
+  EXPECT_FALSE(oracle(bare).scene.has_value());
+  EXPECT_FALSE(reader(bare).scene.has_value());
 }
 
 // Issue 31, item 5: a mesh's flat arrays are sized from a count of their elements before they are read,

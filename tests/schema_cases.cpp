@@ -1,7 +1,7 @@
 // schema_cases COUNT SEED: writes COUNT generated scene documents, one JSON line each, with the verdict of
 // the parser (and the planner, which checks the camera) on it:
-//   {"doc": "<scene text>", "verdict": "accepted" | "syntax" | "invalid" | "limit" | "model" | "encoding",
-//    "message": "...", "pointer": "..."}
+//   {"doc": "<scene text>", "verdict": "accepted" | "syntax" | "invalid" | "limit" | "model" | "encoding" |
+//    "shader", "message": "...", "pointer": "..."}
 // tests/schema/check_schema.py validates every document against server/schema/scene.schema.json and
 // compares. Documents start as valid scenes of every kind (seeded, so every run is the same) and most get
 // one to three mutations at random places: a value replaced by one from a pool of boundary and
@@ -48,6 +48,7 @@ class Generator {
 
  private:
   json primitive() {
+    if (chance(0.12)) return shader();
     switch (integer(0, 4)) {
       case 0:
       case 1:
@@ -124,6 +125,42 @@ class Generator {
     mesh_options(o);
     return o;
   }
+
+  // A shader primitive: a program that compiles (most of the time) and some of ShaderToy's inputs.
+  json shader() {
+    static const char* kPrograms[] = {
+        "void mainImage(out vec4 c, in vec2 p) { c = vec4(p / iResolution.xy, 0.5, 1.0); }",
+        "uniform float k;\nuniform vec2 v;\nvoid mainImage(out vec4 c, in vec2 p) { c = vec4(k, v, 1.0); }",
+        "void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, p / iResolution.xy); }",
+        "void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(y);\n}\n",  // does not compile: 'y'
+        "void mainImage(out vec4 c, in vec2 p) { c = vec4(iTime, iMouse.x, float(iFrame), iDate.w); }"};
+    json p = {{"type", "shader"}, {"source", kPrograms[integer(0, 4)]}};
+    if (chance(0.3)) p["time"] = pick<json>({0, 1.5, -2, 1e9});
+    if (chance(0.3)) p["frame"] = pick<json>({0, 7, 60.0, 2147483647});
+    if (chance(0.3)) p["mouse"] = chance(0.5) ? json{integer(0, 40), 3.5} : json{1, 2, 0, -1};
+    if (chance(0.2)) p["date"] = json{2026, 11, 3, 45296.5};
+    if (chance(0.2)) {
+      p["channels"] = json::array();
+      for (int k = integer(0, 4); k > 0; --k)
+        p["channels"].push_back(chance(0.4) ? json(nullptr) : json{{"data", kPng}});
+    }
+    if (chance(0.3)) p["uniforms"] = uniforms();
+    if (chance(0.3)) p["rect"] = json{integer(-10, 40), integer(-10, 40), integer(1, 48), integer(1, 48)};
+    if (chance(0.2)) p["opaque"] = chance(0.5);
+    return p;
+  }
+
+  json uniforms() {
+    json u = json::object();
+    if (chance(0.7)) u["k"] = pick<json>({0.5, 2, true, json{1, 2}, json::array()});
+    if (chance(0.5)) u["v"] = pick<json>({json{0.25, 0.5}, json{json{1}, json{2}}, json{1, 2, 3}});
+    if (chance(0.1)) u["iTime"] = 1;
+    return u;
+  }
+
+  // A 1x1 RGBA PNG as base64: a channel's image.
+  static constexpr const char* kPng =
+      "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg==";
 
   void mesh_options(json& m) {
     if (chance(0.3)) m["shading"] = pick<std::string>({"flat", "smooth", "unlit"});
@@ -202,7 +239,9 @@ class Generator {
       ["#fff", "#000"], ["#fff", "#000", "#f00"], [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1],
       {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}, {"translate": [1, 2, 3]},
       {"scale": 2}, {"rotate": [0, 90, 0]}, {"matrix": [1], "scale": 2}, {"eye": [0, 0, 0]},
-      {"type": "triangle", "points": [[0, 0], [4, 0], [0, 4]]}, {"type": "line"}, {"direction": [0, 0, 0]}
+      {"type": "triangle", "points": [[0, 0], [4, 0], [0, 4]]}, {"type": "line"}, {"direction": [0, 0, 0]},
+      "shader", [1, 2, 3, 4, 5], [0, 0, 1], {"k": 1}, {"iTime": 1}, {"2k": 1}, [[1, 2], [3, 4]], [[[1]]], [[]],
+      [null], [null, null, null, null, null], "void mainImage(out vec4 c, in vec2 p) { c = vec4(1); }"
     ])");
     return pool[static_cast<std::size_t>(integer(0, static_cast<int>(pool.size()) - 1))];
   }
@@ -230,6 +269,14 @@ class Generator {
     if (key == "cull") return pick<std::string>({"none", "back"});
     if (key == "projection") return pick<std::string>({"perspective", "orthographic"});
     if (key == "normals") return json::array({json{0, 0, 1}, json{0, 0, 1}, json{0, 0, 1}});
+    if (key == "uniforms") return uniforms();
+    if (key == "channels") return json::array({nullptr, {{"data", kPng}}});
+    if (key == "mouse") return json{1, 2};
+    if (key == "date") return json{2026, 0, 1, 0};
+    if (key == "rect") return json{0, 0, 4, 4};
+    if (key == "opaque") return chance(0.5);
+    if (key == "time") return 1.25;
+    if (key == "frame") return 3;
     auto b = boundaries(key);
     if (!b.empty()) return b[static_cast<std::size_t>(integer(0, static_cast<int>(b.size()) - 1))];
     return interesting();
@@ -252,6 +299,8 @@ class Generator {
               "shading",   "wireframe", "cull",   "transform"};
     if (type == "obj")
       return {"data", "source", "mtl", "mtl_source", "color", "shading", "wireframe", "cull", "transform"};
+    if (type == "shader")
+      return {"source", "time", "frame", "mouse", "date", "channels", "uniforms", "rect", "opaque"};
     return {};
   }
 
@@ -272,6 +321,10 @@ class Generator {
       return {0, -0.0, 3.402823669209385e38, -3.402823669209385e38, 3.4028236692093857e38, 1e300, 1.5};
     if (key == "indices") return {-1, 0, 1, 2, 2.5, 5, 1e30};
     if (key == "matrix") return {0, 1, 1e300, -2.5};
+    if (key == "time" || key == "mouse" || key == "date") return {0, -1e9, 1e9, 1.0000001e9, -2e9, 0.5};
+    if (key == "frame") return {0, -1, 1.5, 2147483647, 2147483648.0, 7.0};
+    if (key == "rect") return {0, 1, -16384, 16384, 16385, -16385, 0.5};
+    if (key == "uniforms" || key == "k" || key == "v") return {0, 1, 3.4e38, 3.5e38, -0.5};
     return {};
   }
 
@@ -304,12 +357,14 @@ class Generator {
         places[static_cast<std::size_t>(integer(0, static_cast<int>(places.size()) - 1))];
     json& at = doc[place];
     static const std::vector<std::string> keys = {
-        "width",     "height",     "background", "antialias",  "primitives", "camera", "light",
-        "type",      "points",     "color",      "colors",     "fill",       "closed", "width",
-        "positions", "indices",    "normals",    "shading",    "wireframe",  "cull",   "transform",
-        "data",      "source",     "mtl",        "mtl_source", "translate",  "rotate", "scale",
-        "matrix",    "projection", "eye",        "target",     "up",         "fov",    "near",
-        "far",       "direction",  "ambient",    "colour",     "Width",      "point",  "indexes"};
+        "width",     "height",     "background", "antialias",  "primitives", "camera",   "light",
+        "type",      "points",     "color",      "colors",     "fill",       "closed",   "width",
+        "positions", "indices",    "normals",    "shading",    "wireframe",  "cull",     "transform",
+        "data",      "source",     "mtl",        "mtl_source", "translate",  "rotate",   "scale",
+        "matrix",    "projection", "eye",        "target",     "up",         "fov",      "near",
+        "far",       "direction",  "ambient",    "colour",     "Width",      "point",    "indexes",
+        "time",      "frame",      "mouse",      "date",       "channels",   "uniforms", "rect",
+        "opaque"};
     const double what = uniform();
     const std::string holder = held_by(place);
     const auto edges = boundaries(holder);

@@ -230,6 +230,48 @@ TEST(Shader, ALoopThatNeverEndsStopsAtItsBoundAndNamesTheLoop) {
   }
 }
 
+// A counted loop is written out (no loop left to count) and gives the values of the loop it was: each
+// header shape against the same loop with its bound in a uniform, which stays a loop. A loop that writes its
+// variable or continues stays a loop.
+TEST(Shader, CountedLoopsAreWrittenOutWithTheLoopsValues) {
+  struct Case {
+    std::string type, init, op, bound, step;
+    bool written_out;
+    std::string body = "";
+  };
+  const Case cases[] = {
+      {"int", "0", "<", "6", "i++", true},
+      {"int", "5", ">=", "-3", "i -= 2", true},
+      {"int", "-2", "<=", "2", "++i", true},
+      {"int", "10", ">", "0", "i--", true},
+      {"int", "0", "!=", "12", "i += 3", true},
+      {"uint", "0u", "<", "5u", "i++", true},
+      {"int", "0", "<", "6", "i++", false, "if (i == 2) continue;"},
+      {"int", "0", "<", "6", "i++", false, "if (fragCoord.x > 4.0 && i == 1) i += 2;"},
+  };
+  const std::string helper =
+      "void damp(inout float a, int k) { a = a * 0.9 + float(k); }\n"
+      "uniform int bi; uniform uint bu;\n";
+  for (const Case& c : cases) {
+    const auto source = [&](const std::string& bound) {
+      return helper +
+             program("float acc = 0.0;\nfor (" + c.type + " i = " + c.init + "; i " + c.op + " " + bound +
+                     "; " + c.step + ") {\n" + c.body +
+                     "  acc += float(i) * fragCoord.x + sin(float(i) * fragCoord.y);\n"
+                     "  switch (int(i)) { case 1: acc *= 0.5; break; default: break; }\n"
+                     "  damp(acc, int(i));\n}\nfragColor = vec4(fract(acc * 0.01), fract(acc), 0.5, 1.0);");
+    };
+    const std::string counted = source(c.bound), hidden = source(c.type == "int" ? "bi" : "bu");
+    const raster::ShaderCompileResult a = raster::compile_shadertoy(counted);
+    ASSERT_TRUE(a.shader) << counted;
+    EXPECT_EQ(a.shader->loops(), c.written_out ? 0u : 1u) << counted;
+    Scene s = shader_scene(hidden, 12, 12);
+    s.shaders[0].uniforms = {{c.type == "int" ? "bi" : "bu", {std::stod(c.bound)}}};
+    EXPECT_EQ(raster::compile_shadertoy(hidden).shader->loops(), 1u);
+    EXPECT_EQ(draw(counted, 12, 12).pixels, draw(s).pixels) << counted;
+  }
+}
+
 // The bench programs (and this suite's) give one picture from the scalar reference, SSE2 and AVX2, and at
 // 1, 2, 3 and 7 threads.
 TEST(Shader, EveryLaneWidthAndThreadCountGivesTheSameBytes) {

@@ -1,6 +1,7 @@
 // Scene parsing: JSON text -> Scene. Every rejection names the JSON pointer (or byte offset) it concerns.
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <initializer_list>
 #include <numbers>
@@ -14,6 +15,7 @@
 #include "base/vecmath.h"
 #include "raster/model.h"
 #include "raster/scene.h"
+#include "raster/shader.h"
 #include "raster/utf8.h"
 #include "scene_dom.h"
 
@@ -447,6 +449,8 @@ std::int64_t texels_left(const Scene& scene, const Limits& limits) {
   std::int64_t used = 0;
   for (const Mesh& m : scene.meshes)
     for (const Texture& t : m.textures) used += std::int64_t{t.width} * t.height;
+  for (const ShaderPrimitive& s : scene.shaders)
+    for (const Texture& t : s.textures) used += std::int64_t{t.width} * t.height;
   return limits.max_texture_pixels - used;
 }
 
@@ -663,6 +667,129 @@ Mesh read_obj(const json& v, const Path& pointer, const Scene& scene, const Limi
   return mesh;
 }
 
+// A shader's input: a number within +-1e9 (time, mouse, date).
+double read_shader_input(const json& v, const Path& pointer) {
+  const double d = read_number(v, pointer);
+  if (!(d >= -1e9 && d <= 1e9))
+    invalid(pointer, "a shader's input is a number within +-1e9; got " + v.dump());
+  return d;
+}
+
+// "mouse" ([x, y] or four numbers) and "date" (four numbers).
+std::array<double, 4> read_four(const json& v, const Path& pointer, bool two_allowed, const char* what) {
+  if (!v.is_array() || !(v.size() == 4 || (two_allowed && v.size() == 2)))
+    invalid(pointer, std::string("expected ") + what);
+  std::array<double, 4> out{};
+  for (std::size_t k = 0; k < v.size(); ++k) out[k] = read_shader_input(v[k], Path(pointer, k));
+  return out;
+}
+
+bool glsl_name(const std::string& s) {
+  if (s.empty() || s.size() > 256 || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  return std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+// A uniform's value: a number, true or false, or an array of them, or an array of such arrays (a matrix
+// by columns); its slots in order. Before each array element, fewer than 4096 slots may be held.
+void read_uniform_value(const json& v, const Path& pointer, int depth, std::vector<double>& slots) {
+  if (v.is_boolean()) return slots.push_back(v.get<bool>() ? 1 : 0);
+  if (v.is_number()) {
+    const double d = read_number(v, pointer);
+    if (!(std::fabs(d) <= 3.4e38)) invalid(pointer, "a uniform's number must be a finite float");
+    return slots.push_back(d);
+  }
+  if (!v.is_array() || depth > 1)
+    invalid(pointer, std::string("expected a number, true, false or an array of them, got ") + type_name(v));
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (slots.size() >= 4096) invalid(pointer, "a uniform holds at most 4096 values");
+    read_uniform_value(v[k], Path(pointer, k), depth + 1, slots);
+  }
+}
+
+// "uniforms": {"name": value, ...}, in the order given.
+void read_uniforms(const json& v, const Path& pointer, ShaderPrimitive& s) {
+  if (!v.is_object())
+    invalid(pointer, std::string("expected an object of uniform name: value, got ") + type_name(v));
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    const Path at(pointer, it.key());
+    if (!glsl_name(it.key())) invalid(at, "\"" + it.key() + "\" is not a GLSL name");
+    if (is_shadertoy_uniform(it.key()))
+      invalid(at,
+              "\"" + it.key() + "\" is set by the shader's own fields (time, frame, mouse, date, channels)");
+    std::vector<double> slots;
+    read_uniform_value(it.value(), at, 0, slots);
+    if (slots.empty()) invalid(at, "a uniform needs a value");
+    s.uniforms.emplace_back(it.key(), std::move(slots));
+  }
+}
+
+// "channels": up to four texture objects (as a mesh's "texture") or null, iChannel0..3 in order.
+void read_channels(const json& v, const Path& pointer, const Scene& scene, const Limits& limits,
+                   const Uploads& uploads, ShaderPrimitive& s) {
+  if (!v.is_array())
+    invalid(pointer,
+            std::string("expected an array of up to four texture objects (or null), got ") + type_name(v));
+  if (v.size() > 4) invalid(Path(pointer, 4), "a shader has four channels (iChannel0..3); got a fifth");
+  std::int64_t pending = 0;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (v[k].is_null()) continue;
+    if (!v[k].is_object())
+      invalid(Path(pointer, k), std::string("expected a texture object or null, got ") + type_name(v[k]));
+    Texture t = read_texture(v[k], Path(pointer, k), uploads, texels_left(scene, limits) - pending);
+    pending += std::int64_t{t.width} * t.height;
+    s.channels[k] = static_cast<std::int32_t>(s.textures.size());
+    s.textures.push_back(std::move(t));
+  }
+}
+
+// "rect": [x, y, width, height] in whole pixels; the corner within +-16384, the sides 1 to 16384.
+std::array<std::int32_t, 4> read_rect(const json& v, const Path& pointer) {
+  if (!v.is_array() || v.size() != 4) invalid(pointer, "\"rect\" is [x, y, width, height] in pixels");
+  std::array<std::int32_t, 4> r{};
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::int64_t n = read_integer(v[k], Path(pointer, k));
+    if (n < (k >= 2 ? 1 : -kMaxImageSide) || n > kMaxImageSide)
+      invalid(Path(pointer, k), "a rect's value is out of range: " + v[k].dump());
+    r[k] = static_cast<std::int32_t>(n);
+  }
+  return r;
+}
+
+// {"type": "shader", "source": GLSL, "time", "frame", "mouse", "date", "channels", "uniforms", "rect",
+// "opaque"}: ShaderToy's image pass. The program is compiled by the plan, not here.
+ShaderPrimitive read_shader(const json& v, const Path& pointer, const Scene& scene, const Limits& limits,
+                            const Uploads& uploads) {
+  check_keys(v, pointer,
+             {"type", "source", "time", "frame", "mouse", "date", "channels", "uniforms", "rect", "opaque"});
+  ShaderPrimitive s;
+  const auto source = v.find("source");
+  if (source == v.end())
+    invalid(pointer, "a shader needs \"source\": the program as ShaderToy's editor holds it (a mainImage)");
+  if (!source->is_string())
+    invalid(Path(pointer, "source"), std::string("expected a string, got ") + type_name(*source));
+  s.source = source->get<std::string>();
+  if (auto it = v.find("time"); it != v.end()) s.time = read_shader_input(*it, Path(pointer, "time"));
+  if (auto it = v.find("frame"); it != v.end()) {
+    const std::int64_t f = read_integer(*it, Path(pointer, "frame"));
+    if (f < 0 || f > INT32_MAX)
+      invalid(Path(pointer, "frame"), "\"frame\" is a whole number from 0 to 2147483647");
+    s.frame = static_cast<std::int32_t>(f);
+  }
+  if (auto it = v.find("mouse"); it != v.end())
+    s.mouse = read_four(*it, Path(pointer, "mouse"), true, "[x, y] or [x, y, click x, click y] in pixels");
+  if (auto it = v.find("date"); it != v.end())
+    s.date =
+        read_four(*it, Path(pointer, "date"), false, "[year, month (0-11), day, seconds since midnight]");
+  if (auto it = v.find("channels"); it != v.end())
+    read_channels(*it, Path(pointer, "channels"), scene, limits, uploads, s);
+  if (auto it = v.find("uniforms"); it != v.end()) read_uniforms(*it, Path(pointer, "uniforms"), s);
+  if (auto it = v.find("rect"); it != v.end())
+    s.rect = read_rect(*it, Path(pointer, "rect")), s.whole = false;
+  if (auto it = v.find("opaque"); it != v.end()) s.opaque = read_bool(*it, Path(pointer, "opaque"));
+  return s;
+}
+
 // A triangle, line or polyline whose points are [x, y, z]: world space, through the camera, unlit.
 Mesh mesh_of_3d_primitive(const Primitive& p, std::span<const double> coords, std::span<const Rgba8> colors) {
   Mesh mesh;
@@ -719,13 +846,21 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
   auto type_it = v.find("type");
   if (type_it == v.end())
     invalid(pointer,
-            "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\")");
+            "missing \"type\" (\"triangle\", \"line\", \"polyline\", \"mesh\", \"model\", \"obj\" or "
+            "\"shader\")");
   const Path type_pointer(pointer, "type");
   if (!type_it->is_string())
     invalid(type_pointer, std::string("expected a string, got ") + type_name(*type_it));
   const std::string& type = type_it->get_ref<const std::string&>();
 
   Primitive p;
+  if (type == "shader") {
+    p.kind = PrimitiveKind::shader;
+    p.mesh = static_cast<std::uint32_t>(scene.shaders.size());
+    scene.shaders.push_back(read_shader(v, pointer, scene, limits, uploads));
+    scene.primitives.push_back(p);
+    return;
+  }
   if (type == "mesh" || type == "obj" || type == "model") {
     p.kind = PrimitiveKind::mesh;
     p.mesh = static_cast<std::uint32_t>(scene.meshes.size());
@@ -746,7 +881,8 @@ void read_primitive(const json& v, const Path& pointer, Scene& scene, const Limi
   } else {
     invalid(type_pointer,
             "unknown primitive type \"" + type +
-                "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\", \"model\" or \"obj\"");
+                "\"; expected \"triangle\", \"line\", \"polyline\", \"mesh\", \"model\", \"obj\" or "
+                "\"shader\"");
   }
 
   auto points_it = v.find("points");

@@ -40,11 +40,18 @@ DOCUMENTED_RULES = [
     ("camera up not along the view direction", lambda c: '"up" is parallel to the view direction' in c["message"]),
     ("source / mtl_source names an uploaded part", lambda c: "no uploaded part named" in c["message"]),
     ("OBJ and MTL text is a usable model (422)", lambda c: c["verdict"] == "model"),
+    ("a texture's data is base64 of a PNG or JPEG (400; 422 for an image that does not decode)",
+     lambda c: "not base64" in c["message"] or ("/channels/" in c["pointer"] and c["verdict"] == "model")),
+    ("a shader's program compiles (400 invalid-shader)", lambda c: c["verdict"] == "shader"),
+    ("a shader's uniforms are declared by its program, with its type's values",
+     lambda c: re.search(r'the program declares no uniform|uniform ".*" (is a|takes true or false)', c["message"])),
+    ("a uniform holds at most 4096 values, nested arrays included",
+     lambda c: "a uniform holds at most 4096 values" in c["message"]),
     ("the service's limits (422; nesting depth 400)",
      lambda c: c["verdict"] == "limit" or "nested deeper than" in c["message"]),
 ]
 
-README_SECTIONS = ("## Scene format v1", "## 3D scenes and models")
+README_SECTIONS = ("## Scene format v1", "## Shaders", "## 3D scenes and models")
 
 
 class Result:

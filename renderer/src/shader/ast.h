@@ -17,8 +17,21 @@ struct Expr;
 struct Stmt;
 struct Function;
 struct Builtin;
+struct Declaration;
 
 enum class Qualifier : std::uint8_t { none, const_, uniform, in, out, inout, const_in };
+
+/// A precision qualifier as written (section 4.5); `none` where the type takes its scope's default.
+enum class Precision : std::uint8_t { none, lowp, mediump, highp };
+
+/// One entry of `layout(...)` (section 4.3.8): a name, maybe `= integer`. The parser keeps whatever is
+/// written; the checker knows which names the declaration they qualify allows.
+struct LayoutId {
+  std::string_view name;
+  SourcePos pos;
+  bool has_value = false;
+  std::int64_t value = 0;
+};
 
 /// A type as written: a keyword type, a struct's name, or a struct defined in place; maybe with `[n]`.
 struct TypeSpec {
@@ -28,7 +41,7 @@ struct TypeSpec {
   struct StructDecl* definition = nullptr;  ///< a struct defined here
   bool array = false;                       ///< `type[...]`
   Expr* array_size = nullptr;               ///< the size in `type[size]`; null for `type[]`
-  bool precision = false;                   ///< a precision qualifier was written
+  Precision precision = Precision::none;    ///< as written
 };
 
 struct FieldDecl {
@@ -37,12 +50,14 @@ struct FieldDecl {
   SourcePos pos;
   bool array = false;
   Expr* array_size = nullptr;
+  Declaration* qualifiers = nullptr;  ///< a block's member: its own qualifiers (null: none written)
 };
 
 struct StructDecl {
   std::string_view name;  ///< empty: an anonymous struct
   SourcePos pos;
   std::vector<FieldDecl> fields;
+  bool block = false;          ///< an interface block's members (`uniform Name { ... }`), not a struct
   StructType* type = nullptr;  ///< made by the checker
 };
 
@@ -76,16 +91,21 @@ struct Declarator {
   bool array = false;          ///< `name[...]`
   Expr* array_size = nullptr;  ///< null for `name[]`
   Expr* init = nullptr;
+  bool broken = false;           ///< its initializer did not parse: declared, of no type, so uses are quiet
   Variable* variable = nullptr;  ///< checker
 };
 
 struct Declaration {
   SourcePos pos;
   Qualifier qualifier = Qualifier::none;
-  bool invariant = false, interpolation = false, layout = false, centroid = false;
-  TypeSpec* type = nullptr;
-  std::vector<Declarator> vars;                   ///< empty: a struct declared alone, or `invariant name;`
+  bool invariant = false, interpolation = false, flat = false, centroid = false;
+  std::vector<LayoutId> layout;  ///< `layout(...)`'s entries (empty: none written)
+  TypeSpec* type = nullptr;      ///< null: qualifiers alone (`layout(std140) uniform;`), or a block
+  std::vector<Declarator>
+      vars;  ///< empty: a struct declared alone, or `invariant name;`; a block: its instance
   std::vector<std::string_view> invariant_names;  ///< `invariant a, b;`
+  StructDecl* block = nullptr;                    ///< an interface block's name and members
+  bool precision_statement = false;               ///< `precision highp float;`: `type` and its precision
 };
 
 enum class ExprKind : std::uint8_t {
@@ -154,11 +174,11 @@ struct Stmt {
   Expr* step = nullptr;         ///< for
   std::vector<Stmt*> list;      ///< block
   bool scope = true;            ///< block: opens a scope (a function's body shares its parameters')
+  bool broken = false;          ///< return or case: its expression did not parse (the error is reported)
 };
 
 struct ParamDecl {
   Qualifier qualifier = Qualifier::in;
-  bool precision = false;
   TypeSpec* type = nullptr;
   std::string_view name;  ///< may be empty in a prototype
   SourcePos pos;
@@ -180,6 +200,7 @@ struct Function {
   Type ret;
   std::vector<Type> params;
   std::vector<Qualifier> qualifiers;
+  std::vector<Precision> precisions;  ///< of the parameters: as written, or their scope's default
   SourcePos pos;
   const FunctionDecl* definition = nullptr;
   std::vector<Variable*> parameters;      ///< of the definition

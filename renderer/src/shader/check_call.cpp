@@ -1,6 +1,7 @@
 // The checker's calls and constructors (sections 5.4 and 6.1): overloads matched exactly, out arguments
 // that are l-values, constructors' argument counts, and the constant offsets texture functions need.
 #include "shader/checker_impl.h"
+#include "shader/shadertoy.h"
 
 namespace raster::shader {
 
@@ -25,12 +26,23 @@ void Checker::call(Expr* e) {
   }
   if (s && s->variable)
     return error(e->pos, std::string("'") + quote(e->name) + "' is a variable, not a function");
+  if (s && s->block)
+    return error(e->pos, std::string("'") + quote(e->name) + "' is a uniform block's name, not a function");
   const std::vector<const Builtin*>& builtins = builtin_overloads(e->name);
-  if (!s && builtins.empty())
+  if (!s && builtins.empty()) {
+    if (e->pos.string == kEpilogueString)
+      return error(e->pos, std::string("the program has no function '") + quote(e->name) +
+                               "', which ShaderToy's frame calls with " + argument_types(e));
     return error(e->pos, std::string("no function '") + quote(e->name) + "' is declared");
+  }
   if (failed) return;
   if (s && call_user(e, s->functions)) return;
   if (!s && call_builtin(e, builtins)) return;
+  // ShaderToy's frame calling a function the program declares with other parameters: said at the program's.
+  if (s && e->pos.string == kEpilogueString && s->functions.front()->pos.string == kProgramString)
+    return error(s->functions.front()->pos, std::string("ShaderToy's frame calls '") + quote(e->name) +
+                                                "' with " + argument_types(e) +
+                                                ", which no declaration of it in the program takes");
   error(e->pos,
         std::string("no overload of '") + quote(e->name) + std::string("' takes ") + argument_types(e));
 }
@@ -97,7 +109,7 @@ void Checker::texture_offset(Expr* e) {
 }
 
 void Checker::construct(Expr* e) {
-  Type t = resolve(e->spec);
+  Type t = resolve(e->spec);  // no precision(): a constructor's type is not declared
   bool failed = t.is_error();
   for (Expr* a : e->args) {
     expr(a);

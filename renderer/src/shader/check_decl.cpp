@@ -4,6 +4,7 @@
 
 #include "shader/checker_impl.h"
 #include "shader/parser.h"
+#include "shader/shadertoy.h"
 
 namespace raster::shader {
 
@@ -15,6 +16,8 @@ Checker::Checker(Ast& ast, const Folder& fold, Checked& out, Diagnostics& diagno
     : ast_(ast), fold_(fold), out_(out), diagnostics_(diagnostics) {}
 
 void Checker::error(SourcePos pos, std::string message) {
+  if (pos == last_error_ && pos.line != 0) return;
+  last_error_ = pos;
   diagnostics_.error(pos, std::move(message));
 }
 
@@ -25,12 +28,22 @@ void Checker::run() {
   for (const External& e : ast_.externals) {
     if (e.kind == External::Kind::function) function(e.function);
     if (e.kind == External::Kind::declaration) declaration(e.declaration, true);
+    if (e.kind == External::Kind::precision) precision_statement(e.declaration);
   }
   recursion();
   undefined_calls();
-  Symbol* main = lookup("main");
-  if (main && !main->functions.empty()) out_.main = main->functions.front();
+  out_.main = entry();
   if (!out_.main && !diagnostics_.failed()) error({}, "the shader has no main()");
+}
+
+// The entry point: main() without parameters (a program may declare other overloads of main; section 6.1
+// asks only that the one it runs take none).
+Function* Checker::entry() {
+  Symbol* main = lookup("main");
+  if (main)
+    for (Function* f : main->functions)
+      if (f->params.empty() && f->definition) return f;
+  return nullptr;
 }
 
 Checker::Symbol* Checker::lookup(std::string_view name) {
@@ -55,11 +68,15 @@ bool Checker::declarable(std::string_view name, SourcePos pos, bool function) {
     return false;
   }
   const auto it = scopes_.back().find(name);
-  if (it != scopes_.back().end() && !(function && !it->second.functions.empty())) {
+  if (it == scopes_.back().end() || (function && !it->second.functions.empty())) return true;
+  const Symbol& s = it->second;
+  const SourcePos before = s.variable ? s.variable->pos
+                           : s.type   ? s.type->pos
+                           : s.block  ? s.block->pos
+                                      : s.functions.front()->pos;
+  if (!frame_clash(name, before, pos))
     error(pos, std::string("'") + quote(name) + "' is already declared in this scope");
-    return false;
-  }
-  return true;
+  return false;
 }
 
 Variable* Checker::make_variable(std::string_view name, const Type& type, SourcePos pos,
@@ -80,8 +97,14 @@ void Checker::builtin_variables() {
   input("gl_FragCoord", Type::of(Basic::float_, 4), Variable::Kind::frag_coord);
   input("gl_FrontFacing", Type::of(Basic::bool_), Variable::Kind::front_facing);
   input("gl_PointCoord", Type::of(Basic::float_, 2), Variable::Kind::point_coord);
-  Variable* depth = make_variable("gl_FragDepth", Type::of(Basic::float_), {}, Variable::Kind::local);
-  s["gl_FragDepth"].variable = depth;
+  // gl_FragDepth is a global like the program's own (nothing reads the depth it writes): declared here so
+  // that the lowering gives it slots as it does every global of Checked::globals.
+  Declaration* depth = Ast::make(ast_.declarations);
+  Declarator& d = depth->vars.emplace_back();
+  d.name = "gl_FragDepth";
+  d.variable = make_variable(d.name, Type::of(Basic::float_), {}, Variable::Kind::global);
+  s[d.name].variable = d.variable;
+  out_.globals.push_back(depth);
   const std::pair<std::string_view, int> constants[] = {
       {"gl_MaxVertexAttribs", 16},
       {"gl_MaxVertexUniformVectors", 256},
@@ -101,6 +124,29 @@ void Checker::builtin_variables() {
     v->value = {static_cast<std::uint32_t>(value)};
     s[name].variable = v;
   }
+  depth_range(s);
+  // Section 4.5.4: a fragment shader's default precisions (float has none; the prelude gives it highp).
+  s.precisions = {{precision_key(Type::of(Basic::int_)), Precision::mediump},
+                  {precision_key(keyword_type("sampler2D")), Precision::lowp},
+                  {precision_key(keyword_type("samplerCube")), Precision::lowp}};
+}
+
+// gl_DepthRange (section 7.4), a uniform whose value is GL's default range, near 0 and far 1: a value
+// rasterd knows (Variable::constant, so the lowering has it) but not a constant expression (check_expr's
+// name() keeps uniforms out of those).
+void Checker::depth_range(Scope& s) {
+  StructType* st = &out_.structs.emplace_back();
+  st->name = "gl_DepthRangeParameters";
+  s[st->name].type = st;  // a type a program may name (the parser knows it too)
+  for (const std::string_view f : {"near", "far", "diff"})
+    st->fields.push_back({f, Type::of(Basic::float_), {}});
+  st->slots = 3;
+  Type t = Type::of(Basic::structure);
+  t.structure = st;
+  Variable* v = make_variable("gl_DepthRange", t, {}, Variable::Kind::uniform);
+  v->qualifier = Qualifier::uniform, v->constant = true;
+  v->value = {0u, 0x3f800000u, 0x3f800000u};  // 0.0f, 1.0f, 1.0f
+  s["gl_DepthRange"].variable = v;
 }
 
 // The size of an array: a constant integral expression greater than zero.
@@ -146,33 +192,34 @@ StructType* Checker::struct_type(StructDecl* decl) {
   StructType* st = &out_.structs.emplace_back();
   st->name = decl->name, st->pos = decl->pos;
   decl->type = st;
-  std::vector<std::string_view> names;
-  for (FieldDecl& f : decl->fields) {
-    if (f.type->definition) error(f.type->pos, "a struct cannot be defined inside another struct");
-    Type t = resolve(f.type);
-    if (t.is_error()) continue;
-    if (!sized(t, f.array, f.array_size, f.pos)) continue;
-    if (t.array == Type::kUnsized) {
-      error(f.pos, "a struct's field needs an array size");
-      continue;
-    }
-    if (t.is_void()) error(f.pos, "a struct's field cannot be void");
-    if (t.is_sampler())
-      error(f.pos, "a struct's field cannot be a sampler (samplers are uniforms or parameters)");
-    if (std::find(names.begin(), names.end(), f.name) != names.end()) {
-      error(f.pos, std::string("field '") + quote(f.name) + "' is declared twice");
-      continue;
-    }
-    if (f.name.starts_with("gl_"))
-      error(f.pos, std::string("'") + quote(f.name) + "': names beginning with gl_ are reserved");
-    names.push_back(f.name);
-    st->fields.push_back({f.name, t, f.pos});
-  }
-  if (st->fields.empty() && !decl->fields.empty()) return st;
+  bool whole = true;
+  for (FieldDecl& f : decl->fields) whole &= field(f, st);
+  if (!whole) return st;
   if (decl->fields.empty()) error(decl->pos, "a struct needs at least one field");
   for (const Field& f : st->fields) st->slots += f.type.slots();
   if (!decl->name.empty() && declarable(decl->name, decl->pos)) scopes_.back()[decl->name].type = st;
   return st;
+}
+
+// One field of a struct or member of a block, added to `st` unless it is in error.
+bool Checker::field(FieldDecl& f, StructType* st) {
+  if (f.type->definition)
+    error(f.type->pos, std::string("a struct cannot be defined inside another struct or a block"));
+  Type t = resolve(f.type);
+  if (t.is_error()) return false;
+  precision(f.type, t);
+  if (!sized(t, f.array, f.array_size, f.pos)) return false;
+  const char* what = st->block ? "a block's member" : "a struct's field";
+  if (t.array == Type::kUnsized) return error(f.pos, std::string(what) + " needs an array size"), false;
+  if (t.is_void()) return error(f.pos, std::string(what) + " cannot be void"), false;
+  for (const Field& other : st->fields)
+    if (other.name == f.name)
+      return error(f.pos, std::string("'") + quote(f.name) + "' is declared twice in " + quote(st->name)),
+             false;
+  if (f.name.starts_with("gl_"))
+    error(f.pos, std::string("'") + quote(f.name) + "': names beginning with gl_ are reserved");
+  st->fields.push_back({f.name, t, f.pos});
+  return true;
 }
 
 // The type a TypeSpec names, array part included; Type::error() after reporting why not.
@@ -190,7 +237,7 @@ Type Checker::resolve(TypeSpec* spec) {
     t = Type::of(Basic::structure);
     t.structure = s->type;
   }
-  if (spec->precision &&
+  if (spec->precision != Precision::none &&
       !(t.basic == Basic::float_ || t.basic == Basic::int_ || t.basic == Basic::uint_ || t.is_sampler())) {
     error(spec->pos,
           std::string("a precision qualifier applies to float, int, uint and sampler types, not ") +
@@ -201,6 +248,9 @@ Type Checker::resolve(TypeSpec* spec) {
 }
 
 void Checker::declaration(Declaration* d, bool global) {
+  if (d->precision_statement) return precision_statement(d);
+  if (d->block) return interface_block(d);
+  if (!d->type) return qualifiers_alone(d);
   if (!d->invariant_names.empty()) {
     if (!global) error(d->pos, "invariant can only be declared at global scope");
     for (const std::string_view n : d->invariant_names) {
@@ -212,18 +262,20 @@ void Checker::declaration(Declaration* d, bool global) {
     return;
   }
   const Type base = resolve(d->type);
+  if (!base.is_error()) precision(d->type, base);
   if (!global && (d->qualifier == Qualifier::uniform || d->qualifier == Qualifier::in ||
                   d->qualifier == Qualifier::out)) {
     error(d->pos, "in, out and uniform variables are declared at global scope only");
     return;
   }
-  if (!global && (d->layout || d->invariant || d->interpolation || d->centroid)) {
+  if (!global && (!d->layout.empty() || d->invariant || d->interpolation || d->centroid)) {
     error(d->pos, "layout, invariant and interpolation qualifiers apply to global inputs and outputs only");
     return;
   }
+  if (global) layout(d->layout, d->qualifier == Qualifier::out ? LayoutUse::output : LayoutUse::none);
+  // `float;` declares nothing, which the grammar allows (glslang too); `float[2];` is an error.
   if (d->vars.empty()) {
-    if (!d->type->definition && !base.is_error() && d->qualifier == Qualifier::none)
-      error(d->pos, "a declaration declares nothing");
+    if (d->type->array) error(d->pos, "an array declaration needs a name: 'type name[size];'");
     return;
   }
   if (base.is_error()) {
@@ -236,6 +288,11 @@ void Checker::declaration(Declaration* d, bool global) {
 }
 
 void Checker::declarator(Declaration* d, const Type& base, Declarator& v, bool global) {
+  if (v.broken) {  // its initializer did not parse: declared without a type, so its uses are quiet
+    if (declarable(v.name, v.pos))
+      scopes_.back()[v.name].variable = make_variable(v.name, Type::error(), v.pos, Variable::Kind::local);
+    return;
+  }
   Type t = base;
   if (!sized(t, v.array, v.array_size, v.pos)) return;
   if (v.init) expr(v.init);
@@ -277,31 +334,52 @@ void Checker::declarator(Declaration* d, const Type& base, Declarator& v, bool g
   v.variable = var;
 }
 
+namespace {
+
+// Whether `t` or a field of it (at any depth) is a type `is` picks.
+template <class Pick>
+bool holds(const Type& t, const Pick& is) {
+  if (!t.is_struct()) return is(t);
+  for (const Field& f : t.structure->fields)
+    if (holds(f.type, is)) return true;
+  return false;
+}
+
+}  // namespace
+
 // What a global's storage qualifier makes it: a uniform (ShaderToy's iChannel0..3 are the sampler2D
 // uniforms bound to images), an input, the fragment's output.
 void Checker::global_kind(Declaration* d, Variable* v) {
   const Type& t = v->type;
+  const bool in_or_out = d->qualifier == Qualifier::in || d->qualifier == Qualifier::out;
+  if (d->invariant && d->qualifier != Qualifier::out)
+    error(v->pos, "only outputs can be invariant");
+  else if ((d->interpolation || d->centroid) && !in_or_out)
+    error(v->pos, "flat, smooth and centroid qualify inputs and outputs only");
   if (d->qualifier == Qualifier::uniform) {
     v->kind = Variable::Kind::uniform;
     out_.uniforms.push_back(v);
     if (t.is_sampler() && t.sampler == SamplerKind::sampler2D && !t.is_array() && v->name.size() == 9 &&
         v->name.starts_with("iChannel") && v->name[8] >= '0' && v->name[8] <= '3')
       v->channel = v->name[8] - '0';
-    if (t.is_struct() && t.has_sampler()) error(v->pos, "a uniform struct cannot hold a sampler here");
   } else if (d->qualifier == Qualifier::in) {
     v->kind = Variable::Kind::input;
-    if (t.basic == Basic::bool_ || t.is_struct())
-      error(v->pos, "a fragment shader's input cannot be a bool or a struct");
+    if (holds(t, [](const Type& f) { return f.basic == Basic::bool_ || f.is_sampler(); }))
+      error(v->pos, "a fragment shader's input cannot be or hold a bool or a sampler");
+    else if (holds(t, [](const Type& f) { return f.is_integer(); }) && !d->flat)
+      error(v->pos, std::string("'") + quote(v->name) + "': an input that is or holds integers must be flat");
   } else if (d->qualifier == Qualifier::out) {
     v->kind = Variable::Kind::output;
     if (t.basic == Basic::bool_ || t.is_matrix() || t.is_struct() || t.is_sampler())
       error(v->pos, "a fragment shader's output must be a float, int or uint scalar or vector");
+    else if (out_.output && out_.output->pos.string == kProgramString && v->pos.string == kEpilogueString)
+      error(out_.output->pos, std::string("'") + quote(out_.output->name) +
+                                  "': a ShaderToy program declares no output (ShaderToy's frame declares the "
+                                  "fragment's one output, which mainImage's fragColor writes)");
     else if (out_.output)
       error(v->pos, std::string("this shader has one output, '") + quote(out_.output->name) + "', already");
     else
       out_.output = v;
-  } else if (d->interpolation || d->centroid || d->invariant || d->layout) {
-    error(d->pos, "interpolation, invariant and layout qualifiers need an in or out variable");
   }
 }
 

@@ -9,6 +9,11 @@ bool is_bool_scalar(const Type& t) {
   return t.is_scalar() && t.basic == Basic::bool_;
 }
 
+// A uniform block's instance: a name for its members, not a value to compare.
+bool is_block(const Type& t) {
+  return t.is_struct() && t.structure->block;
+}
+
 // Swizzle letters (section 5.5): one of the three sets, component index or -1.
 int swizzle_component(char c, int& set) {
   static constexpr std::string_view kSets[3] = {"xyzw", "rgba", "stpq"};
@@ -72,10 +77,15 @@ void Checker::name(Expr* e) {
   Symbol* s = lookup(e->name);
   if (!s) return error(e->pos, std::string("'") + quote(e->name) + "' is not declared");
   if (s->type) return error(e->pos, std::string("'") + quote(e->name) + "' is a type, not a value");
+  if (s->block)
+    return error(e->pos, std::string("'") + quote(e->name) +
+                             "' is a uniform block's name, not a value (its instance name, or its members' "
+                             "names, are)");
   if (!s->variable) return error(e->pos, std::string("'") + quote(e->name) + "' is a function, not a value");
   e->variable = s->variable;
   e->type = s->variable->type;
-  e->constant = s->variable->constant;
+  // A uniform is never a constant expression, even one whose value rasterd knows (gl_DepthRange).
+  e->constant = s->variable->constant && s->variable->kind != Variable::Kind::uniform;
   if (e->constant) e->value = s->variable->value;
 }
 
@@ -213,6 +223,9 @@ void Checker::binary(Expr* e) {
   const Type &a = e->args[0]->type, &b = e->args[1]->type;
   if (a.is_error() || b.is_error()) return;
   std::string why;
+  if (is_block(a) || is_block(b))
+    return error(e->pos, std::string("'") + std::string(spelling(e->op)) +
+                             "' cannot apply to a uniform block (only to its members)");
   if ((e->op == Punct::eq || e->op == Punct::ne) && a == b && !a.has_sampler()) {
     e->type = Type::of(Basic::bool_);
   } else {
@@ -222,11 +235,8 @@ void Checker::binary(Expr* e) {
                                std::string("' cannot apply to ") + type_name(a) + std::string(" and ") +
                                type_name(b) + std::string(": ") + why);
   }
+  // Integer division by zero, constant or not, is no error: its value is undefined (section 5.9).
   e->constant = e->args[0]->constant && e->args[1]->constant;
-  std::int64_t divisor = 1;
-  if (e->type.is_integer() && (e->op == Punct::slash || e->op == Punct::percent) && b.is_scalar() &&
-      constant_int(e->args[1], divisor) && divisor == 0)
-    error(e->args[1]->pos, "integer division by zero");
 }
 
 void Checker::assign(Expr* e) {
@@ -270,8 +280,9 @@ void Checker::ternary(Expr* e) {
   if (!(a == b))
     return error(e->pos, std::string("?:'s two values must be of one type, not ") + type_name(a) +
                              std::string(" and ") + type_name(b));
-  if (a.is_array()) return error(e->pos, "?: cannot choose between arrays");
-  if (a.has_sampler()) return error(e->pos, "?: cannot choose between samplers");
+  // Section 4.1.7 keeps samplers out of expressions; a struct holding one is a value like others (glslang
+  // too), and rasterd binds only ShaderToy's channels, which no struct holds.
+  if (a.is_sampler()) return error(e->pos, "?: cannot choose between samplers");
   e->type = a;
   e->constant = e->args[0]->constant && e->args[1]->constant && e->args[2]->constant;
 }
@@ -328,8 +339,10 @@ void Checker::index(Expr* e) {
   if (constant_int(i, at) && (at < 0 || at >= size))
     return error(i->pos, std::string("index ") + std::to_string(at) + std::string(" is outside ") +
                              type_name(t) + " (0 to " + std::to_string(size - 1) + ")");
-  if (t.is_array() && t.has_sampler() && !i->constant)
+  if (t.is_array() && t.basic == Basic::sampler && !i->constant)
     return error(i->pos, "an array of samplers is indexed by constant expressions only");
+  if (t.is_array() && is_block(t) && !i->constant)
+    return error(i->pos, "an array of uniform blocks is indexed by constant expressions only");
   e->type = t.element();
   e->constant = a->constant && i->constant;
 }

@@ -10,11 +10,14 @@ namespace raster::shader {
 Function* Checker::signature(FunctionDecl* f) {
   const Type ret = resolve(f->ret);
   bool ok = !ret.is_error();
+  if (ok) precision(f->ret, ret);
   if (ok && ret.array == Type::kUnsized)
     error(f->ret->pos, "a function's return type needs an array size"), ok = false;
-  if (ok && ret.has_sampler()) error(f->ret->pos, "a function cannot return a sampler"), ok = false;
+  // Samplers are parameters and uniforms only (section 4.1.7); a struct holding one may be returned.
+  if (ok && ret.basic == Basic::sampler) error(f->ret->pos, "a function cannot return a sampler"), ok = false;
   std::vector<Type> params;
   std::vector<Qualifier> qualifiers;
+  std::vector<Precision> precisions;
   for (ParamDecl& p : f->params) {
     Type t = resolve(p.type);
     if (t.is_error() || !sized(t, p.array, p.array_size, p.pos)) {
@@ -23,47 +26,68 @@ Function* Checker::signature(FunctionDecl* f) {
     }
     if (t.array == Type::kUnsized) error(p.pos, "a parameter needs an array size"), ok = false;
     if (t.is_void()) error(p.pos, "a parameter cannot be void"), ok = false;
-    if (t.has_sampler() && (p.qualifier == Qualifier::out || p.qualifier == Qualifier::inout))
+    if (t.basic == Basic::sampler && (p.qualifier == Qualifier::out || p.qualifier == Qualifier::inout))
       error(p.pos, "a sampler parameter can only be in"), ok = false;
     params.push_back(t);
-    qualifiers.push_back(p.qualifier == Qualifier::const_in ? Qualifier::const_in : p.qualifier);
+    qualifiers.push_back(p.qualifier);
+    precisions.push_back(precision(p.type, t));
   }
   if (!ok) return nullptr;
   Symbol* s = lookup(f->name);
   if (s && !s->functions.empty() && scopes_.back().count(f->name)) {
-    for (Function* fn : s->functions) {
-      if (fn->params != params) continue;
-      if (!(fn->ret == ret)) {
-        error(f->pos, std::string("'") + quote(f->name) + "' is declared again with a different return type");
-        return nullptr;
-      }
-      for (std::size_t i = 0; i < params.size(); ++i) {
-        const auto in = [](Qualifier q) { return q == Qualifier::const_in ? Qualifier::in : q; };
-        if (in(fn->qualifiers[i]) != in(qualifiers[i])) {
-          error(f->params[i].pos,
-                std::string("'") + quote(f->name) + "' is declared again with other parameter qualifiers");
-          return nullptr;
-        }
-      }
-      return fn;
-    }
+    for (Function* fn : s->functions)
+      if (fn->params == params) return same_signature(f, fn, ret, qualifiers, precisions) ? fn : nullptr;
   }
   if (!declarable(f->name, f->pos, true)) return nullptr;
   Function* fn = &out_.functions.emplace_back();
   fn->name = f->name, fn->ret = ret, fn->params = params, fn->qualifiers = qualifiers, fn->pos = f->pos;
+  fn->precisions = precisions;
   scopes_.back()[f->name].functions.push_back(fn);
   return fn;
+}
+
+// A prototype and the definition (or another prototype) of one function agree on the return type and on
+// every parameter's qualifiers, const and precision included (section 6.1).
+bool Checker::same_signature(FunctionDecl* f, Function* fn, const Type& ret,
+                             const std::vector<Qualifier>& qualifiers,
+                             const std::vector<Precision>& precisions) {
+  if (!(fn->ret == ret)) {
+    if (!frame_clash(f->name, fn->pos, f->pos))
+      error(f->pos, std::string("'") + quote(f->name) + "' is declared again with a different return type");
+    return false;
+  }
+  for (std::size_t i = 0; i < qualifiers.size(); ++i) {
+    const char* what = fn->qualifiers[i] != qualifiers[i]   ? "qualifiers (in, out, inout, const)"
+                       : fn->precisions[i] != precisions[i] ? "precision"
+                                                            : nullptr;
+    if (what) {
+      error(f->params[i].pos, std::string("'") + quote(f->name) + "' is declared again with another " + what +
+                                  " for parameter " + std::to_string(i + 1));
+      return false;
+    }
+  }
+  return true;
+}
+
+// main (section 6.1 and 7): the entry point takes no parameters and returns nothing.
+void Checker::entry_point(FunctionDecl* f, const Function* fn) {
+  if (f->name != "main") return;
+  if (!fn->params.empty()) error(f->pos, "main takes no parameters");
+  if (!fn->ret.is_void()) error(f->ret->pos, "main returns void");
 }
 
 void Checker::function(FunctionDecl* f) {
   Function* fn = signature(f);
   if (!fn || !f->body) return;
   if (fn->definition) {
-    error(f->pos, std::string("'") + quote(f->name) + "' with these parameters already has a body");
+    if (!frame_clash(f->name, fn->definition->pos, f->pos))
+      error(f->pos, std::string("'") + quote(f->name) + "' with these parameters already has a body");
     return;
   }
+  entry_point(f, fn);
   fn->definition = f;
   function_ = fn;
+  returned_ = false;
   scopes_.emplace_back();  // the parameters and the body's outermost statements share one scope
   for (std::size_t i = 0; i < f->params.size(); ++i) {
     const ParamDecl& p = f->params[i];
@@ -74,6 +98,10 @@ void Checker::function(FunctionDecl* f) {
   }
   block(f->body);
   scopes_.pop_back();
+  // As glslang has it: some return statement, not one on every path (those are undefined, not errors).
+  if (!fn->ret.is_void() && !returned_)
+    error(f->pos, std::string("'") + quote(f->name) + "' must return a " + type_name(fn->ret) +
+                      ", but its body has no return statement");
   function_ = nullptr;
 }
 
@@ -103,10 +131,10 @@ void Checker::recursion() {
 
 // Every function reachable from main must have a body (a prototype alone cannot run).
 void Checker::undefined_calls() {
-  Symbol* main = lookup("main");
-  if (!main || main->functions.empty()) return;
+  Function* main = entry();
+  if (!main) return;
   std::unordered_map<const Function*, bool> seen;
-  std::vector<Function*> todo = {main->functions.front()};
+  std::vector<Function*> todo = {main};
   while (!todo.empty()) {
     Function* f = todo.back();
     todo.pop_back();

@@ -88,6 +88,8 @@ void Checker::statement(Stmt* s) {
 }
 
 void Checker::return_statement(Stmt* s) {
+  returned_ = true;
+  if (s->broken) return;  // its value did not parse (reported)
   if (s->expr) expr(s->expr);
   if (!function_) return;
   if (function_->ret.is_void()) {
@@ -109,6 +111,7 @@ void Checker::return_statement(Stmt* s) {
 // distinct constant expressions of the selector's type, one default at most, and the last label is
 // followed by a statement.
 void Checker::switch_statement(Stmt* s) {
+  if (!s->expr || !s->body) return;  // did not parse (reported)
   expr(s->expr);
   const Type& t = s->expr->type;
   const bool ok = !t.is_error() && t.is_scalar() && t.is_integer();
@@ -127,6 +130,7 @@ void Checker::switch_statement(Stmt* s) {
       if (has_default) error(c->pos, "a switch has one default label at most");
       has_default = true;
     } else if (c->kind == StmtKind::case_) {
+      if (c->broken) continue;
       expr(c->expr);
       std::int64_t v = 0;
       if (c->expr->type.is_error()) continue;

@@ -62,10 +62,12 @@ ShaderCompileResult compile_shadertoy(std::string_view source, const ShaderLimit
   TextArena arena;
   const std::vector<Token> tokens =
       preprocess(text, PreprocessLimits{limits.max_tokens, limits.max_nesting}, diagnostics, arena);
+  // The parser and the checker run after errors too (on what the pass before could read), so one compile
+  // names every independent mistake; only a pass that stopped at a bound ends the front end.
   Ast ast;
-  if (!diagnostics.failed()) parse(tokens, limits.max_nesting, ast, diagnostics);
+  if (!diagnostics.stopped()) parse(tokens, limits.max_nesting, ast, diagnostics);
   Checked checked;
-  if (!diagnostics.failed()) check(ast, fold_constant, checked, diagnostics);
+  if (!diagnostics.stopped()) check(ast, fold_constant, checked, diagnostics);
   if (diagnostics.failed()) return finish();
   Lowered lowered;
   auto program = std::make_unique<Program>();

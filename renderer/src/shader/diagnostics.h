@@ -19,11 +19,17 @@ struct Diagnostic {
 
 /// Errors in the order found. After kMaxErrors more are counted but not kept, so a hostile program of a
 /// million errors costs a bounded report; `overflow` says how many were dropped.
+///
+/// A pass goes on after an error wherever it can, and the passes after it run on what it made, so one
+/// compile reports every independent mistake; a pass that reached a bound (tokens, nesting) calls stop(),
+/// and no later pass runs on its truncated output.
 class Diagnostics {
  public:
   static constexpr std::size_t kMaxErrors = 32;
 
   void error(SourcePos pos, std::string message);
+  void stop() { stopped_ = true; }
+  bool stopped() const { return stopped_; }
   bool failed() const { return !errors_.empty(); }
   const std::vector<Diagnostic>& errors() const { return errors_; }
   std::size_t overflow() const { return overflow_; }
@@ -31,6 +37,7 @@ class Diagnostics {
  private:
   std::vector<Diagnostic> errors_;
   std::size_t overflow_ = 0;
+  bool stopped_ = false;
 };
 
 /// Text made during a compilation, at stable addresses (a deque never moves what it holds), so tokens and

@@ -85,6 +85,15 @@ template <class U>
     put(d + i, select(load<U>(exec + i), load<U>(a + i), load<U>(d + i)));
 }
 
+/// d = exec & cond ? a : d: an assignment of an if turned into a select.
+template <class U>
+[[gnu::always_inline]] inline void store_if(std::uint32_t* d, const std::uint32_t* a,
+                                            const std::uint32_t* cond, const std::uint32_t* r) {
+  const std::uint32_t* exec = r + static_cast<std::size_t>(kExecSlot) * kBlockLanes;
+  for (int i = 0; i < kBlockLanes; i += kWidth<U>)
+    put(d + i, select(load<U>(exec + i) & load<U>(cond + i), load<U>(a + i), load<U>(d + i)));
+}
+
 // exec = fn(exec, a[, b]); returns whether a lane is live, and keeps `exec_full` up to date.
 template <class U, class State, class Fn>
 [[gnu::always_inline]] inline bool mask(std::uint32_t* exec, const std::uint32_t* a, const std::uint32_t* b,
@@ -132,6 +141,15 @@ template <class U, class State>
   std::memset(exec, 0, kBlockLanes * 4);
   state.exec_full = false;
 }
+// acc |= exec & cond; exec &= ~cond: the lanes for which cond holds leave.
+template <class U, class State>
+[[gnu::always_inline]] inline void leave_if(std::uint32_t* acc, std::uint32_t* exec,
+                                            const std::uint32_t* cond, State& state) {
+  for (int i = 0; i < kBlockLanes; i += kWidth<U>)
+    put(acc + i, load<U>(acc + i) | (load<U>(exec + i) & load<U>(cond + i)));
+  mask<U>(exec, exec, cond, state, [](U e, U c) RASTER_LANES_INLINE { return e & ~c; });
+}
+
 // exits |= exec & ~cond; exec &= cond; whether a lane is live.
 template <class U, class State>
 [[gnu::always_inline]] inline bool loop_test(std::uint32_t* exits, std::uint32_t* exec,

@@ -67,6 +67,12 @@ template <class F>
       return RASTER_F2(step(x, y));
     case Op::fsmoothstep:
       return RASTER_F3(smoothstep(x, y, z));
+    case Op::fmuladd:
+      return RASTER_F3(x * y + z);
+    case Op::fmulsub:
+      return RASTER_F3(x * y - z);
+    case Op::fnmuladd:
+      return RASTER_F3(z - x * y);
     case Op::fsqrt:
       return RASTER_F1(sqrt(x));
     case Op::frsqrt:
@@ -213,6 +219,8 @@ template <class F>
       return RASTER_T2(U, x | y);
     case Op::bxor:
       return RASTER_T2(U, x ^ y);
+    case Op::imuladd:
+      return RASTER_T3(U, x * y + z);
     case Op::bnot:
       return RASTER_T1(U, ~x);
     case Op::select:
@@ -267,6 +275,9 @@ template <class F>
       return pc;
     case Op::loop_test:
       return loop_test<U>(d, exec, a, state) ? pc : jump - 1;
+    case Op::leave_if:
+      leave_if<U>(d, exec, a, state);
+      return pc;
     case Op::loop_end:
       std::memcpy(exec, a, kBlockLanes * 4);
       state.exec_full = all_lanes<U>(exec);

@@ -25,15 +25,18 @@ inline constexpr Slot kUnusedSlot = ~Slot{0};
 
 /// Operations, each once with the group of handlers that runs it (engine_run.h). Operands name slots unless
 /// said: d the result, a b c the inputs, `imm` an immediate; masks are all ones (true) or zero.
-///  - move: mov d = a; store d = exec ? a : d (an assignment under control flow).
+///  - move: mov d = a; store d = exec ? a : d (an assignment under control flow); store_if d = exec & b ?
+///    a : d (an assignment in an if turned into a select: the if's condition b).
 ///  - index: load_index d = slot(a + clamp(i, 0, imm - 1) * c), i the int lanes of b; store_index writes a
 ///    there where exec. Run-time indices, clamped into the array.
 ///  - float: IEEE arithmetic and lane_math.h's functions, a (b, c) in order: fclamp d = min(max(a, b), c);
 ///    fmix d = mix(a, b, c); fstep d = step(a, b); fsmoothstep d = smoothstep(a, b, c); comparisons (flt
-///    to fisinf) give masks.
+///    to fisinf) give masks. fmuladd d = a * b + c, fmulsub d = a * b - c, fnmuladd d = c - a * b: a
+///    multiply and the add that uses it in one instruction, each rounded as before (optimize.h makes them).
 ///  - transcendental: lane_transcendental.h's functions (fatan2 is atan(a, b)).
 ///  - integer: conversions (float to int or uint truncated, NaN 0, saturated; bool to 1 or 1.0), wrapping
-///    arithmetic, comparisons to masks, shifts by b modulo 32, bitwise operations; select d = a ? b : c.
+///    arithmetic (imuladd d = a * b + c), comparisons to masks, shifts by b modulo 32, bitwise operations;
+///    select d = a ? b : c.
 ///  - divide: idiv, imod, udiv, umod, defined for every input (engine_lane_ops.cpp).
 ///  - lane: packing (pack d = pack(a, b); unpack d, d + 1 = unpack(a)); ddx, ddy: the difference across
 ///    the lane's 2x2 quad; textures: channel imm & 0xff, tex_sample's texel offset (imm >> 8 & 0xff) - 8
@@ -45,15 +48,17 @@ inline constexpr Slot kUnusedSlot = ~Slot{0};
 ///    if_end exec |= a; if_merge exec |= a & ~b (an if without else); clear d = 0 (an accumulator of lanes
 ///    that left by break, continue or return); leave d |= exec, exec = 0; mask_or exec |= a; mask_or_and
 ///    exec |= a & b (a switch's case); loop_test d |= exec & ~a, exec &= a, none: jump to imm (loop_end);
-///    loop_end exec = a.
+///    loop_end exec = a; leave_if d |= exec & a, exec &= ~a (`if (a) break;` and the like).
 ///  - loop: loop_back: while a lane is live, count the iteration (of loop c) and jump to imm.
 // clang-format off
 #define RASTER_SHADER_OPS(X)                                                                                 \
-  X(mov, move) X(store, move) X(load_index, lane) X(store_index, lane) X(select, integer)                    \
+  X(mov, move) X(store, move) X(store_if, move) X(load_index, lane) X(store_index, lane)                      \
+  X(select, integer)                                                                                          \
   X(fadd, float) X(fsub, float) X(fmul, float) X(fdiv, float) X(fneg, float) X(fabs, float)                  \
   X(fsign, float) X(ffloor, float) X(fceil, float) X(ftrunc, float) X(fround, float)                         \
   X(froundeven, float) X(ffract, float) X(fmod, float) X(fmin, float) X(fmax, float) X(fclamp, float)        \
   X(fmix, float) X(fstep, float) X(fsmoothstep, float) X(fsqrt, float) X(frsqrt, float)                      \
+  X(fmuladd, float) X(fmulsub, float) X(fnmuladd, float)                                                      \
   X(fsin, transcendental) X(fcos, transcendental) X(ftan, transcendental) X(fasin, transcendental)           \
   X(facos, transcendental) X(fatan, transcendental) X(fatan2, transcendental) X(fsinh, transcendental)       \
   X(fcosh, transcendental) X(ftanh, transcendental) X(fasinh, transcendental) X(facosh, transcendental)      \
@@ -66,12 +71,13 @@ inline constexpr Slot kUnusedSlot = ~Slot{0};
   X(umod, divide) X(umin, integer) X(umax, integer) X(uclamp, integer) X(ilt, integer) X(ile, integer)       \
   X(igt, integer) X(ige, integer) X(ieq, integer) X(ine, integer) X(ult, integer) X(ule, integer)            \
   X(ugt, integer) X(uge, integer) X(shl, integer) X(shr, integer) X(ushr, integer) X(band, integer)          \
-  X(bor, integer) X(bxor, integer) X(bnot, integer) X(pack_snorm, lane) X(pack_unorm, lane)                  \
+  X(bor, integer) X(bxor, integer) X(bnot, integer) X(imuladd, integer) X(pack_snorm, lane)                  \
+  X(pack_unorm, lane)                                                                                         \
   X(pack_half, lane) X(unpack_snorm, lane) X(unpack_unorm, lane) X(unpack_half, lane) X(ddx, lane)           \
   X(ddy, lane) X(tex_sample, lane) X(tex_fetch, lane) X(tex_size, lane) X(if_begin, control)                 \
   X(if_else, control) X(if_end, control) X(if_merge, control) X(clear, control) X(leave, control)            \
   X(mask_or, control) X(mask_or_and, control) X(loop_test, control) X(loop_back, loop)                       \
-  X(loop_end, control)
+  X(loop_end, control) X(leave_if, control)
 // clang-format on
 
 enum class Op : std::uint8_t {

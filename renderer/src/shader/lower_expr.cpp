@@ -141,11 +141,13 @@ Value Lowerer::unary(const Expr* e) {
   const Type& t = e->type;
   if (e->op == Punct::inc || e->op == Punct::dec) {
     const Place p = place(a);
-    const Value old = contiguous_copy(read(p));
+    const Value current = read(p);
+    // x++ is the value before: a copy, which nothing reads (and dead code removes) when x++ is a statement.
+    const Value old = e->kind == ExprKind::postfix ? contiguous_copy(current) : Value{};
     const Value one{t.scalar(), {t.basic == Basic::float_ ? fconst(1.0f) : iconst(1)}};
     const bool inc = e->op == Punct::inc;
     const Op op = t.basic == Basic::float_ ? (inc ? Op::fadd : Op::fsub) : (inc ? Op::iadd : Op::isub);
-    const Value now = map(op, t, {&old, &one});
+    const Value now = map(op, t, {&current, &one});
     write(p, now);
     return e->kind == ExprKind::postfix ? old : now;
   }
@@ -472,6 +474,10 @@ void Lowerer::write(const Place& p, const Value& value) {
       v = contiguous_copy(value);
       break;
     }
+  if (predicate_) {  // in a predicated if: where the condition holds
+    for (std::size_t j = 0; j < p.slots.size(); ++j) emit_to(Op::store_if, p.slots[j], v.s[j], predicate_);
+    return;
+  }
   for (std::size_t j = 0; j < p.slots.size(); ++j)
     emit_to(uniform_ ? Op::mov : Op::store, p.slots[j], v.s[j]);
 }

@@ -2,6 +2,8 @@
 // to its condition and merges the lanes back; a loop runs while a lane is live, lanes leaving by break,
 // continue and return gathered in accumulators and restored where their statement ends. A call is
 // inlined, its parameters bound to the arguments' slots when the function never writes them.
+#include <algorithm>
+
 #include "shader/lowerer.h"
 
 namespace raster::shader {
@@ -27,24 +29,6 @@ bool nested_return(const Stmt* s, int depth) {
       return nested_return(s->body, depth + 1);
     default:
       return false;
-  }
-}
-
-bool has_continue(const Stmt* s) {
-  if (!s) return false;
-  switch (s->kind) {
-    case StmtKind::continue_:
-      return true;
-    case StmtKind::block:
-      for (const Stmt* c : s->list)
-        if (has_continue(c)) return true;
-      return false;
-    case StmtKind::if_:
-      return has_continue(s->body) || has_continue(s->else_body);
-    case StmtKind::switch_:
-      return has_continue(s->body);
-    default:
-      return false;  // a nested loop's continue is its own
   }
 }
 
@@ -117,11 +101,90 @@ void Lowerer::declaration(const Declaration* d) {
     }
     // A fresh variable: lanes not live here cannot read it within its scope, so the first store is whole.
     Value value = fresh(v->type);
-    if (!value.s.empty()) mutable_group_[out_.group_of[value.s[0]]] = true;
+    if (!value.s.empty()) {
+      mutable_group_[out_.group_of[value.s[0]]] = true;
+      frames_.back().locals.push_back(out_.group_of[value.s[0]]);
+    }
     for (std::size_t i = 0; i < value.s.size(); ++i)
       emit_to(Op::mov, value.s[i], dv.init ? init.s[i] : constant(0));
     vars[v] = value;
   }
+}
+
+// The one statement of a branch (a block of one, or the statement itself); null otherwise.
+const Stmt* only(const Stmt* s) {
+  while (s && s->kind == StmtKind::block && s->list.size() == 1) s = s->list[0];
+  return s && s->kind != StmtKind::block ? s : nullptr;
+}
+
+// Whether a branch can run as selects on every lane instead of under a mask: a few assignments (and
+// declarations) of values without side effects or loops, to places without run-time indices. Cheaper than
+// narrowing and widening the mask, and what compilers do with such an if.
+bool Lowerer::predicable(const Stmt* s) const {
+  if (!s) return true;
+  const std::vector<const Stmt*> list =
+      s->kind == StmtKind::block ? std::vector<const Stmt*>(s->list.begin(), s->list.end()) : std::vector{s};
+  if (list.size() > 4) return false;
+  for (const Stmt* c : list) {
+    if (c->kind == StmtKind::declaration) {
+      for (const Declarator& v : c->decl->vars)
+        if (v.init && !pure(v.init)) return false;
+      continue;
+    }
+    if (c->kind != StmtKind::expression || !c->expr) return false;
+    const Expr* e = c->expr;
+    const bool assigns = e->kind == ExprKind::assign || e->kind == ExprKind::postfix ||
+                         (e->kind == ExprKind::unary && (e->op == Punct::inc || e->op == Punct::dec));
+    if (!assigns || !static_place(e->args[0])) return false;
+    if (e->kind == ExprKind::assign && !pure(e->args[1])) return false;
+  }
+  return true;
+}
+
+// A place without a run-time index on the way (a variable, its fields, swizzles, constant elements).
+bool Lowerer::static_place(const Expr* e) const {
+  if (e->kind == ExprKind::name) return true;
+  if (e->kind == ExprKind::field) return static_place(e->args[0]);
+  if (e->kind == ExprKind::index) return e->args[1]->constant && static_place(e->args[0]);
+  return false;
+}
+
+// `if (c) break;` and its kind (continue, discard, return): the lanes for which c holds leave at once.
+bool Lowerer::leave_if(const Stmt* s, Slot c) {
+  const Stmt* b = only(s->body);
+  if (s->else_body || !b) return false;
+  Slot acc = 0;
+  if (b->kind == StmtKind::break_) {
+    acc = breakables_.back().exit;
+  } else if (b->kind == StmtKind::continue_) {
+    for (auto it = breakables_.rbegin(); it != breakables_.rend() && !acc; ++it)
+      if (it->loop) acc = it->resume;
+  } else if (b->kind == StmtKind::discard) {
+    acc = kDiscardSlot;
+  } else if (b->kind == StmtKind::return_ && frames_.back().returns && (!b->expr || pure(b->expr))) {
+    Frame& f = frames_.back();
+    const Value v = b->expr ? expr(b->expr) : Value{};
+    for (std::size_t i = 0; i < v.s.size() && i < frames_.back().result.s.size(); ++i)
+      emit_to(Op::store_if, frames_.back().result.s[i], v.s[i], c);
+    acc = frames_.back().returns;
+    f.returned = true;
+    uniform_ = false;
+  }
+  if (!acc) return false;
+  emit_to(Op::leave_if, acc, c);
+  return true;
+}
+
+// A predicable if: both branches' assignments as selects, by the condition and by its negation.
+void Lowerer::predicated_if(const Stmt* s, Slot c) {
+  const Slot saved = predicate_;
+  predicate_ = c;
+  statement(s->body);
+  if (s->else_body) {
+    predicate_ = emit(Op::bnot, c);
+    statement(s->else_body);
+  }
+  predicate_ = saved;
 }
 
 void Lowerer::if_statement(const Stmt* s) {
@@ -130,6 +193,8 @@ void Lowerer::if_statement(const Stmt* s) {
     const std::vector<std::uint32_t> k = s->expr->value.empty() ? fold_constant(*s->expr) : s->expr->value;
     if (!k.empty()) return statement(k[0] ? s->body : s->else_body);
   }
+  if (leave_if(s, c.s[0])) return;
+  if (predicate_ == 0 && predicable(s->body) && predicable(s->else_body)) return predicated_if(s, c.s[0]);
   const Slot saved = group(1);
   const std::size_t begin = emit_to(Op::if_begin, saved, c.s[0]);
   const bool was_uniform = uniform_;
@@ -145,55 +210,6 @@ void Lowerer::if_statement(const Stmt* s) {
   } else {
     out_.program.code[begin].imm = static_cast<std::uint32_t>(emit_to(Op::if_merge, 0, saved, c.s[0]));
   }
-  --frames_.back().nesting;
-  uniform_ = was_uniform && !frames_.back().returned;
-}
-
-// for, while and do-while: exits (the condition false, or break) gather in `exit`, lanes that continue in
-// `resume` until the iteration's end; the loop goes round while any lane is live.
-void Lowerer::loop(const Stmt* s) {
-  if (s->kind == StmtKind::for_) statement(s->init);
-  Breakable b;
-  b.loop = true;
-  b.exit = group(1);
-  emit_to(Op::clear, b.exit);
-  if (has_continue(s->body)) {
-    b.resume = group(1);
-    emit_to(Op::clear, b.resume);
-  }
-  const bool was_uniform = uniform_;
-  uniform_ = false;
-  ++frames_.back().nesting;
-  breakables_.push_back(b);
-  const auto index = static_cast<Slot>(out_.program.loops.size());
-  out_.program.loops.push_back({s->pos});
-  const auto top = static_cast<std::uint32_t>(patch_target());
-  std::vector<std::size_t> tests;
-  const auto test = [&] {
-    Slot c = 0;
-    if (s->decl) {
-      declaration(s->decl);
-      c = variable(s->decl->vars.front().variable).s.at(0);
-    } else if (s->expr) {
-      if (s->expr->constant && !s->expr->value.empty() && s->expr->value[0] != 0) return;  // while (true)
-      c = expr(s->expr).s[0];
-    } else {
-      return;  // for (;;)
-    }
-    tests.push_back(emit_to(Op::loop_test, b.exit, c));
-  };
-  if (s->kind != StmtKind::do_) test();
-  statement(s->body);
-  if (b.resume) {
-    emit_to(Op::mask_or, 0, b.resume);
-    emit_to(Op::clear, b.resume);
-  }
-  if (s->step) expr(s->step);
-  if (s->kind == StmtKind::do_) test();
-  emit_to(Op::loop_back, 0, 0, 0, index, top);
-  const std::size_t end = emit_to(Op::loop_end, 0, b.exit);
-  for (const std::size_t t : tests) out_.program.code[t].imm = static_cast<std::uint32_t>(end);
-  breakables_.pop_back();
   --frames_.back().nesting;
   uniform_ = was_uniform && !frames_.back().returned;
 }
@@ -243,7 +259,8 @@ void Lowerer::return_statement(const Stmt* s) {
   if (s->expr) v = expr(s->expr);  // may inline calls, which grow frames_: look at the frame after
   Frame& f = frames_.back();
   if (f.nesting == 0 && !f.result_group) {  // the last return, on every live lane: the value is the result
-    if (s->expr) f.result = stable(v);
+    // A variable of the function itself ends with it, so it can be the result uncopied.
+    if (s->expr) f.result = own(v, f) ? v : stable(v);
     terminated_ = true;
     return;
   }
@@ -256,6 +273,13 @@ void Lowerer::return_statement(const Stmt* s) {
   leave(f.returns);
   f.returned = true;
   uniform_ = false;
+}
+
+// Whether every slot of `v` is a variable of frame `f` (which no code sees once the function returns).
+bool Lowerer::own(const Value& v, const Frame& f) const {
+  for (const Slot s : v.s)
+    if (std::find(f.locals.begin(), f.locals.end(), out_.group_of[s]) == f.locals.end()) return false;
+  return !v.s.empty();
 }
 
 // Runs `f`'s body in `frame`: the lanes that return early rejoin at its end.
@@ -284,28 +308,56 @@ void Lowerer::function_body(const FunctionDecl* f, Frame& frame) {
         constant_value(ret, std::vector<std::uint32_t>(static_cast<std::size_t>(ret.slots()), 0u), false);
 }
 
+// Whether an out argument's place is a variable of the calling function, whole, that no other out argument
+// of the call names (`taken`: the groups they name): then the parameter can be that variable, as copying
+// in and out gives the same values when no other code can see it while the callee runs.
+bool Lowerer::whole_local(const Place& p, std::vector<std::uint32_t>& taken) {
+  if (p.dynamic || p.slots.empty()) return false;
+  const std::uint32_t g = out_.group_of[p.slots[0]];
+  const bool named = std::find(taken.begin(), taken.end(), g) != taken.end();
+  taken.push_back(g);
+  if (named || p.slots.size() != out_.group_size[g] || p.slots[0] != out_.group_first[g]) return false;
+  for (std::size_t k = 0; k < p.slots.size(); ++k)
+    if (p.slots[k] != p.slots[0] + k) return false;
+  const std::vector<std::uint32_t>& locals = frames_.back().locals;
+  return std::find(locals.begin(), locals.end(), g) != locals.end();
+}
+
 Value Lowerer::call(const Expr* e) {
   const Function* fn = e->function;
   Frame frame;
   frame.function = fn;
   std::vector<std::pair<Place, Value>> copy_back;
+  std::vector<std::uint32_t> taken;  // groups out arguments name
   for (std::size_t i = 0; i < e->args.size(); ++i) {
     const Variable* param = fn->parameters[i];
     const Qualifier q = fn->qualifiers[i];
     Value bound;
     if (q == Qualifier::out || q == Qualifier::inout) {
       const Place p = place(e->args[i]);
+      if (whole_local(p, taken)) {  // the caller's own variable: the callee writes it where it is
+        frame.vars[param] = Value{param->type, p.slots};
+        frame.locals.push_back(out_.group_of[p.slots[0]]);  // no one else sees it while the callee runs
+        continue;
+      }
       bound = fresh(param->type);
       const Value in = q == Qualifier::inout ? read(p) : Value{};
       for (std::size_t k = 0; k < bound.s.size(); ++k)
         emit_to(Op::mov, bound.s[k], q == Qualifier::inout ? in.s[k] : constant(0));
       copy_back.emplace_back(p, bound);
+      mutable_group_[out_.group_of[bound.s[0]]] = true;
+      frame.locals.push_back(out_.group_of[bound.s[0]]);
+      frame.vars[param] = bound;
+      continue;
     } else {
       const Value a = expr(e->args[i]);
       bound = param->written ? contiguous_copy(a) : stable(a);
       bound.channel = a.channel;
     }
-    if (param->written && !bound.s.empty()) mutable_group_[out_.group_of[bound.s[0]]] = true;
+    if (param->written && !bound.s.empty()) {
+      mutable_group_[out_.group_of[bound.s[0]]] = true;
+      frame.locals.push_back(out_.group_of[bound.s[0]]);
+    }
     frame.vars[param] = bound;
   }
   function_body(fn->definition, frame);

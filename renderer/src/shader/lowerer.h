@@ -96,10 +96,12 @@ class Lowerer {
   void declaration(const Declaration* d);
   void if_statement(const Stmt* s);
   void loop(const Stmt* s);
+  bool unrolled(const Stmt* s);
   void switch_statement(const Stmt* s);
   void return_statement(const Stmt* s);
   void leave(Slot accumulator);
   Value call(const Expr* e);
+  bool whole_local(const Place& p, std::vector<std::uint32_t>& taken);
   std::size_t patch_target() const { return out_.program.code.size(); }
 
   struct Frame {
@@ -110,8 +112,14 @@ class Lowerer {
     Slot returns = 0;           ///< lanes that returned early (0: none can)
     int nesting = 0;            ///< control structures open inside this function
     bool returned = false;      ///< some lanes have returned early: later stores need the mask
+    std::vector<std::uint32_t> locals;  ///< groups of its own variables (no other frame can see them)
   };
   void function_body(const FunctionDecl* f, Frame& frame);
+  bool own(const Value& v, const Frame& f) const;
+  bool predicable(const Stmt* s) const;
+  bool static_place(const Expr* e) const;
+  bool leave_if(const Stmt* s, Slot condition);
+  void predicated_if(const Stmt* s, Slot condition);
 
   struct Breakable {
     Slot exit = 0;    ///< lanes that left by break
@@ -128,6 +136,7 @@ class Lowerer {
   std::unordered_map<std::uint32_t, Slot> constants_;
   std::vector<bool> mutable_group_;  ///< per group: a variable's slots that assignments change
   bool uniform_ = true;      ///< exec holds every lane that will read what is stored: stores need no mask
+  Slot predicate_ = 0;       ///< in a predicated if's branch: its condition, which every assignment obeys
   bool terminated_ = false;  ///< the current function returned on every live lane: the rest is dead
   bool failed_ = false;
   std::size_t work_ = 0;  ///< expressions and statements lowered, against the instruction limit

@@ -39,7 +39,8 @@ void Preprocessor::define(const std::vector<Token>& line, SourcePos at) {
     m.function_like = true;
     ++i;
     for (bool first = true; i < line.size() && !line[i].is(Punct::rparen); first = false) {
-      if (!first && !line[i++].is(Punct::comma)) break;
+      if (!first && !line[i].is(Punct::comma)) break;  // `(a b)`: reported below
+      if (!first) ++i;
       if (i >= line.size() || line[i].kind != TokenKind::identifier)
         return diagnostics_.error(
             at, std::string("#define ") + quote(name.text) + ": a parameter must be a name");

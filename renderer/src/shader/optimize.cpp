@@ -1,7 +1,9 @@
 #include "shader/optimize.h"
 
 #include <algorithm>
+#include <map>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 #include "shader/engine.h"
@@ -65,6 +67,10 @@ Arity arity(Op op) {
     case Op::fsmoothstep:
     case Op::iclamp:
     case Op::uclamp:
+    case Op::fmuladd:
+    case Op::fmulsub:
+    case Op::fnmuladd:
+    case Op::imuladd:
       return Arity::three;
     default:
       return op >= Op::fadd && op <= Op::pack_half ? Arity::two : Arity::other;
@@ -99,11 +105,13 @@ unsigned read_fields(const Instr& in) {
     case Op::mask_or:
     case Op::loop_end:
     case Op::loop_test:
+    case Op::leave_if:
     case Op::tex_size:
       return 1;
     case Op::load_index:
       return 2;
     case Op::store_index:
+    case Op::store_if:
     case Op::if_else:
     case Op::if_merge:
     case Op::mask_or_and:
@@ -120,6 +128,20 @@ unsigned read_fields(const Instr& in) {
   }
 }
 
+// Groups whose slots are read or written together, not one by one: arrays indexed at run time, texture
+// gradients, and the results of instructions that write several slots.
+std::vector<bool> whole_groups(const Lowered& l) {
+  std::vector<bool> whole(l.group_first.size(), false);
+  for (const Instr& in : l.program.code) {
+    if (in.op == Op::load_index) whole[l.group_of[in.a]] = true;
+    if (in.op == Op::store_index) whole[l.group_of[in.d]] = true;
+    if (in.op == Op::tex_sample && in.flags == static_cast<std::uint8_t>(TexMode::grad))
+      whole[l.group_of[in.c]] = true;
+    if (in.op == Op::tex_sample || in.op == Op::tex_fetch || unpacks(in.op)) whole[l.group_of[in.d]] = true;
+  }
+  return whole;
+}
+
 struct Groups {
   Lowered& l;
   std::uint32_t of(Slot s) const { return l.group_of[s]; }
@@ -134,7 +156,49 @@ struct Groups {
   }
 };
 
-// 1 and 2: constants folded, then values of constants and uniforms moved to the prologue.
+// NIR's identities, which llvmpipe applies too: x + 0 and x - 0 are x, x * 1 is x, x * 0 is 0 (for every
+// x: Mesa's rule, followed so the bits agree). The slot the result equals, or kUnusedSlot.
+Slot identity(const Instr& in, const std::vector<bool>& known, const std::vector<std::uint32_t>& bits) {
+  const auto is = [&](Slot s, std::uint32_t v) { return known[s] && bits[s] == v; };
+  constexpr std::uint32_t kZero = 0, kOne = 0x3f800000u;
+  switch (in.op) {
+    case Op::fadd:
+      return is(in.b, kZero) ? in.a : is(in.a, kZero) ? in.b : kUnusedSlot;
+    case Op::fsub:
+      return is(in.b, kZero) ? in.a : kUnusedSlot;
+    case Op::fmul:
+      return is(in.b, kOne)    ? in.a
+             : is(in.a, kOne)  ? in.b
+             : is(in.b, kZero) ? in.b
+             : is(in.a, kZero) ? in.a
+                               : kUnusedSlot;
+    case Op::iadd:
+      return is(in.b, 0) ? in.a : is(in.a, 0) ? in.b : kUnusedSlot;
+    case Op::imul:
+      return is(in.b, 1) ? in.a : is(in.a, 1) ? in.b : kUnusedSlot;
+    default:
+      return kUnusedSlot;
+  }
+}
+
+// Common subexpressions in a run of straight-line code: the same operation of the same unchanging slots
+// computed twice. Keys are (op, flags, a, b, c, imm), a and b ordered for the operations that commute
+// exactly.
+struct Expressions {
+  std::map<std::tuple<Op, std::uint8_t, Slot, Slot, Slot, std::uint32_t>, Slot> seen;
+  Slot find_or_add(const Instr& in) {
+    Slot a = in.a, b = in.b;
+    const bool commutes = in.op == Op::fadd || in.op == Op::fmul || in.op == Op::iadd || in.op == Op::imul ||
+                          in.op == Op::band || in.op == Op::bor || in.op == Op::bxor || in.op == Op::feq ||
+                          in.op == Op::ieq || in.op == Op::ine;
+    if (commutes && b < a) std::swap(a, b);
+    const auto [it, added] = seen.try_emplace({in.op, in.flags, a, b, in.c, in.imm}, in.d);
+    return added ? kUnusedSlot : it->second;
+  }
+};
+
+// 1 and 2: constants folded, then values of constants and uniforms moved to the prologue; on the way,
+// identities and common subexpressions of unchanging values replaced by what they equal.
 void fold_and_hoist(Lowered& l, std::vector<bool>& removed) {
   Program& p = l.program;
   Groups groups{l};
@@ -161,41 +225,50 @@ void fold_and_hoist(Lowered& l, std::vector<bool>& removed) {
     if (fields & 4) in.c = replace[in.c];
   };
   // Slots read or written as a whole group (run-time indices, texture gradients) keep their instructions.
-  std::vector<bool> whole(l.group_first.size(), false);
-  for (const Instr& in : p.code) {
-    if (in.op == Op::load_index) whole[groups.of(in.a)] = true;
-    if (in.op == Op::store_index) whole[groups.of(in.d)] = true;
-    if (in.op == Op::tex_sample && in.flags == static_cast<std::uint8_t>(TexMode::grad))
-      whole[groups.of(in.c)] = true;
-  }
+  const std::vector<bool> whole = whole_groups(l);
+  Expressions expressions;
+  // The result of an operation of constants becomes a constant slot (one a value), which its readers read.
+  const auto fold = [&](const Instr& in, const Operands& o, std::vector<bool>::reference gone) {
+    const std::vector<std::uint32_t> v = evaluate_instruction(in, bits[in.a], bits[in.b], bits[in.c]);
+    for (int k = 0; k < o.write_count; ++k) {
+      auto it = canonical.find(v[static_cast<std::size_t>(k)]);
+      if (it == canonical.end()) {
+        const Slot c = groups.add(true);
+        defs.push_back(0), known.push_back(true), invariant.push_back(true),
+            bits.push_back(v[static_cast<std::size_t>(k)]);
+        replace.push_back(c);
+        p.constants.emplace_back(c, v[static_cast<std::size_t>(k)]);
+        it = canonical.emplace(v[static_cast<std::size_t>(k)], c).first;
+      }
+      replace[o.writes[k]] = it->second;
+    }
+    gone = true;
+  };
   for (std::size_t i = 0; i < p.code.size(); ++i) {
     Instr& in = p.code[i];
     substitute(in);
+    if (in.op >= Op::if_begin) expressions.seen.clear();  // a new run of straight-line code
     if (!computable(in.op)) continue;
     const Operands o = operands(in);
-    bool single = true, all_known = true, all_invariant = true;
+    bool single = true, all_known = true, all_invariant = true, fixed = true;
     for (int k = 0; k < o.write_count; ++k)
       single &= defs[o.writes[k]] == 1 && !whole[groups.of(o.writes[k])];
     for (int k = 0; k < o.read_count; ++k)
-      all_known &= known[o.reads[k]], all_invariant &= invariant[o.reads[k]];
-    if (!single || !all_invariant) continue;
-    if (all_known) {  // fold: the result becomes a constant, and its readers read the constant
-      const std::vector<std::uint32_t> v = evaluate_instruction(in, bits[in.a], bits[in.b], bits[in.c]);
-      for (int k = 0; k < o.write_count; ++k) {
-        auto it = canonical.find(v[static_cast<std::size_t>(k)]);
-        if (it == canonical.end()) {
-          const Slot c = groups.add(true);
-          defs.push_back(0), known.push_back(true), invariant.push_back(true),
-              bits.push_back(v[static_cast<std::size_t>(k)]);
-          replace.push_back(c);
-          p.constants.emplace_back(c, v[static_cast<std::size_t>(k)]);
-          it = canonical.emplace(v[static_cast<std::size_t>(k)], c).first;
-        }
-        replace[o.writes[k]] = it->second;
-      }
+      all_known &= known[o.reads[k]], all_invariant &= invariant[o.reads[k]], fixed &= defs[o.reads[k]] <= 1;
+    const bool replaceable = single && fixed && o.write_count == 1;
+    Slot same = replaceable ? identity(in, known, bits) : kUnusedSlot;
+    if (same == kUnusedSlot && single && all_known) {  // fold: a constant, which its readers read
+      fold(in, o, removed[i]);
+      continue;
+    }
+    // Not before folding: a folded instruction is gone, and its slot with it.
+    if (same == kUnusedSlot && replaceable) same = expressions.find_or_add(in);
+    if (same != kUnusedSlot) {
+      replace[in.d] = same;
       removed[i] = true;
       continue;
     }
+    if (!single || !all_invariant) continue;
     // hoist: computed once per render, its result never overwritten by a block.
     p.prologue.push_back(in);
     removed[i] = true;
@@ -221,7 +294,8 @@ void remove_dead(Lowered& l, std::vector<bool>& removed, std::vector<bool>& prol
   for (const Instr& in : p.prologue) count(in, 1);
   for (const std::uint32_t g : forced) reads[g] += 1;
   const auto dead = [&](const Instr& in) {
-    if (!is_pure(in.op) && in.op != Op::store && in.op != Op::store_index) return false;
+    if (!is_pure(in.op) && in.op != Op::store && in.op != Op::store_if && in.op != Op::store_index)
+      return false;
     const Operands o = operands(in);
     for (int k = 0; k < o.write_count; ++k)
       if (reads[l.group_of[o.writes[k]]] > 0) return false;
@@ -236,6 +310,8 @@ void remove_dead(Lowered& l, std::vector<bool>& removed, std::vector<bool>& prol
         prologue_removed[i] = true, count(p.prologue[i], -1), changed = true;
   }
 }
+
+}  // namespace
 
 // The code without removed instructions, jumps moved to their targets' new places.
 std::vector<Instr> compact(const std::vector<Instr>& code, const std::vector<bool>& removed) {
@@ -257,10 +333,8 @@ std::vector<Instr> compact(const std::vector<Instr>& code, const std::vector<boo
   return out;
 }
 
-}  // namespace
-
 bool is_pure(Op op) {
-  return op < Op::if_begin && op != Op::store && op != Op::store_index;
+  return op < Op::if_begin && op != Op::store && op != Op::store_if && op != Op::store_index;
 }
 
 Operands operands(const Instr& in) {
@@ -284,6 +358,9 @@ Operands operands(const Instr& in) {
   switch (in.op) {
     case Op::store:
       w(in.d), r(in.a);
+      break;
+    case Op::store_if:
+      w(in.d), r(in.a), r(in.b);
       break;
     case Op::load_index:
       w(in.d), r(in.a), r(in.b), o.reads_group = true;
@@ -327,6 +404,7 @@ Operands operands(const Instr& in) {
       w(in.d);
       break;
     case Op::loop_test:
+    case Op::leave_if:
       w(in.d), r(in.a);
       break;
     default:
@@ -336,6 +414,21 @@ Operands operands(const Instr& in) {
 }
 
 bool pack_slots(Lowered& l, std::size_t max_slots, Program& out, Diagnostics& diagnostics);
+void fuse_multiplies(Lowered& l);
+void remove_dead_stores(Lowered& l);
+void coalesce_copies(Lowered& l, const std::vector<bool>& keep);
+
+// Slots whose writing instruction must stay where it is: pinned ones (inputs, uniforms, constants, the
+// prologue's values), the output, and groups read or written as a whole.
+std::vector<bool> keep_slots(const Lowered& l) {
+  const std::vector<bool> whole = whole_groups(l);
+  std::vector<bool> keep(l.group_of.size(), false);
+  for (Slot s = 0; s < keep.size(); ++s) {
+    const std::uint32_t g = l.group_of[s];
+    keep[s] = l.pinned[g] || whole[g] || (l.program.output_slots > 0 && g == l.group_of[l.program.output]);
+  }
+  return keep;
+}
 
 bool optimize(Lowered& l, std::size_t max_slots, Program& out, Diagnostics& diagnostics) {
   Program& p = l.program;
@@ -347,6 +440,14 @@ bool optimize(Lowered& l, std::size_t max_slots, Program& out, Diagnostics& diag
   remove_dead(l, removed, prologue_removed, forced);
   p.code = compact(p.code, removed);
   p.prologue = compact(p.prologue, prologue_removed);
+  remove_dead_stores(l);
+  // What the dead stores read may be dead now too.
+  removed.assign(p.code.size(), false), prologue_removed.assign(p.prologue.size(), false);
+  remove_dead(l, removed, prologue_removed, forced);
+  p.code = compact(p.code, removed);
+  p.prologue = compact(p.prologue, prologue_removed);
+  coalesce_copies(l, keep_slots(l));
+  fuse_multiplies(l);
   return pack_slots(l, max_slots, out, diagnostics);
 }
 

@@ -2,7 +2,8 @@
 //  1. fold: an operation of constants is computed now (by the engine itself, so it is the same value);
 //  2. hoist: an operation of constants and uniforms moves to the prologue, run once per render and thread;
 //  3. dead code: what nothing reads is dropped;
-//  4. pack: virtual slots get physical ones, reused once a value is dead (a loop keeps alive what crosses
+//  4. fuse: a multiply into the add or subtract that alone uses it (optimize_fuse.cpp);
+//  5. pack: virtual slots get physical ones, reused once a value is dead (a loop keeps alive what crosses
 //     its back-edge), each group contiguous as dynamic indexing needs.
 #pragma once
 
@@ -29,5 +30,8 @@ Operands operands(const Instr& in);
 
 /// Whether an instruction only computes its result from its operands (no mask, no jump, no side effect).
 bool is_pure(Op op);
+
+/// The code without the `removed` instructions, every jump moved to its target's new place.
+std::vector<Instr> compact(const std::vector<Instr>& code, const std::vector<bool>& removed);
 
 }  // namespace raster::shader

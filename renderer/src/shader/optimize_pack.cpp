@@ -24,6 +24,7 @@ unsigned slot_fields(const Instr& in) {
       return 1 | 2;
     case Op::if_begin:
     case Op::loop_test:
+    case Op::leave_if:
       return 1 | 2;
     case Op::if_else:
       return 1 | 2 | 4;

@@ -201,17 +201,19 @@ Expr* Parser::postfix() {
   return e;
 }
 
+// `(a, b, ...)`, `()` or `(void)`: an argument after every comma.
 Expr* Parser::call_arguments(Expr* call) {
   advance();  // `(`
   if (at_word("void") && peek(1).is(Punct::rparen)) advance();
-  while (!at(Punct::rparen)) {
+  if (accept(Punct::rparen)) return call;
+  do {
     Expr* a = assignment();
     if (!a) return nullptr;
     call->args.push_back(a);
-    if (!at(Punct::rparen) && !expect(Punct::comma, "between arguments")) return nullptr;
-  }
-  advance();  // `)`
-  return call;
+  } while (accept(Punct::comma));
+  if (accept(Punct::rparen)) return call;
+  error_at_token(std::string("expected ',' or ')' after an argument, found ") + describe(peek()));
+  return nullptr;
 }
 
 Expr* Parser::primary() {

@@ -23,7 +23,7 @@ Stmt* Parser::statement() {
     if (t.text == "return") {
       advance();
       s->kind = StmtKind::return_;
-      if (!at(Punct::semicolon)) s->expr = expression();
+      if (!at(Punct::semicolon)) s->expr = expression(), s->broken = !s->expr;
       if (!expect(Punct::semicolon, "after return")) skip_to_statement_end();
       return s;
     }
@@ -31,6 +31,7 @@ Stmt* Parser::statement() {
       advance();
       s->kind = StmtKind::case_;
       s->expr = expression();
+      s->broken = !s->expr;
       if (!expect(Punct::colon, "after a case label")) skip_to_statement_end();
       return s;
     }

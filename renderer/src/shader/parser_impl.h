@@ -1,5 +1,5 @@
-// The parser's state, shared by its halves: declarations and statements (parser.cpp) and expressions
-// (parse_expr.cpp). Private to them.
+// The parser's state, shared by its parts: tokens and names (parser.cpp), declarations (parse_decl.cpp),
+// statements (parse_stmt.cpp) and expressions (parse_expr.cpp). Private to them.
 #pragma once
 
 #include <string>
@@ -43,19 +43,25 @@ class Parser {
   void open_scope() { type_scopes_.emplace_back(); }
   void close_scope() { type_scopes_.pop_back(); }
 
-  // Declarations (parser.cpp).
+  // Declarations (parse_decl.cpp).
   bool declaration_ahead() const;
   TypeSpec* type_spec();
+  Precision precision_qualifier();
   StructDecl* struct_body();
+  bool fields(StructDecl* s);
   bool array_suffix(bool& array, Expr*& size);
   void qualifiers(Declaration& d);
+  bool qualifier_in_order(const Token& t, int rank, int& last, bool& layout_seen);
+  void layout(std::vector<LayoutId>& ids);
   void external();
+  void interface_block(Declaration* d, External& e);
   void function_rest(TypeSpec* ret, std::string_view name, SourcePos pos);
   bool parameter(ParamDecl& p);
   Declaration* declaration_rest(Declaration* d, std::string_view first, SourcePos first_pos);
   Stmt* declaration_statement();
+  Stmt* precision_statement(Stmt* s);
 
-  // Statements (parser.cpp).
+  // Statements (parse_stmt.cpp).
   Stmt* statement();
   Stmt* block(bool scope);
   Stmt* if_statement();
@@ -83,7 +89,8 @@ class Parser {
   bool fatal_ = false;  ///< nesting past the limit: the rest is not parsed
   Ast& ast_;
   Diagnostics& diagnostics_;
-  std::vector<std::vector<std::string_view>> type_scopes_{{}};  ///< struct names visible here
+  /// Struct names visible here; the outermost scope holds the built-in one, gl_DepthRangeParameters.
+  std::vector<std::vector<std::string_view>> type_scopes_{{"gl_DepthRangeParameters"}};
   SourcePos last_error_;
 };
 

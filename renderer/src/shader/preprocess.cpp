@@ -8,23 +8,33 @@
 namespace raster::shader {
 namespace {
 
-// #if's integer expressions (section 3.4), by precedence climbing over the expanded line, in 64 bits and
-// wrapped to 32 as GLSL's int is.
-class IfExpression {
+// The integer expressions of #if and #line (section 3.4), by precedence climbing over the expanded line, in
+// 64 bits and wrapped to 32 as GLSL's int is. A name that is not a macro is an error, except in an operand
+// && or || does not evaluate (`#if 1 || NOT_DEFINED`), as glslang has it.
+class IntExpression {
  public:
-  IfExpression(const std::vector<Token>& tokens, Diagnostics& diagnostics, SourcePos at)
-      : tokens_(tokens), diagnostics_(diagnostics), at_(at) {}
+  IntExpression(const std::vector<Token>& tokens, std::string_view directive, Diagnostics& diagnostics,
+                SourcePos at)
+      : tokens_(tokens), directive_(directive), diagnostics_(diagnostics), at_(at) {}
 
+  /// #if's value: one expression, the whole line.
   bool evaluate() {
-    const std::int64_t value = binary(0);
-    if (!failed_ && i_ < tokens_.size())
-      fail(tokens_[i_].pos, std::string("unexpected ") + describe(tokens_[i_]));
-    if (failed_) return false;
-    return value != 0;
+    std::int64_t value = 0;
+    if (!next(value)) return false;
+    if (!done()) fail(tokens_[i_].pos, std::string("unexpected ") + describe(tokens_[i_]));
+    return !failed_ && value != 0;
   }
+  /// The next expression of the line into `value`; false (reported) if it is not one.
+  bool next(std::int64_t& value) {
+    value = binary(0);
+    return !failed_;
+  }
+  bool done() const { return i_ >= tokens_.size(); }
 
  private:
-  static std::string describe(const Token& t) { return std::string("'") + quote(t.text) + "' in #if"; }
+  std::string describe(const Token& t) const {
+    return std::string("'") + quote(t.text) + "' in #" + std::string(directive_);
+  }
   void fail(SourcePos pos, std::string message) {
     if (!failed_) diagnostics_.error(pos, std::move(message));
     failed_ = true;
@@ -105,7 +115,7 @@ class IfExpression {
         return wrap(a * b);
       default:
         if (b == 0) {
-          fail(pos, "division by zero in #if");
+          fail(pos, std::string("division by zero in #").append(directive_));
           return 0;
         }
         return wrap(p == Punct::slash ? a / b : a % b);
@@ -119,7 +129,10 @@ class IfExpression {
       const int s = strength(p);
       if (s == 0 || s <= min_strength) break;
       const SourcePos pos = tokens_[i_++].pos;
+      const bool skip = (p == Punct::and_and && left == 0) || (p == Punct::or_or && left != 0);
+      unevaluated_ += skip;
       const std::int64_t right = binary(s);
+      unevaluated_ -= skip;
       left = apply(p, left, right, pos);
     }
     return left;
@@ -127,7 +140,7 @@ class IfExpression {
 
   std::int64_t unary() {
     if (i_ >= tokens_.size()) {
-      fail(at_, "#if ends where a value was expected");
+      fail(at_, std::string("#").append(directive_) + " ends where a value was expected");
       return 0;
     }
     const Token& t = tokens_[i_++];
@@ -140,23 +153,25 @@ class IfExpression {
       if (i_ < tokens_.size() && tokens_[i_].is(Punct::rparen)) {
         ++i_;
       } else {
-        fail(t.pos, "'(' without ')' in #if");
+        fail(t.pos, std::string("'(' without ')' in #").append(directive_));
       }
       return v;
     }
     if (t.kind == TokenKind::number) return number(t);
     if (t.kind == TokenKind::identifier) {
-      fail(t.pos,
-           std::string("'") + quote(t.text) + "' is not a macro: #if allows only defined macros in GLSL ES");
+      if (unevaluated_ == 0)
+        fail(t.pos, std::string("'") + quote(t.text) + "' is not a macro: #" + std::string(directive_) +
+                        " allows only defined macros in GLSL ES");
     } else {
       fail(t.pos, std::string("unexpected ") + describe(t));
     }
     return 0;
   }
 
+  // An int literal: decimal, octal or hex. A `u` suffix is not taken (section 3.4 speaks of integer
+  // constants, and glslang reads only int ones).
   std::int64_t number(const Token& t) {
     std::string_view text = t.text;
-    if (!text.empty() && (text.back() == 'u' || text.back() == 'U')) text.remove_suffix(1);
     int base = 10;
     if (text.size() > 1 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
       base = 16, text.remove_prefix(2);
@@ -166,16 +181,19 @@ class IfExpression {
     std::uint64_t v = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v, base);
     if (ec != std::errc{} || end != text.data() + text.size() || v > 0xffffffffu) {
-      fail(t.pos, std::string("'") + quote(t.text) + "' is not an integer #if can use");
+      fail(t.pos,
+           std::string("'") + quote(t.text) + "' is not an integer #" + std::string(directive_) + " can use");
       return 0;
     }
     return wrap(static_cast<std::int64_t>(v));
   }
 
   const std::vector<Token>& tokens_;
+  std::string_view directive_;  ///< "if" or "line", for messages
   Diagnostics& diagnostics_;
   SourcePos at_;
   std::size_t i_ = 0;
+  int unevaluated_ = 0;  ///< inside operands && and || skip
   bool failed_ = false;
 };
 
@@ -238,7 +256,7 @@ std::vector<Token> Preprocessor::run() {
       continue;
     }
     if (!taking()) continue;
-    seen_anything_ = true;
+    seen_anything_ = seen_token_ = true;
     if (t.kind == TokenKind::identifier && expand(t, main_)) continue;
     if (!count(1, t.pos)) break;
     out.push_back(t);
@@ -262,6 +280,7 @@ bool Preprocessor::count(std::size_t tokens, SourcePos at) {
 void Preprocessor::fatal(SourcePos at, std::string message) {
   if (!fatal_) diagnostics_.error(at, std::move(message));
   fatal_ = true;
+  diagnostics_.stop();
 }
 
 void Preprocessor::directive() {
@@ -281,7 +300,7 @@ void Preprocessor::directive() {
   if (d == "undef") return undef(line, name.pos);
   if (d == "line") return line_directive(line, name.pos);
   if (d == "extension") return extension(line, name.pos);
-  if (d == "pragma") return;  // optimize, debug, STDGL: nothing rasterd does depends on them
+  if (d == "pragma") return pragma(line);
   if (d == "error") {
     std::string message = "#error";
     for (std::size_t i = 1; i < line.size(); ++i) {
@@ -408,23 +427,30 @@ bool Preprocessor::evaluate(std::vector<Token> line, SourcePos at) {
   }
   const std::vector<Token> expanded = expand_all(std::move(resolved));
   if (fatal_) return false;
-  return IfExpression(expanded, diagnostics_, at).evaluate();
+  return IntExpression(expanded, "if", diagnostics_, at).evaluate();
 }
 
+// `#line line` or `#line line string`, each a constant integer expression after macro expansion.
 void Preprocessor::line_directive(const std::vector<Token>& line, SourcePos at) {
   const std::vector<Token> expanded = expand_all(std::vector<Token>(line.begin() + 1, line.end()));
-  int values[2] = {0, lexer_.position().string};
-  std::size_t n = 0;
-  for (const Token& t : expanded) {
-    int v = 0;
-    const auto [end, ec] = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
-    if (t.kind != TokenKind::number || ec != std::errc{} || end != t.text.data() + t.text.size() || v < 0 ||
-        n >= 2)
-      return diagnostics_.error(at, "#line needs a line number and, optionally, a source string number");
-    values[n++] = v;
-  }
-  if (n == 0) return diagnostics_.error(at, "#line needs a line number");
-  lexer_.renumber(values[0], values[1]);
+  if (expanded.empty()) return diagnostics_.error(at, "#line needs a line number");
+  IntExpression e(expanded, "line", diagnostics_, at);
+  std::int64_t values[2] = {0, lexer_.position().string};
+  for (std::size_t n = 0; n < 2 && !e.done(); ++n)
+    if (!e.next(values[n])) return;
+  if (!e.done() || values[0] < 0 || values[1] < 0)
+    return diagnostics_.error(at, "#line needs a line number and, optionally, a source string number");
+  lexer_.renumber(static_cast<int>(values[0]), static_cast<int>(values[1]));
+}
+
+// Nothing rasterd does depends on a pragma (section 3.4: an unknown one is ignored), but the two the spec
+// defines are written `optimize(on|off)` and `debug(on|off)`, and glslang holds them to that shape.
+void Preprocessor::pragma(const std::vector<Token>& line) {
+  const std::string_view name = line.size() > 1 ? line[1].text : std::string_view{};
+  if (name != "optimize" && name != "debug") return;
+  if (line.size() != 5 || !line[2].is(Punct::lparen) || !line[4].is(Punct::rparen))
+    diagnostics_.error(line[1].pos, std::string("#pragma ") + std::string(name) + " is written " +
+                                        std::string(name) + "(on) or " + std::string(name) + "(off)");
 }
 
 void Preprocessor::extension(const std::vector<Token>& line, SourcePos at) {
@@ -437,7 +463,14 @@ void Preprocessor::extension(const std::vector<Token>& line, SourcePos at) {
     return diagnostics_.error(line[3].pos, "#extension all can only warn or disable");
   // No extension is supported: asking for one by name is an error only when it is required.
   if (behavior == "require" && line[1].text != "all")
-    diagnostics_.error(line[1].pos, std::string("extension '") + quote(line[1].text) + "' is not supported");
+    return diagnostics_.error(line[1].pos,
+                              std::string("extension '") + quote(line[1].text) + "' is not supported");
+  // Section 3.4 (and ANGLE, which runs ShaderToy's programs; glslang does not check it): so never in a
+  // ShaderToy program, after the prelude's uniforms.
+  if (seen_token_)
+    diagnostics_.error(at,
+                       "#extension must come before everything but other directives (a ShaderToy program "
+                       "follows the declarations of ShaderToy's uniforms, so it cannot use #extension)");
 }
 
 }  // namespace raster::shader

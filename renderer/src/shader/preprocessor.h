@@ -45,6 +45,7 @@ class Preprocessor {
   void conditional(std::string_view name, const std::vector<Token>& line, SourcePos at);
   void line_directive(const std::vector<Token>& line, SourcePos at);
   void extension(const std::vector<Token>& line, SourcePos at);
+  void pragma(const std::vector<Token>& line);
   void version(const std::vector<Token>& line, SourcePos at);
   bool evaluate(std::vector<Token> line, SourcePos at);
   bool taking() const { return conditionals_.empty() || conditionals_.back().taking; }
@@ -84,6 +85,7 @@ class Preprocessor {
   int depth_ = 0;               ///< macro arguments being expanded inside each other
   bool fatal_ = false;          ///< a bound was reached: stop
   bool seen_anything_ = false;  ///< a token or directive came before (so #version is late)
+  bool seen_token_ = false;     ///< a token that is not a directive's came before (so #extension is late)
 };
 
 }  // namespace raster::shader

@@ -104,6 +104,9 @@ struct StructType {
   std::vector<Field> fields;
   SourcePos pos;
   int slots = 0;  ///< of one value, computed when the struct is declared
+  /// A uniform block's members (its instance is a value of this type): no constructor, no ==, indexed by
+  /// constants only, and its name is no type.
+  bool block = false;
   /// Slot offset of field i within the struct.
   int offset(std::size_t field) const;
 };

@@ -1,0 +1,165 @@
+// The passes over runs of straight-line code (between control operations, where every instruction that
+// runs runs after the one before it, for the same lanes):
+//  - dead stores: a slot written whole (not under a mask) and written whole again before anything reads it
+//    loses the first write (a variable's zero start, an output's, overwritten at once);
+//  - copies: `d = a` where a was computed once, in this run, for this copy alone, and d is untouched since,
+//    makes the computation write d (the chains of copies an assignment through an out parameter leaves);
+//  - fusing (optimize.h step 4): `t = a * b` whose one reader is `d = t + c`, `d = t - c` or `d = c - t`
+//    becomes one instruction computing a * b and then the add, each rounded as before, so the bits do not
+//    change; what goes is a dispatch, and a slot written and read again.
+#include "shader/optimize.h"
+
+namespace raster::shader {
+namespace {
+
+// The fused form of `add` when operand `first` (true: a, false: b) is the product; Op::mov for none.
+Op fused(Op add, bool first) {
+  switch (add) {
+    case Op::fadd:
+      return Op::fmuladd;
+    case Op::fsub:
+      return first ? Op::fmulsub : Op::fnmuladd;
+    case Op::iadd:
+      return Op::imuladd;
+    default:
+      return Op::mov;
+  }
+}
+
+bool ends_block(Op op) {
+  return op >= Op::if_begin;  // the control operations: masks change, jumps land
+}
+
+}  // namespace
+
+void remove_dead_stores(Lowered& l) {
+  Program& p = l.program;
+  // Per slot, the instruction that last wrote it whole with no read since (-1: none in this run).
+  std::vector<std::int64_t> unread(l.group_of.size(), -1);
+  std::vector<std::size_t> touched;
+  std::vector<bool> removed(p.code.size(), false);
+  const auto read_group = [&](Slot s) {
+    const std::uint32_t g = l.group_of[s];
+    for (std::uint32_t k = 0; k < l.group_size[g]; ++k) unread[l.group_first[g] + k] = -1;
+  };
+  for (std::size_t i = 0; i < p.code.size(); ++i) {
+    const Instr& in = p.code[i];
+    if (ends_block(in.op)) {
+      for (const std::size_t s : touched) unread[s] = -1;
+      touched.clear();
+      continue;
+    }
+    const Operands o = operands(in);
+    for (int k = 0; k < o.read_count; ++k) unread[o.reads[k]] = -1;
+    if (o.reads_group) read_group(in.a);
+    if (o.writes_group || in.op == Op::store ||
+        in.op == Op::store_if) {  // keeps the lanes or elements it does not write: a read
+      if (o.writes_group) read_group(in.d);
+      unread[in.d] = -1;
+      continue;
+    }
+    for (int k = 0; k < o.write_count; ++k) {
+      const Slot s = o.writes[k];
+      if (unread[s] >= 0 && o.write_count == 1) removed[static_cast<std::size_t>(unread[s])] = true;
+      unread[s] = o.write_count == 1 && is_pure(in.op) ? static_cast<std::int64_t>(i) : -1;
+      touched.push_back(s);
+    }
+  }
+  p.code = compact(p.code, removed);
+}
+
+void coalesce_copies(Lowered& l, const std::vector<bool>& keep) {
+  Program& p = l.program;
+  const std::size_t slots = l.group_of.size();
+  std::vector<int> reads(slots, 0), writes(slots, 0);
+  for (const Instr& in : p.code) {
+    const Operands o = operands(in);
+    for (int k = 0; k < o.read_count; ++k) ++reads[o.reads[k]];
+    for (int k = 0; k < o.write_count; ++k) ++writes[o.writes[k]];
+  }
+  for (const Instr& in : p.prologue) {
+    const Operands o = operands(in);
+    for (int k = 0; k < o.read_count; ++k) ++reads[o.reads[k]];
+  }
+  // In this run: where each slot was last read or written, and which instruction wrote it alone.
+  std::vector<std::int64_t> touched_at(slots, -1), single_writer(slots, -1);
+  std::vector<std::size_t> touched;
+  std::vector<bool> removed(p.code.size(), false);
+  for (std::size_t i = 0; i < p.code.size(); ++i) {
+    Instr& in = p.code[i];
+    if (ends_block(in.op)) {
+      for (const std::size_t s : touched) touched_at[s] = single_writer[s] = -1;
+      touched.clear();
+      continue;
+    }
+    if (in.op == Op::mov && single_writer[in.a] >= 0 && reads[in.a] == 1 && writes[in.a] == 1 &&
+        !keep[in.a] && touched_at[in.d] < single_writer[in.a]) {
+      const std::int64_t at = single_writer[in.a];
+      p.code[static_cast<std::size_t>(at)].d = in.d;
+      --reads[in.a], --writes[in.a];
+      removed[i] = true;
+      single_writer[in.d] = writes[in.d] == 1 ? at : -1;
+      touched_at[in.d] = at;
+      continue;
+    }
+    const Operands o = operands(in);
+    for (int k = 0; k < o.read_count; ++k)
+      touched_at[o.reads[k]] = static_cast<std::int64_t>(i), touched.push_back(o.reads[k]);
+    for (int k = 0; k < o.write_count; ++k) {
+      const Slot s = o.writes[k];
+      touched_at[s] = static_cast<std::int64_t>(i);
+      single_writer[s] =
+          o.write_count == 1 && is_pure(in.op) && !o.reads_group ? static_cast<std::int64_t>(i) : -1;
+      touched.push_back(s);
+    }
+  }
+  p.code = compact(p.code, removed);
+}
+
+void fuse_multiplies(Lowered& l) {
+  Program& p = l.program;
+  const std::size_t slots = l.group_of.size();
+  std::vector<int> reads(slots, 0), writes(slots, 0);
+  const auto count = [&](const Instr& in) {
+    const Operands o = operands(in);
+    for (int k = 0; k < o.read_count; ++k) ++reads[o.reads[k]];
+    for (int k = 0; k < o.write_count; ++k) ++writes[o.writes[k]];
+    if (o.reads_group || o.writes_group) ++reads[in.a], ++reads[in.d];  // whole groups: never fused away
+  };
+  for (const Instr& in : p.code) count(in);
+  for (const Instr& in : p.prologue) count(in);
+  // Per slot, the instruction of this block that last wrote it (-1: none since the block began) and, for a
+  // product that may be fused, the multiply's index.
+  std::vector<std::int64_t> written(slots, -1), product(slots, -1);
+  std::vector<std::size_t> touched;
+  std::vector<bool> removed(p.code.size(), false);
+  for (std::size_t i = 0; i < p.code.size(); ++i) {
+    Instr& in = p.code[i];
+    if (ends_block(in.op) || in.op == Op::store_index) {
+      for (const std::size_t s : touched) written[s] = product[s] = -1;
+      touched.clear();
+    }
+    for (const bool first : {true, false}) {
+      const Slot t = first ? in.a : in.b;
+      const Op op = fused(in.op, first);
+      if (op == Op::mov || product[t] < 0 || reads[t] != 1 || writes[t] != 1) continue;
+      const Instr& m = p.code[static_cast<std::size_t>(product[t])];
+      // Its factors must still hold what the multiply read.
+      if (written[m.a] > product[t] || written[m.b] > product[t]) continue;
+      const Slot other = first ? in.b : in.a;
+      in = Instr{op, 0, 0, in.d, m.a, m.b, other, 0};
+      removed[static_cast<std::size_t>(product[t])] = true;
+      break;
+    }
+    const Operands o = operands(in);
+    for (int k = 0; k < o.write_count; ++k) {
+      written[o.writes[k]] = static_cast<std::int64_t>(i), product[o.writes[k]] = -1;
+      touched.push_back(o.writes[k]);
+    }
+    if ((in.op == Op::fmul || in.op == Op::imul) && o.write_count == 1)
+      product[in.d] = static_cast<std::int64_t>(i);
+  }
+  p.code = compact(p.code, removed);
+}
+
+}  // namespace raster::shader
