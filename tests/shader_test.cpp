@@ -272,6 +272,48 @@ TEST(Shader, CountedLoopsAreWrittenOutWithTheLoopsValues) {
   }
 }
 
+// Values followed through variables written many times (a written-out loop's running product here) fold
+// to constants, so nothing of the loop is left to run; a division by a power of two, made a multiply, keeps
+// the division's bits (tiny and huge quotients included).
+TEST(Shader, ConstantsFoldThroughVariablesWrittenManyTimes) {
+  const std::string source = program(
+      "float f = 1.0; int n = 3;\nfor (int i = 0; i < 4; i++) { f *= 2.0; n = n * 2 + i; }\n"
+      "fragColor = vec4(f / 32.0, float(n) / 128.0, 0.0, 1.0);");
+  const raster::ShaderCompileResult r = raster::compile_shadertoy(source);
+  ASSERT_TRUE(r.shader);
+  EXPECT_LE(r.shader->instructions(), 4u) << "the four output values, copied; nothing computed per block";
+  const Image im = draw(source, 8, 8);
+  EXPECT_EQ(channel(im, 2, 2, 0), gl_byte(0.5f));
+  EXPECT_EQ(channel(im, 2, 2, 1), gl_byte(float(((((3 * 2 + 0) * 2 + 1) * 2 + 2) * 2 + 3)) / 128.0f));
+
+  // x / 2^k for x spread over many binades: the bits of the two quotients, three bytes a draw (`part`).
+  Scene s = shader_scene(
+      "uniform float scale; uniform int part;\n" +
+          program("float x = (fragCoord.x * 37.0 + fragCoord.y) * scale;\n"
+                  "uint q = floatBitsToUint(x / 0.125), r = floatBitsToUint(x / 8.0);\n"
+                  "uint w = part == 0 ? q : r;\n"
+                  "fragColor = vec4(float(w >> 24u), float((w >> 16u) & 255u), float((w >> 8u) & 255u),"
+                  " 255.0) / 255.0;\n"
+                  "if (part == 2) fragColor = vec4(float(q & 255u), float(r & 255u), 0.0, 255.0) / 255.0;"),
+      16, 16);
+  for (const double scale : {1e-37, 3.1e-5, 1.0, 7.7e30})
+    for (int part = 0; part < 3; ++part) {
+      s.shaders[0].uniforms = {{"scale", {scale}}, {"part", {double(part)}}};
+      const Image im2 = draw(s);
+      for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+          const float v = ((x + 0.5f) * 37.0f + (15 - y + 0.5f)) * static_cast<float>(scale);
+          const std::uint32_t q = std::bit_cast<std::uint32_t>(v / 0.125f),
+                              r = std::bit_cast<std::uint32_t>(v / 8.0f), w = part == 0 ? q : r;
+          const int want[3] = {part == 2 ? int(q & 255u) : int(w >> 24),
+                               part == 2 ? int(r & 255u) : int((w >> 16) & 255u),
+                               part == 2 ? 0 : int((w >> 8) & 255u)};
+          for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(channel(im2, x, y, c), want[c]) << scale << " part " << part << " at " << x << "," << y;
+        }
+    }
+}
+
 // The bench programs (and this suite's) give one picture from the scalar reference, SSE2 and AVX2, and at
 // 1, 2, 3 and 7 threads.
 TEST(Shader, EveryLaneWidthAndThreadCountGivesTheSameBytes) {

@@ -221,6 +221,18 @@ template <class F>
       return RASTER_T2(U, x ^ y);
     case Op::imuladd:
       return RASTER_T3(U, x * y + z);
+    case Op::shl_xor:
+      return RASTER_T3(U, (x << (y & splat<U>(31))) ^ z);
+    case Op::shl_or:
+      return RASTER_T3(U, (x << (y & splat<U>(31))) | z);
+    case Op::shl_add:
+      return RASTER_T3(U, (x << (y & splat<U>(31))) + z);
+    case Op::ushr_xor:
+      return RASTER_T3(U, (x >> (y & splat<U>(31))) ^ z);
+    case Op::ushr_or:
+      return RASTER_T3(U, (x >> (y & splat<U>(31))) | z);
+    case Op::ushr_add:
+      return RASTER_T3(U, (x >> (y & splat<U>(31))) + z);
     case Op::bnot:
       return RASTER_T1(U, ~x);
     case Op::select:

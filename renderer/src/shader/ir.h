@@ -36,6 +36,8 @@ inline constexpr Slot kUnusedSlot = ~Slot{0};
 ///  - transcendental: lane_transcendental.h's functions (fatan2 is atan(a, b)).
 ///  - integer: conversions (float to int or uint truncated, NaN 0, saturated; bool to 1 or 1.0), wrapping
 ///    arithmetic (imuladd d = a * b + c), comparisons to masks, shifts by b modulo 32, bitwise operations;
+///    a shift and the xor, or or add that alone reads it (ushr_xor d = (a >> b) ^ c, shl_add d = (a << b) +
+///    c, and the other four: a hash's steps);
 ///    select d = a ? b : c.
 ///  - divide: idiv, imod, udiv, umod, defined for every input (engine_lane_ops.cpp).
 ///  - lane: packing (pack d = pack(a, b); unpack d, d + 1 = unpack(a)); ddx, ddy: the difference across
@@ -71,7 +73,9 @@ inline constexpr Slot kUnusedSlot = ~Slot{0};
   X(umod, divide) X(umin, integer) X(umax, integer) X(uclamp, integer) X(ilt, integer) X(ile, integer)       \
   X(igt, integer) X(ige, integer) X(ieq, integer) X(ine, integer) X(ult, integer) X(ule, integer)            \
   X(ugt, integer) X(uge, integer) X(shl, integer) X(shr, integer) X(ushr, integer) X(band, integer)          \
-  X(bor, integer) X(bxor, integer) X(bnot, integer) X(imuladd, integer) X(pack_snorm, lane)                  \
+  X(bor, integer) X(bxor, integer) X(bnot, integer) X(imuladd, integer) X(shl_xor, integer)                  \
+  X(shl_or, integer) X(shl_add, integer) X(ushr_xor, integer) X(ushr_or, integer) X(ushr_add, integer)       \
+  X(pack_snorm, lane)                                                                                         \
   X(pack_unorm, lane)                                                                                         \
   X(pack_half, lane) X(unpack_snorm, lane) X(unpack_unorm, lane) X(unpack_half, lane) X(ddx, lane)           \
   X(ddy, lane) X(tex_sample, lane) X(tex_fetch, lane) X(tex_size, lane) X(if_begin, control)                 \

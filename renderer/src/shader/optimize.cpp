@@ -1,6 +1,7 @@
 #include "shader/optimize.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <string>
 #include <tuple>
@@ -71,6 +72,12 @@ Arity arity(Op op) {
     case Op::fmulsub:
     case Op::fnmuladd:
     case Op::imuladd:
+    case Op::shl_xor:
+    case Op::shl_or:
+    case Op::shl_add:
+    case Op::ushr_xor:
+    case Op::ushr_or:
+    case Op::ushr_add:
       return Arity::three;
     default:
       return op >= Op::fadd && op <= Op::pack_half ? Arity::two : Arity::other;
@@ -81,12 +88,12 @@ bool unpacks(Op op) {
   return op == Op::unpack_snorm || op == Op::unpack_unorm || op == Op::unpack_half;
 }
 
-// Folded and hoisted: a pure operation of its operands' values alone (not of other lanes, not a texture).
+}  // namespace
+
 bool computable(Op op) {
   return is_pure(op) && op != Op::ddx && op != Op::ddy && op != Op::load_index && op < Op::tex_sample;
 }
 
-// Which of a, b, c (bits 0, 1, 2) an instruction reads as single slots (not a group's base).
 unsigned read_fields(const Instr& in) {
   switch (arity(in.op)) {
     case Arity::one:
@@ -128,8 +135,6 @@ unsigned read_fields(const Instr& in) {
   }
 }
 
-// Groups whose slots are read or written together, not one by one: arrays indexed at run time, texture
-// gradients, and the results of instructions that write several slots.
 std::vector<bool> whole_groups(const Lowered& l) {
   std::vector<bool> whole(l.group_first.size(), false);
   for (const Instr& in : l.program.code) {
@@ -142,24 +147,22 @@ std::vector<bool> whole_groups(const Lowered& l) {
   return whole;
 }
 
-struct Groups {
-  Lowered& l;
-  std::uint32_t of(Slot s) const { return l.group_of[s]; }
-  Slot add(bool pinned) {
-    const auto s = static_cast<Slot>(l.group_of.size());
-    l.group_of.push_back(static_cast<std::uint32_t>(l.group_first.size()));
-    l.group_first.push_back(s);
-    l.group_size.push_back(1);
-    l.pinned.push_back(pinned);
-    l.single_definition.push_back(true);
-    return s;
-  }
-};
+Slot Groups::add(bool pinned) {
+  const auto s = static_cast<Slot>(l.group_of.size());
+  l.group_of.push_back(static_cast<std::uint32_t>(l.group_first.size()));
+  l.group_first.push_back(s);
+  l.group_size.push_back(1);
+  l.pinned.push_back(pinned);
+  l.single_definition.push_back(true);
+  return s;
+}
 
-// NIR's identities, which llvmpipe applies too: x + 0 and x - 0 are x, x * 1 is x, x * 0 is 0 (for every
-// x: Mesa's rule, followed so the bits agree). The slot the result equals, or kUnusedSlot.
-Slot identity(const Instr& in, const std::vector<bool>& known, const std::vector<std::uint32_t>& bits) {
-  const auto is = [&](Slot s, std::uint32_t v) { return known[s] && bits[s] == v; };
+bool commutes(Op op) {
+  return op == Op::fadd || op == Op::fmul || op == Op::iadd || op == Op::imul || op == Op::band ||
+         op == Op::bor || op == Op::bxor || op == Op::feq || op == Op::ieq || op == Op::ine;
+}
+
+Slot identity(const Instr& in, const std::function<bool(Slot, std::uint32_t)>& is) {
   constexpr std::uint32_t kZero = 0, kOne = 0x3f800000u;
   switch (in.op) {
     case Op::fadd:
@@ -181,6 +184,8 @@ Slot identity(const Instr& in, const std::vector<bool>& known, const std::vector
   }
 }
 
+namespace {
+
 // Common subexpressions in a run of straight-line code: the same operation of the same unchanging slots
 // computed twice. Keys are (op, flags, a, b, c, imm), a and b ordered for the operations that commute
 // exactly.
@@ -188,10 +193,7 @@ struct Expressions {
   std::map<std::tuple<Op, std::uint8_t, Slot, Slot, Slot, std::uint32_t>, Slot> seen;
   Slot find_or_add(const Instr& in) {
     Slot a = in.a, b = in.b;
-    const bool commutes = in.op == Op::fadd || in.op == Op::fmul || in.op == Op::iadd || in.op == Op::imul ||
-                          in.op == Op::band || in.op == Op::bor || in.op == Op::bxor || in.op == Op::feq ||
-                          in.op == Op::ieq || in.op == Op::ine;
-    if (commutes && b < a) std::swap(a, b);
+    if (commutes(in.op) && b < a) std::swap(a, b);
     const auto [it, added] = seen.try_emplace({in.op, in.flags, a, b, in.c, in.imm}, in.d);
     return added ? kUnusedSlot : it->second;
   }
@@ -199,14 +201,20 @@ struct Expressions {
 
 // 1 and 2: constants folded, then values of constants and uniforms moved to the prologue; on the way,
 // identities and common subexpressions of unchanging values replaced by what they equal.
-void fold_and_hoist(Lowered& l, std::vector<bool>& removed) {
-  Program& p = l.program;
-  Groups groups{l};
+// Per slot, the instructions that write it.
+std::vector<int> definitions(const Lowered& l) {
   std::vector<int> defs(l.group_of.size(), 0);
-  for (const Instr& in : p.code) {
+  for (const Instr& in : l.program.code) {
     const Operands o = operands(in);
     for (int k = 0; k < o.write_count; ++k) ++defs[o.writes[k]];
   }
+  return defs;
+}
+
+void fold_and_hoist(Lowered& l, std::vector<bool>& removed) {
+  Program& p = l.program;
+  Groups groups{l};
+  std::vector<int> defs = definitions(l);
   std::vector<bool> known(l.group_of.size(), false), invariant(l.group_of.size(), false);
   std::vector<std::uint32_t> bits(l.group_of.size(), 0);
   std::unordered_map<std::uint32_t, Slot> canonical;
@@ -247,7 +255,7 @@ void fold_and_hoist(Lowered& l, std::vector<bool>& removed) {
   for (std::size_t i = 0; i < p.code.size(); ++i) {
     Instr& in = p.code[i];
     substitute(in);
-    if (in.op >= Op::if_begin) expressions.seen.clear();  // a new run of straight-line code
+    if (ends_run(in.op)) expressions.seen.clear();  // a new run of straight-line code
     if (!computable(in.op)) continue;
     const Operands o = operands(in);
     bool single = true, all_known = true, all_invariant = true, fixed = true;
@@ -256,7 +264,8 @@ void fold_and_hoist(Lowered& l, std::vector<bool>& removed) {
     for (int k = 0; k < o.read_count; ++k)
       all_known &= known[o.reads[k]], all_invariant &= invariant[o.reads[k]], fixed &= defs[o.reads[k]] <= 1;
     const bool replaceable = single && fixed && o.write_count == 1;
-    Slot same = replaceable ? identity(in, known, bits) : kUnusedSlot;
+    Slot same = replaceable ? identity(in, [&](Slot s, std::uint32_t v) { return known[s] && bits[s] == v; })
+                            : kUnusedSlot;
     if (same == kUnusedSlot && single && all_known) {  // fold: a constant, which its readers read
       fold(in, o, removed[i]);
       continue;
@@ -284,21 +293,28 @@ void fold_and_hoist(Lowered& l, std::vector<bool>& removed) {
 void remove_dead(Lowered& l, std::vector<bool>& removed, std::vector<bool>& prologue_removed,
                  const std::vector<std::uint32_t>& forced) {
   Program& p = l.program;
-  std::vector<int> reads(l.group_first.size(), 0);
+  // Reads of each slot, of each group's slots together, and of groups as a whole (run-time indices).
+  std::vector<int> slot_reads(l.group_of.size(), 0), reads(l.group_first.size(), 0),
+      whole_reads(l.group_first.size(), 0);
   const auto count = [&](const Instr& in, int delta) {
     const Operands o = operands(in);
-    for (int k = 0; k < o.read_count; ++k) reads[l.group_of[o.reads[k]]] += delta;
+    for (int k = 0; k < o.read_count; ++k)
+      slot_reads[o.reads[k]] += delta, reads[l.group_of[o.reads[k]]] += delta;
+    if (o.reads_group) whole_reads[l.group_of[in.a]] += delta;
   };
   for (std::size_t i = 0; i < p.code.size(); ++i)
     if (!removed[i]) count(p.code[i], 1);
   for (const Instr& in : p.prologue) count(in, 1);
-  for (const std::uint32_t g : forced) reads[g] += 1;
+  for (const std::uint32_t g : forced) reads[g] += 1, whole_reads[g] += 1;
   const auto dead = [&](const Instr& in) {
     if (!is_pure(in.op) && in.op != Op::store && in.op != Op::store_if && in.op != Op::store_index)
       return false;
     const Operands o = operands(in);
-    for (int k = 0; k < o.write_count; ++k)
-      if (reads[l.group_of[o.writes[k]]] > 0) return false;
+    for (int k = 0; k < o.write_count; ++k) {
+      const Slot s = o.writes[k];
+      const std::uint32_t g = l.group_of[s];
+      if (o.writes_group ? reads[g] > 0 : whole_reads[g] > 0 || slot_reads[s] > 0) return false;
+    }
     return o.write_count > 0;
   };
   for (bool changed = true; changed;) {
@@ -413,11 +429,6 @@ Operands operands(const Instr& in) {
   return o;
 }
 
-bool pack_slots(Lowered& l, std::size_t max_slots, Program& out, Diagnostics& diagnostics);
-void fuse_multiplies(Lowered& l);
-void remove_dead_stores(Lowered& l);
-void coalesce_copies(Lowered& l, const std::vector<bool>& keep);
-
 // Slots whose writing instruction must stay where it is: pinned ones (inputs, uniforms, constants, the
 // prologue's values), the output, and groups read or written as a whole.
 std::vector<bool> keep_slots(const Lowered& l) {
@@ -440,6 +451,7 @@ bool optimize(Lowered& l, std::size_t max_slots, Program& out, Diagnostics& diag
   remove_dead(l, removed, prologue_removed, forced);
   p.code = compact(p.code, removed);
   p.prologue = compact(p.prologue, prologue_removed);
+  number_values(l);
   remove_dead_stores(l);
   // What the dead stores read may be dead now too.
   removed.assign(p.code.size(), false), prologue_removed.assign(p.prologue.size(), false);
@@ -447,7 +459,7 @@ bool optimize(Lowered& l, std::size_t max_slots, Program& out, Diagnostics& diag
   p.code = compact(p.code, removed);
   p.prologue = compact(p.prologue, prologue_removed);
   coalesce_copies(l, keep_slots(l));
-  fuse_multiplies(l);
+  fuse_into_readers(l);
   return pack_slots(l, max_slots, out, diagnostics);
 }
 

@@ -4,30 +4,42 @@
 //    loses the first write (a variable's zero start, an output's, overwritten at once);
 //  - copies: `d = a` where a was computed once, in this run, for this copy alone, and d is untouched since,
 //    makes the computation write d (the chains of copies an assignment through an out parameter leaves);
-//  - fusing (optimize.h step 4): `t = a * b` whose one reader is `d = t + c`, `d = t - c` or `d = c - t`
+//  - fusing (optimize.h step 5): `t = a * b` whose one reader is `d = t + c`, `d = t - c` or `d = c - t`
 //    becomes one instruction computing a * b and then the add, each rounded as before, so the bits do not
-//    change; what goes is a dispatch, and a slot written and read again.
+//    change; what goes is a dispatch, and a slot written and read again. A shift into the xor, or or add
+//    that alone reads it likewise (the steps of an integer hash).
 #include "shader/optimize.h"
 
 namespace raster::shader {
 namespace {
 
-// The fused form of `add` when operand `first` (true: a, false: b) is the product; Op::mov for none.
-Op fused(Op add, bool first) {
-  switch (add) {
-    case Op::fadd:
-      return Op::fmuladd;
-    case Op::fsub:
-      return first ? Op::fmulsub : Op::fnmuladd;
-    case Op::iadd:
-      return Op::imuladd;
+// The fused form of `consumer` when its operand `first` (true: a, false: b) is the result of `producer`;
+// Op::mov for none.
+Op fused(Op producer, Op consumer, bool first) {
+  switch (producer) {
+    case Op::fmul:
+      return consumer == Op::fadd   ? Op::fmuladd
+             : consumer == Op::fsub ? (first ? Op::fmulsub : Op::fnmuladd)
+                                    : Op::mov;
+    case Op::imul:
+      return consumer == Op::iadd ? Op::imuladd : Op::mov;
+    case Op::shl:
+      return consumer == Op::bxor   ? Op::shl_xor
+             : consumer == Op::bor  ? Op::shl_or
+             : consumer == Op::iadd ? Op::shl_add
+                                    : Op::mov;
+    case Op::ushr:
+      return consumer == Op::bxor   ? Op::ushr_xor
+             : consumer == Op::bor  ? Op::ushr_or
+             : consumer == Op::iadd ? Op::ushr_add
+                                    : Op::mov;
     default:
       return Op::mov;
   }
 }
 
-bool ends_block(Op op) {
-  return op >= Op::if_begin;  // the control operations: masks change, jumps land
+bool fusable(Op producer) {
+  return producer == Op::fmul || producer == Op::imul || producer == Op::shl || producer == Op::ushr;
 }
 
 }  // namespace
@@ -44,7 +56,7 @@ void remove_dead_stores(Lowered& l) {
   };
   for (std::size_t i = 0; i < p.code.size(); ++i) {
     const Instr& in = p.code[i];
-    if (ends_block(in.op)) {
+    if (ends_run(in.op)) {
       for (const std::size_t s : touched) unread[s] = -1;
       touched.clear();
       continue;
@@ -87,7 +99,7 @@ void coalesce_copies(Lowered& l, const std::vector<bool>& keep) {
   std::vector<bool> removed(p.code.size(), false);
   for (std::size_t i = 0; i < p.code.size(); ++i) {
     Instr& in = p.code[i];
-    if (ends_block(in.op)) {
+    if (ends_run(in.op)) {
       for (const std::size_t s : touched) touched_at[s] = single_writer[s] = -1;
       touched.clear();
       continue;
@@ -116,7 +128,7 @@ void coalesce_copies(Lowered& l, const std::vector<bool>& keep) {
   p.code = compact(p.code, removed);
 }
 
-void fuse_multiplies(Lowered& l) {
+void fuse_into_readers(Lowered& l) {
   Program& p = l.program;
   const std::size_t slots = l.group_of.size();
   std::vector<int> reads(slots, 0), writes(slots, 0);
@@ -129,21 +141,22 @@ void fuse_multiplies(Lowered& l) {
   for (const Instr& in : p.code) count(in);
   for (const Instr& in : p.prologue) count(in);
   // Per slot, the instruction of this block that last wrote it (-1: none since the block began) and, for a
-  // product that may be fused, the multiply's index.
+  // result that may be fused (a product or a shift), its instruction's index.
   std::vector<std::int64_t> written(slots, -1), product(slots, -1);
   std::vector<std::size_t> touched;
   std::vector<bool> removed(p.code.size(), false);
   for (std::size_t i = 0; i < p.code.size(); ++i) {
     Instr& in = p.code[i];
-    if (ends_block(in.op) || in.op == Op::store_index) {
+    if (ends_run(in.op) || in.op == Op::store_index) {
       for (const std::size_t s : touched) written[s] = product[s] = -1;
       touched.clear();
     }
     for (const bool first : {true, false}) {
       const Slot t = first ? in.a : in.b;
-      const Op op = fused(in.op, first);
-      if (op == Op::mov || product[t] < 0 || reads[t] != 1 || writes[t] != 1) continue;
+      if (product[t] < 0 || reads[t] != 1 || writes[t] != 1) continue;
       const Instr& m = p.code[static_cast<std::size_t>(product[t])];
+      const Op op = fused(m.op, in.op, first);
+      if (op == Op::mov) continue;
       // Its factors must still hold what the multiply read.
       if (written[m.a] > product[t] || written[m.b] > product[t]) continue;
       const Slot other = first ? in.b : in.a;
@@ -156,8 +169,7 @@ void fuse_multiplies(Lowered& l) {
       written[o.writes[k]] = static_cast<std::int64_t>(i), product[o.writes[k]] = -1;
       touched.push_back(o.writes[k]);
     }
-    if ((in.op == Op::fmul || in.op == Op::imul) && o.write_count == 1)
-      product[in.d] = static_cast<std::int64_t>(i);
+    if (fusable(in.op) && o.write_count == 1) product[in.d] = static_cast<std::int64_t>(i);
   }
   p.code = compact(p.code, removed);
 }
