@@ -83,20 +83,27 @@ TEST(Shader, ARectangleHasItsOwnOriginAndResolution) {
 }
 
 TEST(Shader, ControlFlowRunsEachPixelsOwnPath) {
-  // Per pixel: a loop that breaks at a pixel-dependent count, a continue, an early return in a function, a
-  // switch with fall-through, and a dynamically indexed array.
+  // Per pixel: a loop that breaks at a pixel-dependent count after an assignment, a continue, an early
+  // return in a function after assignments, a switch with fall-through, and a dynamically indexed array.
   const std::string src = R"(
 int steps(int n) {
   int k = 0;
   for (int i = 0; i < 100; i++) {
-    if (i == n) break;
+    if (i == n) {
+      k *= 2;
+      break;
+    }
     if (i % 2 == 1) continue;
     k += 1;
   }
   return k;
 }
 float pick(int i) {
-  if (i > 10) return 1.0;
+  if (i > 10) {
+    float whole = 0.5;
+    whole *= 2.0;
+    return whole;
+  }
   float a[4] = float[](0.1, 0.2, 0.3, 0.4);
   return a[i & 3];
 }
@@ -119,7 +126,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) {
       const int gy = 15 - y;
-      const int expect_steps = (x + 1) / 2;
+      const int expect_steps = (x + 1) / 2 * 2;
       const float a[4] = {0.1f, 0.2f, 0.3f, 0.4f};
       const float expect_pick = gy > 10 ? 1.0f : a[gy & 3];
       const int v = x % 4;

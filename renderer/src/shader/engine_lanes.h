@@ -29,20 +29,28 @@ template <class T>
 }
 
 // d = fn(a), fn(a, b), fn(a, b, c), lane by lane, in the lane type T (reading the slots' bits as T).
+// kUniform says which operands hold one value in all 64 lanes (bit 0: b, bit 1: c; ir.h's Instr::uniform):
+// those are read once, not once a step.
 template <class T, class Fn>
 [[gnu::always_inline]] inline void lanes1(std::uint32_t* d, const std::uint32_t* a, Fn fn) {
   for (int i = 0; i < kBlockLanes; i += kWidth<T>) put(d + i, fn(load<T>(a + i)));
 }
-template <class T, class Fn>
+template <class T, int kUniform = 0, class Fn>
 [[gnu::always_inline]] inline void lanes2(std::uint32_t* d, const std::uint32_t* a, const std::uint32_t* b,
                                           Fn fn) {
-  for (int i = 0; i < kBlockLanes; i += kWidth<T>) put(d + i, fn(load<T>(a + i), load<T>(b + i)));
+  if constexpr (kUniform & 1) {
+    const T y = load<T>(b);
+    for (int i = 0; i < kBlockLanes; i += kWidth<T>) put(d + i, fn(load<T>(a + i), y));
+  } else {
+    for (int i = 0; i < kBlockLanes; i += kWidth<T>) put(d + i, fn(load<T>(a + i), load<T>(b + i)));
+  }
 }
-template <class T, class Fn>
+template <class T, int kUniform = 0, class Fn>
 [[gnu::always_inline]] inline void lanes3(std::uint32_t* d, const std::uint32_t* a, const std::uint32_t* b,
                                           const std::uint32_t* c, Fn fn) {
+  const T y0 = load<T>(b), z0 = load<T>(c);
   for (int i = 0; i < kBlockLanes; i += kWidth<T>)
-    put(d + i, fn(load<T>(a + i), load<T>(b + i), load<T>(c + i)));
+    put(d + i, fn(load<T>(a + i), kUniform & 1 ? y0 : load<T>(b + i), kUniform & 2 ? z0 : load<T>(c + i)));
 }
 // A conversion: reads lanes as S, writes them as T (same width).
 template <class S, class T, class Fn>
@@ -159,16 +167,13 @@ template <class U, class State>
   return narrow<U>(exec, cond, state);
 }
 
-// A float comparison into a mask slot.
-template <class F, class Fn>
+// A comparison into a mask slot (lanes2's shape: the mask's bits are the lane type's).
+template <class T, int kUniform = 0, class Fn>
 [[gnu::always_inline]] inline void compare(std::uint32_t* d, const std::uint32_t* a, const std::uint32_t* b,
                                            Fn fn) {
-  for (int i = 0; i < kBlockLanes; i += kWidth<F>) put(d + i, fn(load<F>(a + i), load<F>(b + i)));
-}
-template <class T, class Fn>
-[[gnu::always_inline]] inline void icompare(std::uint32_t* d, const std::uint32_t* a, const std::uint32_t* b,
-                                            Fn fn) {
-  for (int i = 0; i < kBlockLanes; i += kWidth<T>) put(d + i, fn(load<T>(a + i), load<T>(b + i)));
+  const T y0 = load<T>(b);
+  for (int i = 0; i < kBlockLanes; i += kWidth<T>)
+    put(d + i, fn(load<T>(a + i), kUniform & 1 ? y0 : load<T>(b + i)));
 }
 
 }  // namespace raster::shader::run

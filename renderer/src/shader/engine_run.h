@@ -13,17 +13,19 @@ namespace raster::shader::run {
 
 // The handlers' shapes: d = expr of x (and y, z), the slots a, b, c read as the lane type.
 #define RASTER_F1(expr) lanes1<F>(d, a, [](F x) RASTER_LANES_INLINE { return expr; })
-#define RASTER_F2(expr) lanes2<F>(d, a, b, [](F x, F y) RASTER_LANES_INLINE { return expr; })
-#define RASTER_F3(expr) lanes3<F>(d, a, b, c, [](F x, F y, F z) RASTER_LANES_INLINE { return expr; })
+#define RASTER_F2(expr) lanes2<F, kUniform>(d, a, b, [](F x, F y) RASTER_LANES_INLINE { return expr; })
+#define RASTER_F3(expr) \
+  lanes3<F, kUniform>(d, a, b, c, [](F x, F y, F z) RASTER_LANES_INLINE { return expr; })
 #define RASTER_FX(expr) \
-  compare<F>(d, a, b, [](F x, [[maybe_unused]] F y) RASTER_LANES_INLINE { return expr; })
+  compare<F, kUniform>(d, a, b, [](F x, [[maybe_unused]] F y) RASTER_LANES_INLINE { return expr; })
 #define RASTER_T1(T, expr) lanes1<T>(d, a, [](T x) RASTER_LANES_INLINE { return expr; })
-#define RASTER_T2(T, expr) lanes2<T>(d, a, b, [](T x, T y) RASTER_LANES_INLINE { return expr; })
-#define RASTER_T3(T, expr) lanes3<T>(d, a, b, c, [](T x, T y, T z) RASTER_LANES_INLINE { return expr; })
-#define RASTER_TX(T, expr) icompare<T>(d, a, b, [](T x, T y) RASTER_LANES_INLINE { return expr; })
+#define RASTER_T2(T, expr) lanes2<T, kUniform>(d, a, b, [](T x, T y) RASTER_LANES_INLINE { return expr; })
+#define RASTER_T3(T, expr) \
+  lanes3<T, kUniform>(d, a, b, c, [](T x, T y, T z) RASTER_LANES_INLINE { return expr; })
+#define RASTER_TX(T, expr) compare<T, kUniform>(d, a, b, [](T x, T y) RASTER_LANES_INLINE { return expr; })
 
-/// Float arithmetic and comparisons.
-template <class F>
+/// Float arithmetic and comparisons; kUniform: the operands that hold one value (lanes2, lanes3).
+template <class F, int kUniform = 0>
 [[gnu::always_inline]] inline void float_op(Op op, std::uint32_t* d, const std::uint32_t* a,
                                             const std::uint32_t* b, const std::uint32_t* c) {
   switch (op) {
@@ -99,7 +101,7 @@ template <class F>
 }
 
 /// The transcendental functions (lane_transcendental.h).
-template <class F>
+template <class F, int kUniform = 0>
 [[gnu::always_inline]] inline void transcendental_op(Op op, std::uint32_t* d, const std::uint32_t* a,
                                                      const std::uint32_t* b) {
   switch (op) {
@@ -145,7 +147,7 @@ template <class F>
 }
 
 /// Conversions and integer arithmetic (wrapping, in unsigned lanes where the sign does not matter).
-template <class F>
+template <class F, int kUniform = 0>
 [[gnu::always_inline]] inline void integer_op(Op op, std::uint32_t* d, const std::uint32_t* a,
                                               const std::uint32_t* b, const std::uint32_t* c) {
   using I = IntOf<F>;

@@ -101,7 +101,11 @@ enum class TexMode : std::uint8_t {
 struct Instr {
   Op op = Op::mov;
   std::uint8_t flags = 0;  ///< tex_sample: TexMode
-  std::uint16_t spare = 0;
+  /// Which operands hold one value in all 64 lanes (a constant, a uniform, a prologue value): bit 0 b, bit
+  /// 1 c. Set for float and integer operations only, by the optimizer (which puts such an operand second
+  /// where the operation commutes); the engine then reads it once instead of once a step.
+  std::uint8_t uniform = 0;
+  std::uint8_t spare = 0;
   Slot d = 0, a = 0, b = 0, c = 0;
   std::uint32_t imm = 0;
 };
@@ -137,6 +141,8 @@ struct Program {
 };
 
 std::string_view op_name(Op op);
+/// Whether the engine has a handler for each value of Instr::uniform (float and integer operations).
+bool has_uniform_handlers(Op op);
 /// The program as text, one instruction a line (tests and `--explain` read it).
 std::string dump(const Program& p);
 

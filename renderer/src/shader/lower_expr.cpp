@@ -478,8 +478,11 @@ void Lowerer::write(const Place& p, const Value& value) {
     for (std::size_t j = 0; j < p.slots.size(); ++j) emit_to(Op::store_if, p.slots[j], v.s[j], predicate_);
     return;
   }
-  for (std::size_t j = 0; j < p.slots.size(); ++j)
-    emit_to(uniform_ ? Op::mov : Op::store, p.slots[j], v.s[j]);
+  for (std::size_t j = 0; j < p.slots.size(); ++j) {
+    const bool whole =
+        uniform_ || std::find(step_slots_.begin(), step_slots_.end(), p.slots[j]) != step_slots_.end();
+    emit_to(whole ? Op::mov : Op::store, p.slots[j], v.s[j]);
+  }
 }
 
 }  // namespace raster::shader

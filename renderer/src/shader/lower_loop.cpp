@@ -262,7 +262,19 @@ void Lowerer::loop(const Stmt* s) {
     emit_to(Op::mask_or, 0, b.resume);
     emit_to(Op::clear, b.resume);
   }
-  if (s->step) expr(s->step);
+  if (s->step) {
+    // The variables the loop declares are seen by no lane that has left it, and every other lane is live
+    // again here: the step writes them whole.
+    const std::vector<Slot> saved = step_slots_;
+    if (s->init && s->init->kind == StmtKind::declaration)
+      for (const Declarator& d : s->init->decl->vars)
+        if (d.variable && !d.variable->constant && d.variable->written) {
+          const Value& v = variable(d.variable);
+          step_slots_.insert(step_slots_.end(), v.s.begin(), v.s.end());
+        }
+    expr(s->step);
+    step_slots_ = saved;
+  }
   if (s->kind == StmtKind::do_) test();
   emit_to(Op::loop_back, 0, 0, 0, index, top);
   const std::size_t end = emit_to(Op::loop_end, 0, b.exit);

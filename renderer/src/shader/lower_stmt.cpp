@@ -122,8 +122,10 @@ const Stmt* only(const Stmt* s) {
 // narrowing and widening the mask, and what compilers do with such an if.
 bool Lowerer::predicable(const Stmt* s) const {
   if (!s) return true;
-  const std::vector<const Stmt*> list =
-      s->kind == StmtKind::block ? std::vector<const Stmt*>(s->list.begin(), s->list.end()) : std::vector{s};
+  return predicable(s->kind == StmtKind::block ? std::vector<const Stmt*>(s->list.begin(), s->list.end())
+                                               : std::vector{s});
+}
+bool Lowerer::predicable(const std::vector<const Stmt*>& list) const {
   if (list.size() > 4) return false;
   for (const Stmt* c : list) {
     if (c->kind == StmtKind::declaration) {
@@ -149,11 +151,20 @@ bool Lowerer::static_place(const Expr* e) const {
   return false;
 }
 
-// `if (c) break;` and its kind (continue, discard, return): the lanes for which c holds leave at once.
+// `if (c) break;` and its kind (continue, discard, return), maybe after a few assignments (`if (c) { found
+// = true; break; }`): the assignments as selects by c, then the lanes for which c holds leave at once.
 bool Lowerer::leave_if(const Stmt* s, Slot c) {
-  const Stmt* b = only(s->body);
-  if (s->else_body || !b) return false;
+  if (s->else_body || !s->body) return false;
+  const Stmt* b = s->body;
+  std::vector<const Stmt*> before;
+  if (b->kind == StmtKind::block) {
+    if (b->list.empty()) return false;
+    before.assign(b->list.begin(), b->list.end() - 1);
+    b = only(b->list.back());
+    if (!b || (!before.empty() && !predicable(before))) return false;
+  }
   Slot acc = 0;
+  const bool returns = b->kind == StmtKind::return_ && frames_.back().returns && (!b->expr || pure(b->expr));
   if (b->kind == StmtKind::break_) {
     acc = breakables_.back().exit;
   } else if (b->kind == StmtKind::continue_) {
@@ -161,16 +172,22 @@ bool Lowerer::leave_if(const Stmt* s, Slot c) {
       if (it->loop) acc = it->resume;
   } else if (b->kind == StmtKind::discard) {
     acc = kDiscardSlot;
-  } else if (b->kind == StmtKind::return_ && frames_.back().returns && (!b->expr || pure(b->expr))) {
+  } else if (returns) {
+    acc = frames_.back().returns;
+  }
+  if (!acc) return false;
+  const Slot saved = predicate_;
+  predicate_ = c;
+  for (const Stmt* a : before) statement(a);
+  predicate_ = saved;
+  if (returns) {
     Frame& f = frames_.back();
     const Value v = b->expr ? expr(b->expr) : Value{};
     for (std::size_t i = 0; i < v.s.size() && i < frames_.back().result.s.size(); ++i)
       emit_to(Op::store_if, frames_.back().result.s[i], v.s[i], c);
-    acc = frames_.back().returns;
     f.returned = true;
     uniform_ = false;
   }
-  if (!acc) return false;
   emit_to(Op::leave_if, acc, c);
   return true;
 }

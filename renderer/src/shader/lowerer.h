@@ -117,6 +117,7 @@ class Lowerer {
   void function_body(const FunctionDecl* f, Frame& frame);
   bool own(const Value& v, const Frame& f) const;
   bool predicable(const Stmt* s) const;
+  bool predicable(const std::vector<const Stmt*>& list) const;
   bool static_place(const Expr* e) const;
   bool leave_if(const Stmt* s, Slot condition);
   void predicated_if(const Stmt* s, Slot condition);
@@ -135,9 +136,10 @@ class Lowerer {
   std::vector<Breakable> breakables_;
   std::unordered_map<std::uint32_t, Slot> constants_;
   std::vector<bool> mutable_group_;  ///< per group: a variable's slots that assignments change
-  bool uniform_ = true;      ///< exec holds every lane that will read what is stored: stores need no mask
-  Slot predicate_ = 0;       ///< in a predicated if's branch: its condition, which every assignment obeys
-  bool terminated_ = false;  ///< the current function returned on every live lane: the rest is dead
+  bool uniform_ = true;  ///< exec holds every lane that will read what is stored: stores need no mask
+  Slot predicate_ = 0;   ///< in a predicated if's branch: its condition, which every assignment obeys
+  std::vector<Slot> step_slots_;  ///< in a loop's step: its own variables' slots, which it writes whole
+  bool terminated_ = false;       ///< the current function returned on every live lane: the rest is dead
   bool failed_ = false;
   std::size_t work_ = 0;  ///< expressions and statements lowered, against the instruction limit
 };

@@ -460,6 +460,7 @@ bool optimize(Lowered& l, std::size_t max_slots, Program& out, Diagnostics& diag
   p.prologue = compact(p.prologue, prologue_removed);
   coalesce_copies(l, keep_slots(l));
   fuse_into_readers(l);
+  mark_uniform_operands(l);
   return pack_slots(l, max_slots, out, diagnostics);
 }
 

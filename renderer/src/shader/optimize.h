@@ -7,7 +7,9 @@
 //     code dropped again;
 //  5. fuse: a multiply into the add or subtract that alone uses it, a shift into its xor, or or add
 //     (optimize_fuse.cpp);
-//  6. pack: virtual slots get physical ones, reused once a value is dead (a loop keeps alive what crosses
+//  6. uniform operands: those that hold one value in every lane are marked, for the engine to read once
+//     (optimize_uniform.cpp);
+//  7. pack: virtual slots get physical ones, reused once a value is dead (a loop keeps alive what crosses
 //     its back-edge), each group contiguous as dynamic indexing needs.
 #pragma once
 
@@ -71,6 +73,7 @@ void number_values(Lowered& l);       // optimize_values.cpp
 void remove_dead_stores(Lowered& l);  // optimize_fuse.cpp
 void coalesce_copies(Lowered& l, const std::vector<bool>& keep);
 void fuse_into_readers(Lowered& l);
+void mark_uniform_operands(Lowered& l);  // optimize_uniform.cpp
 bool pack_slots(Lowered& l, std::size_t max_slots, Program& out,
                 Diagnostics& diagnostics);  // optimize_pack.cpp
 

@@ -104,8 +104,13 @@ void coalesce_copies(Lowered& l, const std::vector<bool>& keep) {
       touched.clear();
       continue;
     }
+    // d untouched since the computation, or read by it alone: a lane-by-lane operation reads each step's
+    // operands before it writes that step's result, so it may write over what it reads (`i = i + 1`).
     if (in.op == Op::mov && single_writer[in.a] >= 0 && reads[in.a] == 1 && writes[in.a] == 1 &&
-        !keep[in.a] && touched_at[in.d] < single_writer[in.a]) {
+        !keep[in.a] &&
+        (touched_at[in.d] < single_writer[in.a] ||
+         (touched_at[in.d] == single_writer[in.a] &&
+          computable(p.code[static_cast<std::size_t>(single_writer[in.a])].op)))) {
       const std::int64_t at = single_writer[in.a];
       p.code[static_cast<std::size_t>(at)].d = in.d;
       --reads[in.a], --writes[in.a];
@@ -160,7 +165,7 @@ void fuse_into_readers(Lowered& l) {
       // Its factors must still hold what the multiply read.
       if (written[m.a] > product[t] || written[m.b] > product[t]) continue;
       const Slot other = first ? in.b : in.a;
-      in = Instr{op, 0, 0, in.d, m.a, m.b, other, 0};
+      in = Instr{.op = op, .d = in.d, .a = m.a, .b = m.b, .c = other};
       removed[static_cast<std::size_t>(product[t])] = true;
       break;
     }

@@ -140,7 +140,7 @@ class Numbering {
       return;
     }
     const ValueNumber n = value_of(in, fields, read);
-    if (const Slot h = home(n); h != kUnusedSlot && h != in.d) in = Instr{Op::mov, 0, 0, in.d, h, 0, 0, 0};
+    if (const Slot h = home(n); h != kUnusedSlot && h != in.d) in = Instr{.op = Op::mov, .d = in.d, .a = h};
     set(in.d, n);
   }
 
