@@ -3,9 +3,11 @@
 // thread count.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -319,6 +321,106 @@ TEST(Shader, ConstantsFoldThroughVariablesWrittenManyTimes) {
             ASSERT_EQ(channel(im2, x, y, c), want[c]) << scale << " part " << part << " at " << x << "," << y;
         }
     }
+}
+
+// Integer division and remainder (eight lanes divide in doubles) against C's, with the defined answers
+// where GLSL leaves them undefined, over seeded operands mixed with the edge values, in every lane width.
+TEST(Shader, IntegerDivisionIsExactInEveryLaneWidth) {
+  const std::string source = R"(
+uniform int part; uniform uint seed;
+uint hash(uint v) { v ^= v >> 16; v *= 0x7feb352du; v ^= v >> 15; v *= 0x846ca68bu; v ^= v >> 16; return v; }
+uint pick(uint h) {
+  const uint kEdge[8] = uint[8](0u, 1u, 0xffffffffu, 0x80000000u, 0x7fffffffu, 2u, 0xfffffffeu, 7u);
+  uint kind = h & 7u;
+  return kind < 3u ? kEdge[(h >> 3) & 7u] : kind < 5u ? (h >> 8) & 0xffu : h;
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+  uint i = uint(fragCoord.x) + 16u * uint(fragCoord.y) + 256u * seed;
+  uint a = pick(hash(i * 2u)), b = pick(hash(i * 2u + 1u));
+  uint w[4] = uint[4](uint(int(a) / int(b)), uint(int(a) % int(b)), a / b, a % b);
+  uint word = w[part / 2];
+  fragColor = part % 2 == 0 ? vec4(float(word >> 24), float((word >> 16) & 255u), float((word >> 8) & 255u), 255.0)
+                            : vec4(float(word & 255u), 0.0, 0.0, 255.0);
+  fragColor /= 255.0;
+}
+)";
+  const auto hash = [](std::uint32_t v) {
+    v ^= v >> 16, v *= 0x7feb352du, v ^= v >> 15, v *= 0x846ca68bu, v ^= v >> 16;
+    return v;
+  };
+  const auto pick = [](std::uint32_t h) {
+    const std::uint32_t edge[8] = {0u, 1u, 0xffffffffu, 0x80000000u, 0x7fffffffu, 2u, 0xfffffffeu, 7u};
+    const std::uint32_t kind = h & 7u;
+    return kind < 3u ? edge[(h >> 3) & 7u] : kind < 5u ? (h >> 8) & 0xffu : h;
+  };
+  const auto words = [](std::uint32_t a, std::uint32_t b) {
+    const auto x = static_cast<std::int32_t>(a), y = static_cast<std::int32_t>(b);
+    const bool overflow = x == std::numeric_limits<std::int32_t>::min() && y == -1;
+    return std::array<std::uint32_t, 4>{y == 0     ? 0u
+                                        : overflow ? a
+                                                   : static_cast<std::uint32_t>(x / y),
+                                        y == 0     ? ~0u
+                                        : overflow ? 0u
+                                                   : static_cast<std::uint32_t>(x % y),
+                                        b == 0 ? ~0u : a / b, b == 0 ? ~0u : a % b};
+  };
+  Scene s = shader_scene(source, 16, 16);
+  std::vector<raster::PlanOptions> widths(1);
+  widths[0].scalar_shading = true;
+  for (const raster::Simd simd : {raster::Simd::sse2, raster::Simd::avx2}) {
+    if (simd == raster::Simd::avx2 && raster::best_simd() != raster::Simd::avx2) continue;
+    widths.emplace_back().max_simd = simd;
+  }
+  for (std::uint32_t seed = 0; seed < 4; ++seed)
+    for (int part = 0; part < 8; ++part) {
+      s.shaders[0].uniforms = {{"part", {double(part)}}, {"seed", {double(seed)}}};
+      for (const raster::PlanOptions& o : widths) {
+        const Image im = draw(s, o);
+        for (int y = 0; y < 16; ++y)
+          for (int x = 0; x < 16; ++x) {
+            const std::uint32_t i = static_cast<std::uint32_t>(x + 16 * (15 - y)) + 256u * seed;
+            const std::uint32_t word = words(pick(hash(i * 2u)), pick(hash(i * 2u + 1u)))[part / 2];
+            const int want[3] = {part % 2 == 0 ? int(word >> 24) : int(word & 255u),
+                                 part % 2 == 0 ? int((word >> 16) & 255u) : 0,
+                                 part % 2 == 0 ? int((word >> 8) & 255u) : 0};
+            for (int c = 0; c < 3; ++c)
+              ASSERT_EQ(channel(im, x, y, c), want[c])
+                  << "part " << part << " seed " << seed << " at " << x << "," << y << " scalar "
+                  << o.scalar_shading << " simd " << int(o.max_simd);
+          }
+      }
+    }
+}
+
+// A call of constants to a function of its arguments alone is computed by the compiler (its loop is gone
+// from the program), with the value the program would compute; a call that reads a uniform, or whose loop
+// outruns the compiler's budget, stays a loop and gives the same value at run time.
+TEST(Shader, CallsOfConstantsAreComputedOnceWhenCompiled) {
+  const std::string steps =
+      "int steps(int n) { int k = 0; while (n != 1) { n = n % 2 == 0 ? n / 2 : 3 * n + 1; k++; } return k; "
+      "}\n"
+      "int count(int n) { int k = 0; for (int i = 0; i < n; i++) k += i % 3; return k; }\n"
+      "uniform int start;\n"
+      "int stepsFromUniform() { return steps(start); }\n";
+  const auto compiled = [&](const std::string& call) {
+    const std::string source =
+        steps + program("int v = " + call +
+                        ";\nfragColor = vec4(float(v & 255) / 255.0, float(v >> 8) / 255.0, 0.0, 1.0);");
+    raster::ShaderCompileResult r = raster::compile_shadertoy(source);
+    EXPECT_TRUE(r.shader) << source;
+    Scene s = shader_scene(source, 8, 8);
+    s.shaders[0].uniforms = {{"start", {27}}};
+    const Image im = draw(s);
+    return std::make_pair(r.shader ? r.shader->loops() : 99u,
+                          channel(im, 1, 1, 0) + 256 * channel(im, 1, 1, 1));
+  };
+  EXPECT_EQ(compiled("steps(27)"), std::make_pair(std::size_t{0}, 111)) << "folded: no loop left";
+  EXPECT_EQ(compiled("stepsFromUniform()"), std::make_pair(std::size_t{1}, 111)) << "reads a uniform";
+  EXPECT_EQ(compiled("count(30)"), std::make_pair(std::size_t{0}, 30));
+  // 5000 iterations: past the compiler's budget, so the loop runs for every pixel, to the same value.
+  int want = 0;
+  for (int i = 0; i < 5000; i++) want += i % 3;
+  EXPECT_EQ(compiled("count(5000)"), std::make_pair(std::size_t{1}, want & 0xffff));
 }
 
 // The bench programs (and this suite's) give one picture from the scalar reference, SSE2 and AVX2, and at

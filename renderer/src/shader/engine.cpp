@@ -90,13 +90,14 @@ RunResult run_block(const Program& program, Registers& registers, const RunConte
   return dispatch(program.code, registers, context, state);
 }
 
-std::vector<std::uint32_t> evaluate_once(const Program& program, const std::vector<Slot>& result) {
+std::vector<std::uint32_t> evaluate_once(const Program& program, const std::vector<Slot>& result,
+                                         std::int64_t max_iterations) {
   Registers registers(program.slots);
   prepare(program, registers, Lanes::scalar);
   RunContext context;
   context.lanes = Lanes::scalar;
-  context.max_iterations = 1;
-  run_block(program, registers, context);
+  context.max_iterations = max_iterations;
+  if (run_block(program, registers, context).status != RunResult::Status::done) return {};
   std::vector<std::uint32_t> value;
   for (const Slot s : result) value.push_back(registers.slot(s)[0]);
   return value;

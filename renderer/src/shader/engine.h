@@ -67,8 +67,10 @@ RunResult run_block(const Program& program, Registers& registers, const RunConte
 std::vector<std::uint32_t> evaluate_instruction(const Instr& in, std::uint32_t a, std::uint32_t b,
                                                 std::uint32_t c);
 
-/// Runs a program without inputs once (the scalar reference) and returns lane 0 of `result`'s slots:
-/// the value of a constant expression.
-std::vector<std::uint32_t> evaluate_once(const Program& program, const std::vector<Slot>& result);
+/// Runs a program without inputs once (the scalar reference) and returns lane 0 of `result`'s slots: the
+/// value of a constant expression, or of a call of constants; empty if its loops went round more than
+/// `max_iterations` times.
+std::vector<std::uint32_t> evaluate_once(const Program& program, const std::vector<Slot>& result,
+                                         std::int64_t max_iterations = 1);
 
 }  // namespace raster::shader

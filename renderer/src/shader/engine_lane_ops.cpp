@@ -3,7 +3,6 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <limits>
 
 namespace raster::shader::run {
 namespace {
@@ -14,29 +13,6 @@ std::uint32_t* slot(std::uint32_t* r, Slot s) {
 
 std::int64_t clamp_index(std::int32_t i, std::uint32_t count) {
   return i < 0 ? 0 : static_cast<std::uint32_t>(i) >= count ? count - 1 : i;
-}
-
-// Integer division where GLSL leaves it undefined, as llvmpipe answers (D3D's rule for unsigned): x / 0 is
-// 0 for int and 0xffffffff for uint, x % 0 is all ones, INT_MIN / -1 is INT_MIN and INT_MIN % -1 is 0.
-// Otherwise C's: the quotient truncated, the remainder with the dividend's sign. No input traps.
-void divide(Op op, std::uint32_t* d, const std::uint32_t* a, const std::uint32_t* b) {
-  for (int l = 0; l < kBlockLanes; ++l) {
-    if (op == Op::udiv || op == Op::umod) {
-      const std::uint32_t x = a[l], y = b[l];
-      d[l] = y == 0 ? 0xffffffffu : op == Op::udiv ? x / y : x % y;
-      continue;
-    }
-    const auto x = static_cast<std::int32_t>(a[l]), y = static_cast<std::int32_t>(b[l]);
-    std::int32_t r;
-    if (y == 0) {
-      r = op == Op::idiv ? 0 : -1;
-    } else if (x == std::numeric_limits<std::int32_t>::min() && y == -1) {
-      r = op == Op::idiv ? x : 0;
-    } else {
-      r = op == Op::idiv ? x / y : x % y;
-    }
-    d[l] = static_cast<std::uint32_t>(r);
-  }
 }
 
 float bits_float(std::uint32_t u) {
@@ -144,11 +120,6 @@ void lane_op(const Instr& in, std::uint32_t* r, const RunContext& context) {
               a[l];
       return;
     }
-    case Op::idiv:
-    case Op::imod:
-    case Op::udiv:
-    case Op::umod:
-      return divide(in.op, d, a, b);
     case Op::pack_snorm:
     case Op::pack_unorm:
     case Op::pack_half:

@@ -5,6 +5,8 @@
 // inlines to its one case.
 #pragma once
 
+#include <limits>
+
 #include "shader/engine_lane_ops.h"
 #include "shader/engine_lanes.h"
 #include "shader/lane_transcendental.h"
@@ -239,6 +241,77 @@ template <class F, int kUniform = 0>
       return RASTER_T1(U, ~x);
     case Op::select:
       return RASTER_T3(I, select(x, y, z));
+    default:
+      return;
+  }
+}
+
+/// Integer division and remainder, one answer for every input (ir.h; as llvmpipe): x / 0 is 0 for int and
+/// 0xffffffff for uint, x % 0 is all ones, INT_MIN / -1 is INT_MIN and INT_MIN % -1 is 0; otherwise C's
+/// quotient, truncated, and the remainder with the dividend's sign. The quotient of two 32-bit integers is
+/// exact in doubles (it is at least 2^-32 of itself away from the next integer, far more than a double's
+/// rounding), so eight lanes divide as two vectors of four doubles, not as eight integer divisions.
+template <class F, bool kSigned, bool kRemainder>
+[[gnu::always_inline]] inline UIntOf<F> divide(UIntOf<F> x, UIntOf<F> y) {
+  using U = UIntOf<F>;
+  using I = IntOf<F>;
+  if constexpr (kOneLane<F>) {
+    if (y == 0) return kRemainder || !kSigned ? ~0u : 0u;
+    if constexpr (kSigned) {
+      const auto sx = static_cast<std::int32_t>(x), sy = static_cast<std::int32_t>(y);
+      if (sx == std::numeric_limits<std::int32_t>::min() && sy == -1) return kRemainder ? 0u : x;
+      return static_cast<std::uint32_t>(kRemainder ? sx % sy : sx / sy);
+    } else {
+      return kRemainder ? x % y : x / y;
+    }
+  } else {
+    using Doubles = detail::DoubleHalf;
+    using Half = std::int32_t __attribute__((vector_size(16)));
+    const U none = as_uint(eq(as_int(y), splat<I>(0)));
+    U safe = select(none, splat<U>(1), y);
+    if constexpr (kSigned)  // INT_MIN / -1 as INT_MIN / 1: the quotient INT_MIN, the remainder 0
+      safe = select(as_uint(eq(as_int(x), splat<I>(std::numeric_limits<std::int32_t>::min())) &
+                            eq(as_int(y), splat<I>(-1))),
+                    splat<U>(1), safe);
+    // Each half's quotient, truncated; unsigned ones moved into int range (exact in doubles) and back.
+    const auto half = [](auto n, auto m) RASTER_LANES_INLINE {
+      Doubles q;
+      if constexpr (kSigned) {
+        q = __builtin_convertvector(std::bit_cast<Half>(n), Doubles) /
+            __builtin_convertvector(std::bit_cast<Half>(m), Doubles);
+      } else {  // uint -> double as int + 2^31; the quotient's 2^31 taken off before it becomes an int
+        const Doubles offset = Doubles{} + 2147483648.0;
+        q = (__builtin_convertvector(std::bit_cast<Half>(n ^ 0x80000000u), Doubles) + offset) /
+            (__builtin_convertvector(std::bit_cast<Half>(m ^ 0x80000000u), Doubles) + offset);
+        const auto big = q >= offset;  // then q - 2^31 is exact, and truncates as q does
+        return __builtin_convertvector(big ? q - offset : q, Half) ^
+               (__builtin_convertvector(big, Half) & std::numeric_limits<std::int32_t>::min());
+      }
+      return __builtin_convertvector(q, Half);
+    };
+    const Half lo = half(lane_detail::low(x), lane_detail::low(safe));
+    const Half hi = half(lane_detail::high(x), lane_detail::high(safe));
+    const U q = std::bit_cast<U>(__builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7));
+    if constexpr (kRemainder) return select(none, splat<U>(~0u), x - q * safe);
+    return select(none, splat<U>(kSigned ? 0u : ~0u), q);
+  }
+}
+
+/// The integer divisions (divide above).
+template <class F>
+[[gnu::always_inline]] inline void divide_op(Op op, std::uint32_t* d, const std::uint32_t* a,
+                                             const std::uint32_t* b) {
+  using U = UIntOf<F>;
+  constexpr int kUniform = 0;
+  switch (op) {
+    case Op::idiv:
+      return RASTER_T2(U, (divide<F, true, false>(x, y)));
+    case Op::imod:
+      return RASTER_T2(U, (divide<F, true, true>(x, y)));
+    case Op::udiv:
+      return RASTER_T2(U, (divide<F, false, false>(x, y)));
+    case Op::umod:
+      return RASTER_T2(U, (divide<F, false, true>(x, y)));
     default:
       return;
   }

@@ -39,7 +39,7 @@ inline constexpr Slot kUnusedSlot = ~Slot{0};
 ///    a shift and the xor, or or add that alone reads it (ushr_xor d = (a >> b) ^ c, shl_add d = (a << b) +
 ///    c, and the other four: a hash's steps);
 ///    select d = a ? b : c.
-///  - divide: idiv, imod, udiv, umod, defined for every input (engine_lane_ops.cpp).
+///  - divide: idiv, imod, udiv, umod, defined for every input (engine_run.h).
 ///  - lane: packing (pack d = pack(a, b); unpack d, d + 1 = unpack(a)); ddx, ddy: the difference across
 ///    the lane's 2x2 quad; textures: channel imm & 0xff, tex_sample's texel offset (imm >> 8 & 0xff) - 8
 ///    across and (imm >> 16 & 0xff) - 8 up, results d .. d + 3 (tex_size: d, d + 1): tex_sample at u a,

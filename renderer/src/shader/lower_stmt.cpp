@@ -3,7 +3,9 @@
 // continue and return gathered in accumulators and restored where their statement ends. A call is
 // inlined, its parameters bound to the arguments' slots when the function never writes them.
 #include <algorithm>
+#include <functional>
 
+#include "shader/engine.h"
 #include "shader/lowerer.h"
 
 namespace raster::shader {
@@ -340,7 +342,69 @@ bool Lowerer::whole_local(const Place& p, std::vector<std::uint32_t>& taken) {
   return std::find(locals.begin(), locals.end(), g) != locals.end();
 }
 
+// Whether a function's result depends on its arguments alone: it and what it calls read no uniform, input,
+// texture, derivative or global variable (constants aside), write no global, and do not discard.
+bool Lowerer::reads_only_its_arguments(const Function* f) {
+  if (!f || !f->definition) return false;
+  if (const auto it = closed_.find(f); it != closed_.end()) return it->second;
+  closed_[f] = false;  // no recursion reaches here (the checker refuses it); a cycle would read false
+  bool closed = true;
+  const std::function<void(const Expr*)> visit_expr = [&](const Expr* e) {
+    if (!e || !closed) return;
+    if (e->kind == ExprKind::name && e->variable) {
+      const Variable::Kind k = e->variable->kind;
+      if (k != Variable::Kind::local && k != Variable::Kind::parameter && !e->variable->constant)
+        closed = false;
+    }
+    if (e->builtin && e->builtin->op >= BuiltinOp::texture_size && e->builtin->op <= BuiltinOp::fwidth)
+      closed = false;
+    if (e->function && !reads_only_its_arguments(e->function)) closed = false;
+    for (const Expr* a : e->args) visit_expr(a);
+  };
+  const std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
+    if (!s || !closed) return;
+    if (s->kind == StmtKind::discard) closed = false;
+    visit_expr(s->expr), visit_expr(s->step), visit(s->init), visit(s->body), visit(s->else_body);
+    if (s->decl)
+      for (const Declarator& d : s->decl->vars) visit_expr(d.init);
+    for (const Stmt* c : s->list) visit(c);
+  };
+  visit(f->definition->body);
+  return closed_[f] = closed;
+}
+
+// A call of constant arguments to a function of its arguments alone is computed now, by the engine's
+// scalar reference (so it has the bits every lane width gives), and becomes its constant result: a loop of
+// constants runs once, not once a pixel. Small: a few thousand values and loop iterations; past that
+// (or on any error) the call is lowered as any other, and runs under the program's own bounds.
+std::optional<Value> Lowerer::constant_call(const Expr* e) {
+  const Function* fn = e->function;
+  if (folding_ || !fn || fn->ret.is_void() || fn->ret.has_sampler()) return std::nullopt;
+  for (std::size_t i = 0; i < e->args.size(); ++i)
+    if (!e->args[i]->constant || fn->qualifiers[i] == Qualifier::out || fn->qualifiers[i] == Qualifier::inout)
+      return std::nullopt;
+  if (!reads_only_its_arguments(fn)) return std::nullopt;
+  constexpr std::size_t kMostSlots = 4096, kMostInstructions = 16384;
+  constexpr std::int64_t kMostIterations = 4096;
+  Lowered lowered;
+  Diagnostics quiet;
+  Lowerer inner(lowered, {kMostInstructions, kMostSlots}, quiet);
+  inner.folding_ = true;
+  std::vector<Slot> result;
+  if (!inner.expression_only(*e, result)) return std::nullopt;
+  // The program's whole budget (fold_work_: instructions times iterations) bounds what all such calls cost
+  // the compiler, each charged for its worst case.
+  const auto size = static_cast<std::int64_t>(lowered.program.code.size()) + 1;
+  const std::int64_t iterations = std::min(kMostIterations, fold_work_ / size);
+  if (iterations < 1) return std::nullopt;
+  fold_work_ -= iterations * size;
+  const std::vector<std::uint32_t> bits = evaluate_once(lowered.program, result, iterations);
+  if (bits.size() != static_cast<std::size_t>(fn->ret.slots())) return std::nullopt;
+  return constant_value(fn->ret, bits, fn->ret.is_array() || fn->ret.basic == Basic::structure);
+}
+
 Value Lowerer::call(const Expr* e) {
+  if (std::optional<Value> folded = constant_call(e)) return *std::move(folded);
   const Function* fn = e->function;
   Frame frame;
   frame.function = fn;

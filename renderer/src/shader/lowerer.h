@@ -3,6 +3,7 @@
 // (lower_stmt.cpp). Private to them.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -101,6 +102,8 @@ class Lowerer {
   void return_statement(const Stmt* s);
   void leave(Slot accumulator);
   Value call(const Expr* e);
+  std::optional<Value> constant_call(const Expr* e);
+  bool reads_only_its_arguments(const Function* f);
   bool whole_local(const Place& p, std::vector<std::uint32_t>& taken);
   std::size_t patch_target() const { return out_.program.code.size(); }
 
@@ -141,6 +144,9 @@ class Lowerer {
   std::vector<Slot> step_slots_;  ///< in a loop's step: its own variables' slots, which it writes whole
   bool terminated_ = false;       ///< the current function returned on every live lane: the rest is dead
   bool failed_ = false;
+  bool folding_ = false;  ///< lowering a call of constants to evaluate now (constant_call): no nesting
+  std::int64_t fold_work_ = std::int64_t{1} << 20;    ///< constant_call's budget: instructions x iterations
+  std::unordered_map<const Function*, bool> closed_;  ///< reads_only_its_arguments, per function
   std::size_t work_ = 0;  ///< expressions and statements lowered, against the instruction limit
 };
 
